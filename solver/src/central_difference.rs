@@ -1,0 +1,378 @@
+//! Central-difference integration of a lumped-mass bar: start, time loop, outputs, energy
+//! balance, stability guard.
+//!
+//! The energy identity the balance relies on (linear system, lumped `M`, any `dt`): with
+//! `E^n = 1/2 v^{n-1/2} M v^{n+1/2} + 1/2 u^n K u^n` and
+//! `v^{n+3/2} - v^{n-1/2} = dt (a^n + a^{n+1}) = dt M^-1 (F^n + F^{n+1} - K (u^n + u^{n+1}))`,
+//!
+//! ```text
+//!   E^{n+1} - E^n = 1/2 dt v^{n+1/2} (F^n + F^{n+1}) - 1/2 (u^{n+1} - u^n) K (u^{n+1} + u^n)
+//!                   + 1/2 (u^{n+1} K u^{n+1} - u^n K u^n)
+//!                 = 1/2 (F^n + F^{n+1}) (u^{n+1} - u^n),
+//! ```
+//!
+//! the trapezoidal work increment, exactly. So `E^n - W^n` is constant to round-off.
+
+use crate::error::{DivergenceError, InputError, UnstableStepError};
+use crate::kernel::LumpedCentralDifference;
+use crate::model::Model;
+use crate::output::{
+    EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput, StressProfile,
+};
+use crate::stability::CriticalStep;
+use thiserror::Error;
+
+/// How the first half-step velocity is formed from `u^0`, `v^0` and `a^0 = M^-1 (F(0) - K u^0)`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Start {
+    /// `v^{1/2} = v^0 + dt/2 a^0`: the predictor-corrector start of seed eqs. 2-4. With the
+    /// Heaviside convention H(0) = 1 it is exact at Co = 1 (methods.md §2).
+    #[default]
+    HalfStep,
+    /// The naive three-level start `u^{-1} = u^0 - dt v^0`, `u^1 = 2u^0 - u^{-1} + dt^2 a^0`,
+    /// i.e. `v^{1/2} = v^0 + dt a^0`. Exact only when `F(0)` is half the step load; with the full
+    /// load it injects a spurious one-element pulse (methods.md §2).
+    ThreeLevel,
+}
+
+/// What to do about the stability limit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StabilityPolicy {
+    /// Run even when `dt` exceeds the exact critical step.
+    pub allow_unstable: bool,
+    /// A run stops as diverged when `kinetic + strain` exceeds this multiple of its energy
+    /// reference (largest of the initial energy and the external work so far).
+    pub blowup_energy_ratio: f64,
+}
+
+impl Default for StabilityPolicy {
+    fn default() -> Self {
+        Self {
+            allow_unstable: false,
+            blowup_energy_ratio: 1e6,
+        }
+    }
+}
+
+/// What a run records.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OutputRequest {
+    /// Steps at which to record element stress profiles.
+    pub profile_steps: Vec<usize>,
+    /// Nodes whose `u, v, a` histories to record.
+    pub history_nodes: Vec<usize>,
+    /// Record histories every this many steps (>= 1).
+    pub history_every: usize,
+    /// Keep an energy sample every this many steps (>= 1); the balance is checked every step.
+    pub energy_every: usize,
+}
+
+impl Default for OutputRequest {
+    fn default() -> Self {
+        Self {
+            profile_steps: Vec::new(),
+            history_nodes: Vec::new(),
+            history_every: 1,
+            energy_every: 1,
+        }
+    }
+}
+
+/// Central difference with lumped mass.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CentralDifference {
+    /// Time step.
+    pub dt: f64,
+    /// Start procedure.
+    pub start: Start,
+    /// Stability guard.
+    pub stability: StabilityPolicy,
+}
+
+/// Why a run did not complete.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum RunError {
+    /// Bad parameters; nothing ran.
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// `dt` above the critical step and unstable runs not allowed; nothing ran.
+    #[error(transparent)]
+    Unstable(#[from] UnstableStepError),
+    /// An allowed unstable run blew up; `partial` holds everything recorded before.
+    #[error("{error}")]
+    Diverged {
+        /// Where and how it diverged.
+        error: DivergenceError,
+        /// Outputs up to the divergence.
+        partial: Box<RunOutput>,
+    },
+}
+
+impl CentralDifference {
+    /// Central difference with step `dt`, the half-step start and the default stability guard.
+    pub fn new(dt: f64) -> Self {
+        Self {
+            dt,
+            start: Start::HalfStep,
+            stability: StabilityPolicy::default(),
+        }
+    }
+
+    /// Refuse `dt` above the exact critical step (with a relative allowance of 1e-12 so that
+    /// Co = 1 on a free-free uniform bar, where `dt = dt_crit`, is accepted).
+    pub fn check_stability(&self, model: &Model) -> Result<CriticalStep, UnstableStepError> {
+        let critical = CriticalStep::lumped(model);
+        if self.dt > critical.exact * (1.0 + 1e-12) && !self.stability.allow_unstable {
+            return Err(UnstableStepError {
+                dt: self.dt,
+                dt_crit: critical.exact,
+                courant: model.bar().courant_number(self.dt),
+                element: critical.controlling_element,
+                element_dt: critical.element,
+            });
+        }
+        Ok(critical)
+    }
+
+    /// Integrate `steps` steps from the model's initial state.
+    pub fn run(
+        &self,
+        model: &Model,
+        steps: usize,
+        request: &OutputRequest,
+    ) -> Result<RunOutput, RunError> {
+        crate::mesh::positive("dt", self.dt)?;
+        validate_request(model, steps, request)?;
+        self.check_stability(model)?;
+        let dt = self.dt;
+        let nodes = model.bar().node_count();
+
+        // Loads: unique sorted nodes, each load mapped to its node's slot.
+        let mut load_nodes: Vec<usize> = model.loads().iter().map(|l| l.node).collect();
+        load_nodes.sort_unstable();
+        load_nodes.dedup();
+        let slots: Vec<usize> = model
+            .loads()
+            .iter()
+            .map(|l| load_nodes.binary_search(&l.node).unwrap_or(0))
+            .collect();
+        let mut forces: Vec<(usize, f64)> = load_nodes.iter().map(|&n| (n, 0.0)).collect();
+        let eval_forces = |t: f64, forces: &mut Vec<(usize, f64)>| {
+            forces.iter_mut().for_each(|f| f.1 = 0.0);
+            for (load, &slot) in model.loads().iter().zip(&slots) {
+                forces[slot].1 += load.force(t);
+            }
+        };
+
+        // Start.
+        let u0 = model.initial_displacement();
+        let v0 = model.initial_velocity();
+        let a0: Vec<f64> = (0..nodes)
+            .map(|i| model.acceleration_at(u0, i, 0.0))
+            .collect();
+        let start_factor = match self.start {
+            Start::HalfStep => 0.5,
+            Start::ThreeLevel => 1.0,
+        };
+        let v_half: Vec<f64> = (0..nodes)
+            .map(|i| v0[i] + start_factor * dt * a0[i])
+            .collect();
+        let mass = model.nodal_mass();
+        // v^{-1/2} = 2 v^0 - v^{1/2}, so that v^0 is the mean of the two half steps.
+        let kinetic_staggered0: f64 = 0.5
+            * (0..nodes)
+                .map(|i| mass[i] * (2.0 * v0[i] - v_half[i]) * v_half[i])
+                .sum::<f64>();
+        let kinetic0: f64 = 0.5 * (0..nodes).map(|i| mass[i] * v0[i] * v0[i]).sum::<f64>();
+        let strain0 = model.strain_energy(u0);
+        let invariant0 = kinetic_staggered0 + strain0;
+
+        let mut kernel = LumpedCentralDifference::new(model, dt, u0, &v_half);
+        let mut output = RunOutput {
+            dt,
+            steps: 0,
+            courant: model.bar().courant_number(dt),
+            profiles: Vec::with_capacity(request.profile_steps.len()),
+            histories: request
+                .history_nodes
+                .iter()
+                .map(|&node| NodeHistory {
+                    node,
+                    x: model.bar().mesh().nodes()[node],
+                    samples: Vec::new(),
+                })
+                .collect(),
+            energy: EnergyLog::default(),
+        };
+        let mut profile_steps: Vec<usize> = request.profile_steps.clone();
+        profile_steps.sort_unstable();
+        profile_steps.dedup();
+        let mut next_profile = profile_steps.iter().peekable();
+
+        let first = EnergySample {
+            step: 0,
+            time: 0.0,
+            kinetic: kinetic0,
+            kinetic_staggered: kinetic_staggered0,
+            strain: strain0,
+            work: 0.0,
+            balance_error: 0.0,
+        };
+        output.energy.samples.push(first);
+        let energy_reference0 = kinetic0 + strain0;
+        output.energy.scale = energy_reference0;
+        let mut max_work = 0.0_f64;
+        record(
+            model,
+            &kernel,
+            0,
+            0.0,
+            v0,
+            request,
+            &mut output,
+            &mut next_profile,
+        );
+
+        eval_forces(0.0, &mut forces);
+        let mut previous_forces = forces.clone();
+        let mut work = 0.0;
+        for step in 1..=steps {
+            let t = step as f64 * dt;
+            eval_forces(t, &mut forces);
+            // Trapezoidal work: 1/2 (F^n + F^{n+1}) (u^{n+1} - u^n), u^{n+1} - u^n = dt v^{n+1/2}.
+            let v = kernel.half_step_velocity();
+            work += forces
+                .iter()
+                .zip(&previous_forces)
+                .map(|(f, f0)| 0.5 * (f.1 + f0.1) * dt * v[f.0])
+                .sum::<f64>();
+            let sums = kernel.step_with_energy(&forces);
+            std::mem::swap(&mut forces, &mut previous_forces);
+
+            let balance_error = sums.kinetic_staggered + sums.strain - work - invariant0;
+            let mechanical = sums.kinetic + sums.strain;
+            max_work = max_work.max(work.abs());
+            let energy = &mut output.energy;
+            energy.max_balance_error = energy.max_balance_error.max(balance_error.abs());
+            energy.scale = energy.scale.max(max_work).max(mechanical);
+            output.steps = step;
+            let blowup_limit = self.stability.blowup_energy_ratio * energy_reference0.max(max_work);
+            if !(mechanical <= blowup_limit) {
+                let u = kernel.displacement();
+                let node = (0..nodes).fold(0, |best, i| {
+                    if u[i].abs() > u[best].abs() || u[i].is_nan() {
+                        i
+                    } else {
+                        best
+                    }
+                });
+                let error = DivergenceError {
+                    step,
+                    time: t,
+                    node,
+                    energy_ratio: if mechanical.is_finite() {
+                        mechanical / energy_reference0.max(max_work)
+                    } else {
+                        f64::INFINITY
+                    },
+                    courant: output.courant,
+                };
+                return Err(RunError::Diverged {
+                    error,
+                    partial: Box::new(output),
+                });
+            }
+            if step % request.energy_every == 0 || step == steps {
+                energy.samples.push(EnergySample {
+                    step,
+                    time: t,
+                    kinetic: sums.kinetic,
+                    kinetic_staggered: sums.kinetic_staggered,
+                    strain: sums.strain,
+                    work,
+                    balance_error,
+                });
+            }
+            record(
+                model,
+                &kernel,
+                step,
+                t,
+                &[],
+                request,
+                &mut output,
+                &mut next_profile,
+            );
+        }
+        Ok(output)
+    }
+}
+
+fn validate_request(
+    model: &Model,
+    steps: usize,
+    request: &OutputRequest,
+) -> Result<(), InputError> {
+    let last = model.bar().node_count() - 1;
+    if let Some(&node) = request.history_nodes.iter().find(|&&n| n > last) {
+        return Err(InputError::NodeIndex {
+            field: "history node",
+            node,
+            last,
+        });
+    }
+    if let Some(&step) = request.profile_steps.iter().find(|&&s| s > steps) {
+        return Err(InputError::Other(format!(
+            "profile step {step} is after the last step {steps}"
+        )));
+    }
+    if request.history_every == 0 || request.energy_every == 0 {
+        return Err(InputError::Other(
+            "history_every and energy_every must be at least 1".into(),
+        ));
+    }
+    Ok(())
+}
+
+/// Record profiles and histories at step `n` (state `u^n`, `v^{n+1/2}` in the kernel).
+#[allow(clippy::too_many_arguments)]
+fn record<'a>(
+    model: &Model,
+    kernel: &LumpedCentralDifference,
+    step: usize,
+    time: f64,
+    initial_velocity: &[f64],
+    request: &OutputRequest,
+    output: &mut RunOutput,
+    next_profile: &mut std::iter::Peekable<std::slice::Iter<'a, usize>>,
+) {
+    let u = kernel.displacement();
+    if next_profile.peek() == Some(&&step) {
+        next_profile.next();
+        output.profiles.push(StressProfile {
+            step,
+            time,
+            stress: model.element_stress(u),
+        });
+    }
+    if step % request.history_every == 0 && !output.histories.is_empty() {
+        let v_half = kernel.half_step_velocity();
+        for history in &mut output.histories {
+            let i = history.node;
+            let acceleration = model.acceleration_at(u, i, time);
+            // v^n = v^{n+1/2} - dt/2 a^n; at n = 0 the state's own v^0.
+            let velocity = if step == 0 {
+                initial_velocity[i]
+            } else {
+                v_half[i] - 0.5 * kernel.dt() * acceleration
+            };
+            history.samples.push(HistorySample {
+                step,
+                time,
+                displacement: u[i],
+                velocity,
+                acceleration,
+            });
+        }
+    }
+}

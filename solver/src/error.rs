@@ -1,0 +1,105 @@
+//! Typed errors of the solver. Every variant carries the context a user needs to act on it: the
+//! field, the offending value and the rule it breaks, or the element/node/step where it happened.
+
+use thiserror::Error;
+
+/// Invalid model data or run parameters. Raised before any time step is taken.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum InputError {
+    /// A scalar parameter breaks its rule (e.g. `length = -1 must be positive and finite`).
+    #[error("{field} = {value} {rule}")]
+    Parameter {
+        /// Name of the parameter.
+        field: &'static str,
+        /// The offending value.
+        value: f64,
+        /// The rule it breaks, phrased to follow the value.
+        rule: &'static str,
+    },
+    /// A per-element property breaks its rule.
+    #[error("{field} of element {element} = {value} {rule}")]
+    ElementProperty {
+        /// Name of the property (`modulus`, `density`, `area`).
+        field: &'static str,
+        /// Element index (0-based, from the left end).
+        element: usize,
+        /// The offending value.
+        value: f64,
+        /// The rule it breaks.
+        rule: &'static str,
+    },
+    /// A per-node value breaks its rule (node positions, initial fields).
+    #[error("{field} at node {node} = {value} {rule}")]
+    NodeValue {
+        /// Name of the field.
+        field: &'static str,
+        /// Node index (0-based, from the left end).
+        node: usize,
+        /// The offending value.
+        value: f64,
+        /// The rule it breaks.
+        rule: &'static str,
+    },
+    /// A vector has the wrong length.
+    #[error("{field} has {actual} entries but the mesh needs {expected}")]
+    Length {
+        /// Name of the vector.
+        field: &'static str,
+        /// Entries required.
+        expected: usize,
+        /// Entries given.
+        actual: usize,
+    },
+    /// A node index is outside the mesh.
+    #[error("{field} = {node} is not a node of the mesh (nodes 0..={last})")]
+    NodeIndex {
+        /// Name of the field holding the index.
+        field: &'static str,
+        /// The index given.
+        node: usize,
+        /// The last valid node index.
+        last: usize,
+    },
+    /// Anything else, with a sentence that names the field and the rule.
+    #[error("{0}")]
+    Other(String),
+}
+
+/// The time step is above the critical step of the scheme and unstable runs were not allowed.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error(
+    "time step dt = {dt:.6e} exceeds the critical step dt_crit = {dt_crit:.6e} \
+     (Courant number {courant:.6} relative to the stiffest element; element {element} controls \
+     with h/c = {element_dt:.6e}); lower the Courant number or set allow_unstable = true"
+)]
+pub struct UnstableStepError {
+    /// The requested time step.
+    pub dt: f64,
+    /// The exact critical step 2/omega_max.
+    pub dt_crit: f64,
+    /// Courant number of the requested step, `dt * max_e(c_e/h_e)`.
+    pub courant: f64,
+    /// The element with the smallest transit time h_e/c_e.
+    pub element: usize,
+    /// That element's transit time.
+    pub element_dt: f64,
+}
+
+/// A run that was allowed above its critical step and blew up.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error(
+    "run diverged at step {step} (t = {time:.6e}): mechanical energy reached {energy_ratio:.3e} \
+     times its reference scale; largest displacement at node {node}; Courant number {courant:.6}"
+)]
+pub struct DivergenceError {
+    /// The step at which divergence was detected.
+    pub step: usize,
+    /// Its time.
+    pub time: f64,
+    /// Node with the largest |u| at detection.
+    pub node: usize,
+    /// (kinetic + strain) / energy scale at detection (infinite if non-finite values appeared).
+    pub energy_ratio: f64,
+    /// Courant number of the run.
+    pub courant: f64,
+}

@@ -1,0 +1,32 @@
+//! # courant-solver
+//!
+//! A compact explicit finite-element solver for 1D elastic bars: two-node linear elements with
+//! per-element modulus, density and area; lumped (row-sum) mass; central difference in the
+//! half-step velocity form, equivalent to the predictor-corrector eqs. 2-4 of Kolman et al.,
+//! "Recent progress in numerical methods for explicit finite element analysis" (the seed paper);
+//! critical-step estimates and a stability guard. No I/O: the `courant` crate reads scenes and
+//! writes results.
+//!
+//! Conventions (time levels, load convention H(0) = 1, Courant number relative to the stiffest
+//! element) follow courant's `methods.md` §1-2.
+
+pub mod bar;
+pub mod central_difference;
+pub mod error;
+pub mod kernel;
+pub mod load;
+pub mod mesh;
+pub mod model;
+pub mod output;
+pub mod stability;
+pub mod time_step;
+
+pub use bar::{Bar, Field};
+pub use central_difference::{CentralDifference, OutputRequest, RunError, StabilityPolicy, Start};
+pub use error::{DivergenceError, InputError, UnstableStepError};
+pub use load::{End, Load, NodalLoad, TimeFunction};
+pub use mesh::Mesh;
+pub use model::{InitialConditions, Model, Support, Supports};
+pub use output::{EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput, StressProfile};
+pub use stability::CriticalStep;
+pub use time_step::{TimePlan, plan};

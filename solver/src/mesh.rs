@@ -1,0 +1,188 @@
+//! One-dimensional meshes of two-node linear bar elements.
+//!
+//! ```text
+//!   node 0      node 1            node N-1     node N
+//!     o-----------o-----  ...  ------o-----------o
+//!     |<-- h_0 -->|                  |<-h_{N-1}->|
+//!     x_0 = 0                                  x_N = L
+//! ```
+
+use crate::error::InputError;
+
+/// Node positions of a 1D mesh, strictly increasing. Element `e` joins nodes `e` and `e + 1`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mesh {
+    nodes: Vec<f64>,
+}
+
+impl Mesh {
+    /// Uniform mesh of `elements` elements on `[0, length]`: `x_i = i L / N`.
+    pub fn uniform(length: f64, elements: usize) -> Result<Self, InputError> {
+        Self::geometric(length, elements, 1.0)
+    }
+
+    /// Graded mesh on `[0, length]` whose element lengths form a geometric progression,
+    /// `h_{e+1} = ratio * h_e`, so `h_e = L ratio^e (ratio - 1)/(ratio^N - 1)`
+    /// (`ratio = 1` is the uniform mesh).
+    pub fn geometric(length: f64, elements: usize, ratio: f64) -> Result<Self, InputError> {
+        positive("length", length)?;
+        positive("grading ratio", ratio)?;
+        if elements == 0 {
+            return Err(InputError::Parameter {
+                field: "elements",
+                value: 0.0,
+                rule: "must be at least 1",
+            });
+        }
+        let mut nodes = Vec::with_capacity(elements + 1);
+        if ratio == 1.0 {
+            nodes.extend((0..=elements).map(|i| length * i as f64 / elements as f64));
+        } else {
+            // Partial sums of the progression, normalised so the last node is exactly L.
+            let mut x = 0.0;
+            let mut h = 1.0;
+            nodes.push(0.0);
+            for _ in 0..elements {
+                x += h;
+                h *= ratio;
+                nodes.push(x);
+            }
+            let total = x;
+            for xi in &mut nodes {
+                *xi *= length / total;
+            }
+            nodes[elements] = length;
+        }
+        Self::from_nodes(nodes)
+    }
+
+    /// Mesh from arbitrary node positions; they must be finite and strictly increasing, and
+    /// there must be at least two.
+    pub fn from_nodes(nodes: Vec<f64>) -> Result<Self, InputError> {
+        if nodes.len() < 2 {
+            return Err(InputError::Length {
+                field: "node positions",
+                expected: 2,
+                actual: nodes.len(),
+            });
+        }
+        for (i, &x) in nodes.iter().enumerate() {
+            if !x.is_finite() {
+                return Err(InputError::NodeValue {
+                    field: "position",
+                    node: i,
+                    value: x,
+                    rule: "must be finite",
+                });
+            }
+            if i > 0 && x <= nodes[i - 1] {
+                return Err(InputError::NodeValue {
+                    field: "position",
+                    node: i,
+                    value: x,
+                    rule: "must be greater than the previous node's position",
+                });
+            }
+        }
+        Ok(Self { nodes })
+    }
+
+    /// Node positions.
+    pub fn nodes(&self) -> &[f64] {
+        &self.nodes
+    }
+
+    /// Number of nodes, `N + 1`.
+    pub fn node_count(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// Number of elements, `N`.
+    pub fn element_count(&self) -> usize {
+        self.nodes.len() - 1
+    }
+
+    /// Length of element `e`, `h_e = x_{e+1} - x_e`.
+    pub fn element_length(&self, e: usize) -> f64 {
+        self.nodes[e + 1] - self.nodes[e]
+    }
+
+    /// Midpoint of element `e`.
+    pub fn midpoint(&self, e: usize) -> f64 {
+        0.5 * (self.nodes[e] + self.nodes[e + 1])
+    }
+
+    /// Position of the left end.
+    pub fn start(&self) -> f64 {
+        self.nodes[0]
+    }
+
+    /// Length of the bar, `x_N - x_0`.
+    pub fn length(&self) -> f64 {
+        self.nodes[self.nodes.len() - 1] - self.nodes[0]
+    }
+
+    /// The node closest to `x` (ties go to the left node).
+    pub fn nearest_node(&self, x: f64) -> usize {
+        let i = self.nodes.partition_point(|&xi| xi < x);
+        match i {
+            0 => 0,
+            i if i == self.nodes.len() => i - 1,
+            i if (self.nodes[i] - x) < (x - self.nodes[i - 1]) => i,
+            i => i - 1,
+        }
+    }
+}
+
+pub(crate) fn positive(field: &'static str, value: f64) -> Result<(), InputError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(InputError::Parameter {
+            field,
+            value,
+            rule: "must be positive and finite",
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn uniform_mesh_hits_both_ends_exactly() {
+        let m = Mesh::uniform(2.0, 7).unwrap();
+        assert_eq!(m.node_count(), 8);
+        assert_eq!(m.nodes()[0], 0.0);
+        assert_eq!(m.nodes()[7], 2.0);
+    }
+
+    #[test]
+    fn geometric_mesh_has_the_requested_ratio() {
+        let m = Mesh::geometric(1.0, 10, 1.2).unwrap();
+        for e in 1..10 {
+            let r = m.element_length(e) / m.element_length(e - 1);
+            assert!((r - 1.2).abs() < 1e-12, "ratio {r} at element {e}");
+        }
+        assert_eq!(m.nodes()[10], 1.0);
+    }
+
+    #[test]
+    fn bad_meshes_are_refused_with_the_rule() {
+        let err = Mesh::uniform(-1.0, 3).unwrap_err();
+        assert_eq!(err.to_string(), "length = -1 must be positive and finite");
+        assert!(Mesh::uniform(1.0, 0).is_err());
+        let err = Mesh::from_nodes(vec![0.0, 0.5, 0.5]).unwrap_err();
+        assert!(err.to_string().contains("node 2"), "{err}");
+    }
+
+    #[test]
+    fn nearest_node_snaps_to_the_closest_position() {
+        let m = Mesh::uniform(1.0, 10).unwrap();
+        assert_eq!(m.nearest_node(0.0), 0);
+        assert_eq!(m.nearest_node(0.52), 5);
+        assert_eq!(m.nearest_node(0.58), 6);
+        assert_eq!(m.nearest_node(7.0), 10);
+    }
+}

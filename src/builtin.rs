@@ -1,0 +1,42 @@
+//! The built-in scenes, compiled into the binary from `scenes/` so that `courant list` and
+//! `courant run NAME` work from any directory.
+
+use crate::scene::{Scene, SceneError};
+use std::path::Path;
+
+/// (name, TOML text) of every built-in scene.
+pub const BUILTIN_SCENES: &[(&str, &str)] = &[("fig1", include_str!("../scenes/fig1.toml"))];
+
+/// The text of a built-in scene.
+pub fn builtin_text(name: &str) -> Option<&'static str> {
+    BUILTIN_SCENES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, text)| *text)
+}
+
+/// Parse a built-in scene.
+pub fn builtin_scene(name: &str) -> Option<Result<Scene, SceneError>> {
+    builtin_text(name).map(|text| Scene::parse(name, &format!("scenes/{name}.toml"), text))
+}
+
+/// Resolve a command-line argument: a path to a `.toml` file, or the name of a built-in scene.
+pub fn resolve(arg: &str) -> Result<Scene, SceneError> {
+    let path = Path::new(arg);
+    if arg.ends_with(".toml") || path.is_file() {
+        return Scene::from_path(path);
+    }
+    builtin_scene(arg).unwrap_or_else(|| {
+        let names: Vec<&str> = BUILTIN_SCENES.iter().map(|(n, _)| *n).collect();
+        Err(SceneError {
+            file: arg.to_string(),
+            line: 0,
+            column: 0,
+            key: String::new(),
+            message: format!(
+                "no such scene file, and no built-in scene of that name (built-in: {})",
+                names.join(", ")
+            ),
+        })
+    })
+}

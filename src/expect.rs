@@ -1,0 +1,143 @@
+//! Checking a scene's expectations against its results.
+
+use crate::run::{CaseResult, Status};
+use crate::scene::{Bound, Expectation, Metric, Scene};
+use crate::table::Cell;
+
+/// What was measured for an expectation.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Measured {
+    /// A number.
+    Value(f64),
+    /// A yes/no outcome.
+    Flag(bool),
+    /// Nothing could be measured (e.g. the run diverged before the profile time).
+    Missing(String),
+}
+
+/// The verdict of one expectation on one case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Verdict {
+    /// Case name.
+    pub case: String,
+    /// Metric.
+    pub metric: Metric,
+    /// Profile time, if the expectation names one.
+    pub at: Option<f64>,
+    /// Measured value.
+    pub measured: Measured,
+    /// Bound.
+    pub bound: Bound,
+    /// Whether the bound holds.
+    pub pass: bool,
+    /// Source of truth of the bound.
+    pub source: String,
+}
+
+impl Verdict {
+    /// `(min, max, equals)` cells for tables.
+    pub fn bound_cells(&self) -> (Cell, Cell, Cell) {
+        match self.bound {
+            Bound::Range { min, max } => (min.into(), max.into(), Cell::Empty),
+            Bound::Equals(b) => (Cell::Empty, Cell::Empty, Cell::Text(b.to_string())),
+        }
+    }
+
+    /// One line for the terminal.
+    pub fn describe(&self) -> String {
+        let measured = match &self.measured {
+            Measured::Value(x) => format!("{x:.4e}"),
+            Measured::Flag(b) => b.to_string(),
+            Measured::Missing(why) => format!("missing ({why})"),
+        };
+        let bound = match self.bound {
+            Bound::Range {
+                min: Some(lo),
+                max: Some(hi),
+            } => format!("in [{lo:e}, {hi:e}]"),
+            Bound::Range {
+                min: Some(lo),
+                max: None,
+            } => format!(">= {lo:e}"),
+            Bound::Range {
+                min: None,
+                max: Some(hi),
+            } => format!("<= {hi:e}"),
+            Bound::Range {
+                min: None,
+                max: None,
+            } => "unbounded".into(),
+            Bound::Equals(b) => format!("== {b}"),
+        };
+        let at = self.at.map(|t| format!(" at t = {t}")).unwrap_or_default();
+        let verdict = if self.pass { "pass" } else { "FAIL" };
+        format!(
+            "{verdict:4}  {} {}{at} = {measured} {bound}  [{}]",
+            self.case,
+            self.metric.name(),
+            self.source
+        )
+    }
+}
+
+/// Evaluate every expectation of `scene` on the matching results.
+pub fn evaluate(scene: &Scene, results: &[CaseResult]) -> Vec<Verdict> {
+    let mut verdicts = Vec::new();
+    for expectation in &scene.expectations {
+        for result in results
+            .iter()
+            .filter(|r| expectation.cases.contains(&r.case))
+        {
+            let measured = measure(expectation, result);
+            let pass = match (&measured, expectation.bound) {
+                (Measured::Value(x), Bound::Range { min, max }) => {
+                    x.is_finite() && min.is_none_or(|lo| *x >= lo) && max.is_none_or(|hi| *x <= hi)
+                }
+                (Measured::Flag(b), Bound::Equals(want)) => *b == want,
+                _ => false,
+            };
+            verdicts.push(Verdict {
+                case: result.case.clone(),
+                metric: expectation.metric,
+                at: expectation.at,
+                measured,
+                bound: expectation.bound,
+                pass,
+                source: expectation.source.clone(),
+            });
+        }
+    }
+    verdicts
+}
+
+fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
+    let norm_of = |pick: fn(&crate::metrics::ErrorNorms) -> f64| -> Measured {
+        let selected: Vec<f64> = result
+            .profiles
+            .iter()
+            .filter(|p| {
+                expectation
+                    .at
+                    .is_none_or(|t| (p.time - t).abs() <= 1e-9 * t.abs().max(1e-300))
+            })
+            .filter_map(|p| p.norms.as_ref().map(pick))
+            .collect();
+        let expected = if expectation.at.is_some() {
+            1
+        } else {
+            result.profiles_requested
+        };
+        if selected.len() < expected {
+            return Measured::Missing("the run ended before every profile time".into());
+        }
+        Measured::Value(selected.into_iter().fold(f64::NEG_INFINITY, f64::max))
+    };
+    match expectation.metric {
+        Metric::L1 => norm_of(|n| n.l1),
+        Metric::L2 => norm_of(|n| n.l2),
+        Metric::Linf => norm_of(|n| n.linf),
+        Metric::Overshoot => norm_of(|n| n.overshoot),
+        Metric::EnergyBalance => Measured::Value(result.energy.relative_balance_error()),
+        Metric::Diverged => Measured::Flag(matches!(result.status, Status::Diverged(_))),
+    }
+}

@@ -1,0 +1,20 @@
+//! # courant
+//!
+//! Verification benchmarks and reference solutions for explicit finite-element dynamics of bars.
+//! This crate reads declarative scene files ([`scene`]), runs their cases with
+//! `courant-solver` ([`run`]), compares them with the analytic references of
+//! `courant-references` ([`reference`], [`metrics`]), checks their expectations ([`expect`]) and
+//! writes named CSV tables ([`results`], [`table`], [`write`]).
+
+pub mod builtin;
+pub mod expect;
+pub mod metrics;
+pub mod reference;
+pub mod results;
+pub mod run;
+pub mod scene;
+pub mod table;
+pub mod write;
+
+pub use run::{CaseResult, Status, run_case};
+pub use scene::{Case, Scene, SceneError};

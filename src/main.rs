@@ -1,0 +1,142 @@
+//! `courant`: list and run verification scenes.
+
+use clap::{Parser, Subcommand};
+use courant::builtin::{BUILTIN_SCENES, builtin_scene, resolve};
+use courant::expect::{Verdict, evaluate};
+use courant::results::scene_files;
+use courant::write::write_dir_atomically;
+use courant::{CaseResult, Scene, Status, run_case};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "courant",
+    version,
+    about = "Verification benchmarks and reference solutions for explicit FE dynamics of bars"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Name the built-in scenes with a one-line description each.
+    List,
+    /// Run scenes (built-in names or paths to .toml files; all built-in scenes when none given).
+    ///
+    /// Writes DIR/<scene>/<case>.csv (stress profiles), <case>.history.csv, <case>.energy.csv,
+    /// summary.csv, norms.csv and expectations.csv. Exit status: 0 when every expectation holds,
+    /// 1 when one fails, 2 on bad input (nothing is written then).
+    Run {
+        /// Scene names or paths.
+        scenes: Vec<String>,
+        /// Output directory.
+        #[arg(long, default_value = "results")]
+        out: PathBuf,
+    },
+}
+
+fn main() -> ExitCode {
+    match Cli::parse().command {
+        Command::List => list(),
+        Command::Run { scenes, out } => run(&scenes, &out),
+    }
+}
+
+fn list() -> ExitCode {
+    for (name, _) in BUILTIN_SCENES {
+        match builtin_scene(name) {
+            Some(Ok(scene)) => println!("{name:12} {}", scene.description),
+            Some(Err(e)) => println!("{name:12} (invalid: {e})"),
+            None => {}
+        }
+    }
+    ExitCode::SUCCESS
+}
+
+fn run(args: &[String], out: &std::path::Path) -> ExitCode {
+    let names: Vec<String> = if args.is_empty() {
+        BUILTIN_SCENES.iter().map(|(n, _)| n.to_string()).collect()
+    } else {
+        args.to_vec()
+    };
+    // Validate everything first: bad input writes nothing.
+    let mut scenes = Vec::new();
+    let mut bad = false;
+    for name in &names {
+        match resolve(name) {
+            Ok(scene) => scenes.push(scene),
+            Err(e) => {
+                eprintln!("error: {e}");
+                bad = true;
+            }
+        }
+    }
+    if bad {
+        return ExitCode::from(2);
+    }
+    let mut failed = false;
+    for scene in &scenes {
+        let results = match run_scene(scene) {
+            Ok(r) => r,
+            Err(e) => {
+                eprintln!("error: {}: {e}", scene.name);
+                return ExitCode::from(2);
+            }
+        };
+        let verdicts = evaluate(scene, &results);
+        print_scene(scene, &results, &verdicts);
+        failed |= verdicts.iter().any(|v| !v.pass);
+        let dir = out.join(&scene.name);
+        if let Err(e) = write_dir_atomically(&dir, &scene_files(&results, &verdicts)) {
+            eprintln!("error: cannot write {}: {e}", dir.display());
+            return ExitCode::from(2);
+        }
+        println!("  -> {}\n", dir.display());
+    }
+    if failed {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+fn run_scene(scene: &Scene) -> Result<Vec<CaseResult>, courant_solver::RunError> {
+    scene.cases.iter().map(run_case).collect()
+}
+
+fn print_scene(scene: &Scene, results: &[CaseResult], verdicts: &[Verdict]) {
+    println!("{}: {}", scene.name, scene.description);
+    println!("  source: {}", scene.source);
+    println!(
+        "  {:<10} {:>7} {:>8} {:>11} {:>8} {:>10} {:>10} {:>10} {:>9} {:>10} {:>10}  status",
+        "case", "N", "Co", "dt", "steps", "L1", "L2", "Linf", "overshoot", "energy", "wall [s]"
+    );
+    for r in results {
+        let n = r.worst_norms();
+        let f = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.3e}"));
+        let status = match &r.status {
+            Status::Completed => "completed".to_string(),
+            Status::Diverged(d) => format!("DIVERGED: {d}"),
+        };
+        println!(
+            "  {:<10} {:>7} {:>8.4} {:>11.4e} {:>8} {:>10} {:>10} {:>10} {:>9} {:>10.2e} {:>10.4}  {status}",
+            r.case,
+            r.elements,
+            r.courant,
+            r.dt,
+            r.steps,
+            f(n.map(|n| n.l1)),
+            f(n.map(|n| n.l2)),
+            f(n.map(|n| n.linf)),
+            n.map_or("-".into(), |n| format!("{:.4}", n.overshoot)),
+            r.energy.relative_balance_error(),
+            r.wall_time.as_secs_f64(),
+        );
+    }
+    for v in verdicts {
+        println!("  {}", v.describe());
+    }
+}

@@ -1,0 +1,91 @@
+//! Error norms of an element-stress profile against exact element averages.
+//!
+//! All norms are normalised by the stress scale `|sigma0|` and the bar length `L`:
+//!
+//! ```text
+//!   L1   = (1/L) sum_e h_e |sigma_e - sigma_ref,e| / |sigma0|
+//!   L2   = sqrt( (1/L) sum_e h_e (sigma_e - sigma_ref,e)^2 ) / |sigma0|
+//!   Linf = max_e |sigma_e - sigma_ref,e| / |sigma0|
+//!   overshoot = max(0, max_e [s sigma_e - max_{x in e} s sigma(x,t)]) / |sigma0|,  s = sign(sigma0)
+//! ```
+//!
+//! The overshoot measures how far the numerical stress exceeds the exact solution's envelope in
+//! the direction of the load: for a step front it is the Gibbs-like overshoot behind the front as
+//! a fraction of the jump (about 27.4 % for the Airy front of lumped CD at Co < 1, methods.md §3).
+
+use courant_solver::Mesh;
+
+/// Error norms of one profile.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ErrorNorms {
+    /// Normalised L1 error.
+    pub l1: f64,
+    /// Normalised L2 error.
+    pub l2: f64,
+    /// Normalised max error.
+    pub linf: f64,
+    /// Overshoot beyond the exact envelope, fraction of the jump.
+    pub overshoot: f64,
+}
+
+impl ErrorNorms {
+    /// Compute the norms of `stress` against `reference` (element averages) and `envelope`
+    /// (per-element max of `s sigma_exact`).
+    pub fn of(
+        mesh: &Mesh,
+        stress: &[f64],
+        reference: &[f64],
+        envelope: &[f64],
+        scale: f64,
+        sign: f64,
+    ) -> Self {
+        let length = mesh.length();
+        let (mut l1, mut l2, mut linf, mut overshoot) = (0.0, 0.0, 0.0_f64, 0.0_f64);
+        for e in 0..stress.len() {
+            let h = mesh.element_length(e);
+            let err = (stress[e] - reference[e]).abs();
+            l1 += h * err;
+            l2 += h * err * err;
+            linf = linf.max(err);
+            overshoot = overshoot.max(sign * stress[e] - envelope[e]);
+        }
+        Self {
+            l1: l1 / length / scale,
+            l2: (l2 / length).sqrt() / scale,
+            linf: linf / scale,
+            overshoot: overshoot / scale,
+        }
+    }
+
+    /// The worst (largest) of each norm over several profiles.
+    pub fn worst(norms: impl IntoIterator<Item = ErrorNorms>) -> Option<ErrorNorms> {
+        norms.into_iter().reduce(|a, b| ErrorNorms {
+            l1: a.l1.max(b.l1),
+            l2: a.l2.max(b.l2),
+            linf: a.linf.max(b.linf),
+            overshoot: a.overshoot.max(b.overshoot),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn norms_of_a_single_wrong_element() {
+        let mesh = Mesh::uniform(1.0, 4).unwrap();
+        let n = ErrorNorms::of(
+            &mesh,
+            &[-1.0, -1.5, 0.0, 0.0],
+            &[-1.0, -1.0, 0.0, 0.0],
+            &[1.0, 1.0, 0.0, 0.0],
+            1.0,
+            -1.0,
+        );
+        assert_eq!(n.l1, 0.125);
+        assert_eq!(n.l2, (0.25_f64 * 0.25).sqrt());
+        assert_eq!(n.linf, 0.5);
+        assert_eq!(n.overshoot, 0.5);
+    }
+}

@@ -1,0 +1,183 @@
+//! Running a case and comparing it with its reference.
+
+use crate::metrics::ErrorNorms;
+use crate::reference::Reference;
+use crate::scene::Case;
+use courant_references::Energies;
+use courant_solver::{CriticalStep, DivergenceError, EnergyLog, NodeHistory, RunError, RunOutput};
+use std::time::{Duration, Instant};
+
+/// A stress profile beside its reference.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ProfileComparison {
+    /// Time of the profile.
+    pub time: f64,
+    /// Step index.
+    pub step: usize,
+    /// Element midpoints.
+    pub x: Vec<f64>,
+    /// Element stresses.
+    pub stress: Vec<f64>,
+    /// Exact element averages, if there is a reference.
+    pub reference: Option<Vec<f64>>,
+    /// Error norms, if there is a reference.
+    pub norms: Option<ErrorNorms>,
+}
+
+/// A nodal history beside its reference.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HistoryComparison {
+    /// The recorded history.
+    pub history: NodeHistory,
+    /// Exact `(u, v)` at each sample, if there is a reference.
+    pub reference: Option<Vec<(f64, f64)>>,
+}
+
+/// How a case ended.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Status {
+    /// All steps taken.
+    Completed,
+    /// An allowed unstable run blew up; outputs hold what was recorded before.
+    Diverged(DivergenceError),
+}
+
+/// Everything a case produced.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseResult {
+    /// Case name.
+    pub case: String,
+    /// Number of elements.
+    pub elements: usize,
+    /// Courant number relative to the stiffest element.
+    pub courant: f64,
+    /// Time step.
+    pub dt: f64,
+    /// Steps planned.
+    pub steps_planned: usize,
+    /// Steps taken.
+    pub steps: usize,
+    /// Critical-step estimates.
+    pub critical: CriticalStep,
+    /// Number of distinct profile times requested.
+    pub profiles_requested: usize,
+    /// Profiles recorded (fewer than requested when the run diverged first).
+    pub profiles: Vec<ProfileComparison>,
+    /// Histories.
+    pub histories: Vec<HistoryComparison>,
+    /// Energy log.
+    pub energy: EnergyLog,
+    /// Exact energies at each energy sample, if there is a reference.
+    pub energy_reference: Option<Vec<Energies>>,
+    /// Reference name, if any.
+    pub reference: Option<&'static str>,
+    /// Completed or diverged.
+    pub status: Status,
+    /// Wall time of the integration (not of the comparison).
+    pub wall_time: Duration,
+}
+
+impl CaseResult {
+    /// Worst norms over all profiles.
+    pub fn worst_norms(&self) -> Option<ErrorNorms> {
+        ErrorNorms::worst(self.profiles.iter().filter_map(|p| p.norms))
+    }
+}
+
+/// Run a case and compare it with its reference. A divergence (allowed unstable runs only) is a
+/// status, not an error: its partial outputs are kept.
+pub fn run_case(case: &Case) -> Result<CaseResult, RunError> {
+    let started = Instant::now();
+    let outcome = case
+        .integrator
+        .run(&case.model, case.plan.steps, &case.request);
+    let wall_time = started.elapsed();
+    let (output, status) = match outcome {
+        Ok(output) => (output, Status::Completed),
+        Err(RunError::Diverged { error, partial }) => (*partial, Status::Diverged(error)),
+        Err(other) => return Err(other),
+    };
+    Ok(compare(case, output, status, wall_time))
+}
+
+fn compare(case: &Case, output: RunOutput, status: Status, wall_time: Duration) -> CaseResult {
+    let mesh = case.model.bar().mesh();
+    let reference = case.reference.as_ref();
+    let x: Vec<f64> = (0..mesh.element_count())
+        .map(|e| mesh.midpoint(e))
+        .collect();
+    let profiles = output
+        .profiles
+        .into_iter()
+        .map(|p| {
+            let exact = reference.map(|r| {
+                (
+                    r.element_averages(mesh, p.time),
+                    r.element_envelope(mesh, p.time),
+                )
+            });
+            let norms = reference.zip(exact.as_ref()).map(|(r, (avg, env))| {
+                ErrorNorms::of(mesh, &p.stress, avg, env, r.stress_scale(), r.load_sign())
+            });
+            ProfileComparison {
+                time: p.time,
+                step: p.step,
+                x: x.clone(),
+                stress: p.stress,
+                reference: exact.map(|e| e.0),
+                norms,
+            }
+        })
+        .collect();
+    let histories = output
+        .histories
+        .into_iter()
+        .map(|h| {
+            let exact = reference.map(|r: &Reference| {
+                h.samples
+                    .iter()
+                    .map(|s| {
+                        (
+                            r.displacement(mesh, h.x, s.time),
+                            r.velocity(mesh, h.x, s.time),
+                        )
+                    })
+                    .collect()
+            });
+            HistoryComparison {
+                history: h,
+                reference: exact,
+            }
+        })
+        .collect();
+    let energy_reference = reference.map(|r| {
+        output
+            .energy
+            .samples
+            .iter()
+            .map(|s| r.energies(s.time))
+            .collect()
+    });
+    CaseResult {
+        case: case.name.clone(),
+        elements: mesh.element_count(),
+        courant: output.courant,
+        dt: output.dt,
+        steps_planned: case.plan.steps,
+        steps: output.steps,
+        critical: case.critical,
+        profiles_requested: {
+            let mut steps = case.request.profile_steps.clone();
+            steps.sort_unstable();
+            steps.dedup();
+            steps.len()
+        },
+        profiles,
+        histories,
+        energy: output.energy,
+        energy_reference,
+        reference: reference.map(|r| r.name()),
+        status,
+        wall_time,
+    }
+}

@@ -1,0 +1,128 @@
+//! Scene errors: every one names the file, the line and column, the key, and the rule broken.
+
+use std::ops::Range;
+use thiserror::Error;
+
+/// A scene file that cannot be used, with the position of the offending key.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("{file}:{line}:{column}: {}{message}", key_prefix(.key))]
+pub struct SceneError {
+    /// Path (or built-in name) of the scene file.
+    pub file: String,
+    /// 1-based line.
+    pub line: usize,
+    /// 1-based column.
+    pub column: usize,
+    /// Dotted key, e.g. `material.modulus` (empty when the file does not parse at all).
+    pub key: String,
+    /// What is wrong, naming the value and the rule.
+    pub message: String,
+}
+
+fn key_prefix(key: &str) -> String {
+    if key.is_empty() {
+        String::new()
+    } else {
+        format!("`{key}`: ")
+    }
+}
+
+/// Source text of a scene file with the helpers that turn byte spans into positions.
+#[derive(Debug, Clone)]
+pub struct Source<'a> {
+    /// Path or name shown in errors.
+    pub file: &'a str,
+    /// The TOML text.
+    pub text: &'a str,
+}
+
+impl Source<'_> {
+    /// An error at `span` for `key`.
+    pub fn error(
+        &self,
+        span: Option<Range<usize>>,
+        key: &str,
+        message: impl Into<String>,
+    ) -> SceneError {
+        let (line, column) = span.map(|s| self.position(s.start)).unwrap_or((1, 1));
+        SceneError {
+            file: self.file.to_string(),
+            line,
+            column,
+            key: key.to_string(),
+            message: message.into(),
+        }
+    }
+
+    /// Convert a TOML deserialisation error, recovering the dotted key from the text at its span.
+    pub fn from_toml(&self, err: &toml::de::Error) -> SceneError {
+        let key = err.span().map(|s| self.key_at(s.start)).unwrap_or_default();
+        let message = err.message().trim().replace('\n', "; ");
+        self.error(err.span(), &key, message)
+    }
+
+    /// 1-based (line, column) of a byte offset.
+    pub fn position(&self, offset: usize) -> (usize, usize) {
+        let before = &self.text[..offset.min(self.text.len())];
+        let line = before.matches('\n').count() + 1;
+        let column = before
+            .rfind('\n')
+            .map_or(before.len(), |i| before.len() - i - 1)
+            + 1;
+        (line, column)
+    }
+
+    /// The dotted key whose line holds `offset`: the table header above it plus the text before
+    /// `=` on that line (or the header itself when the offset is on a header line).
+    pub fn key_at(&self, offset: usize) -> String {
+        let offset = offset.min(self.text.len());
+        let line_start = self.text[..offset].rfind('\n').map_or(0, |i| i + 1);
+        let line_end = self.text[offset..]
+            .find('\n')
+            .map_or(self.text.len(), |i| offset + i);
+        let line = self.text[line_start..line_end].trim();
+        let header = |l: &str| {
+            l.starts_with('[')
+                .then(|| l.trim_matches(|c| c == '[' || c == ']').trim().to_string())
+        };
+        if let Some(h) = header(line) {
+            return h;
+        }
+        let table = self.text[..line_start]
+            .lines()
+            .rev()
+            .find_map(|l| header(l.trim()));
+        let local = line.split('=').next().unwrap_or("").trim();
+        match (table, local.is_empty()) {
+            (Some(t), false) => format!("{t}.{local}"),
+            (Some(t), true) => t,
+            (None, _) => local.to_string(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn key_and_position_come_from_the_text() {
+        let text = "[scene]\ndescription = \"x\"\n\n[material]\nmodulus = -1\n";
+        let src = Source {
+            file: "a.toml",
+            text,
+        };
+        let offset = text.find("-1").unwrap();
+        assert_eq!(src.position(offset), (5, 11));
+        assert_eq!(src.key_at(offset), "material.modulus");
+        let e = src.error(
+            Some(offset..offset + 2),
+            "material.modulus",
+            "must be positive",
+        );
+        assert_eq!(
+            e.to_string(),
+            "a.toml:5:11: `material.modulus`: must be positive"
+        );
+    }
+}

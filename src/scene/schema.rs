@@ -1,0 +1,288 @@
+//! The scene file format, exactly as written in TOML. Unknown keys are errors
+//! (`deny_unknown_fields`); every optional key's default is stated on it. Values that need a
+//! semantic check keep their span so the error can point at them.
+
+use serde::Deserialize;
+use toml::Spanned;
+
+/// A whole scene file.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawScene {
+    pub scene: RawHeader,
+    /// Default: `length = 1`, `area = 1`.
+    #[serde(default)]
+    pub bar: RawBar,
+    pub material: RawMaterial,
+    pub mesh: RawMesh,
+    /// Default: `left = "free"`, `right = "fixed"` (the seed's bar).
+    #[serde(default)]
+    pub supports: RawSupports,
+    /// Default: no loads.
+    #[serde(default, rename = "load")]
+    pub loads: Vec<Spanned<RawLoad>>,
+    /// Default: at rest, undeformed.
+    #[serde(default)]
+    pub initial: RawInitial,
+    pub integrator: RawIntegrator,
+    #[serde(default)]
+    pub output: RawOutput,
+    /// Default: `kind = "none"`.
+    #[serde(default)]
+    pub reference: RawReference,
+    /// Default: none.
+    #[serde(default, rename = "expect")]
+    pub expectations: Vec<Spanned<RawExpect>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawHeader {
+    /// One line: what the scene shows.
+    pub description: Spanned<String>,
+    /// Its source of truth (paper and figure, closed form, textbook result).
+    pub source: Spanned<String>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawBar {
+    /// Default 1.
+    pub length: Option<Spanned<f64>>,
+    /// Default 1.
+    pub area: Option<Spanned<f64>>,
+}
+
+/// A property along the bar: a number, or `{ linear = [left, right] }`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub enum RawField {
+    Constant(f64),
+    Linear(RawLinear),
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawLinear {
+    pub linear: [f64; 2],
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawMaterial {
+    pub modulus: Spanned<RawField>,
+    /// Default 1.
+    pub density: Option<Spanned<RawField>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawMesh {
+    pub elements: Spanned<i64>,
+    /// Ratio of consecutive element lengths, `h_{e+1}/h_e`. Default 1 (uniform).
+    pub grading: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum RawSupport {
+    Free,
+    Fixed,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSupports {
+    pub left: RawSupport,
+    pub right: RawSupport,
+}
+
+impl Default for RawSupports {
+    fn default() -> Self {
+        Self {
+            left: RawSupport::Free,
+            right: RawSupport::Fixed,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum RawEnd {
+    Left,
+    Right,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum RawLoadKind {
+    Traction,
+    Force,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum RawTimeKind {
+    #[default]
+    Step,
+    Ramp,
+    Pulse,
+    Table,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawLoad {
+    /// `traction` (needs `end`) or `force` (needs `node`).
+    pub kind: RawLoadKind,
+    pub end: Option<RawEnd>,
+    pub node: Option<i64>,
+    /// Stress of a traction (positive in tension) or magnitude of a force (positive along +x).
+    pub value: f64,
+    /// Default `step`.
+    #[serde(default)]
+    pub time: RawTimeKind,
+    /// Default 0.
+    pub start: Option<f64>,
+    /// Rise time of a ramp, length of a pulse.
+    pub duration: Option<f64>,
+    /// Value of a step at exactly `t = start`. Default 1 (H(0) = 1, methods.md §2).
+    pub value_at_start: Option<f64>,
+    /// `[[t, f], ...]` for `time = "table"`.
+    pub table: Option<Vec<[f64; 2]>>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawInitial {
+    /// Default 0.
+    pub displacement: Option<Spanned<RawField>>,
+    /// Default 0.
+    pub velocity: Option<Spanned<RawField>>,
+}
+
+/// One number or a list of numbers (each a case).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub enum OneOrMany {
+    One(f64),
+    Many(Vec<f64>),
+}
+
+impl OneOrMany {
+    pub fn values(&self) -> Vec<f64> {
+        match self {
+            OneOrMany::One(x) => vec![*x],
+            OneOrMany::Many(v) => v.clone(),
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum RawScheme {
+    #[default]
+    CentralDifference,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum RawMass {
+    #[default]
+    Lumped,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum RawStart {
+    #[default]
+    HalfStep,
+    ThreeLevel,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawIntegrator {
+    /// Default `central-difference`.
+    #[serde(default)]
+    pub scheme: RawScheme,
+    /// Default `lumped`.
+    #[serde(default)]
+    pub mass: RawMass,
+    /// Courant number(s) relative to the stiffest element; one case each. Exactly one of
+    /// `courant` and `dt`.
+    pub courant: Option<Spanned<OneOrMany>>,
+    /// Time step(s); one case each.
+    pub dt: Option<Spanned<OneOrMany>>,
+    /// Default `half-step`.
+    #[serde(default)]
+    pub start: RawStart,
+    /// Default false: a step above the critical step is refused.
+    #[serde(default)]
+    pub allow_unstable: bool,
+    /// Default 1e6: kinetic + strain energy above this multiple of the work done (or the initial
+    /// energy) stops the run as diverged.
+    pub blowup_energy_ratio: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum RawTimeUnit {
+    /// Times in the scene's own unit.
+    #[default]
+    Absolute,
+    /// Times in transit times `T = sum_e h_e/c_e`.
+    Transit,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawOutput {
+    /// Default `absolute`.
+    #[serde(default)]
+    pub time_unit: RawTimeUnit,
+    /// Times of the stress profiles. Default none.
+    pub profile_times: Option<Spanned<Vec<f64>>>,
+    /// Positions of the nodal histories (snapped to the nearest node). Default none.
+    pub history_points: Option<Spanned<Vec<f64>>>,
+    /// Default: the last profile time (required when there are none).
+    pub end_time: Option<Spanned<f64>>,
+    /// Default 1.
+    pub history_every: Option<Spanned<i64>>,
+    /// Default 1.
+    pub energy_every: Option<Spanned<i64>>,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum RawReferenceKind {
+    #[default]
+    None,
+    Dalembert,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawReference {
+    /// Default `none`.
+    pub kind: Option<Spanned<RawReferenceKind>>,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawExpect {
+    /// Cases it applies to. Default: all.
+    pub cases: Option<Vec<String>>,
+    /// `l1`, `l2`, `linf`, `overshoot`, `energy_balance`, `diverged`.
+    pub metric: String,
+    /// Profile time it applies to (in `output.time_unit`). Default: the worst over all times.
+    pub at: Option<f64>,
+    /// Upper bound (inclusive).
+    pub max: Option<f64>,
+    /// Lower bound (inclusive).
+    pub min: Option<f64>,
+    /// For boolean metrics (`diverged`).
+    pub equals: Option<bool>,
+    /// The source of truth the bound comes from.
+    pub source: String,
+}
