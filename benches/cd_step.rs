@@ -1,1 +1,122 @@
-fn main() {}
+//! Benchmark: ONE lumped-mass central-difference step of `courant_solver`'s
+//! `kernel::LumpedCentralDifference` (`step` and `step_with_energy`), on a GRADED bar.
+//!
+//! What it measures: the wall time of one step for N = 1e3, 1e5, 1e6 elements. The bar is the
+//! unit bar with modulus linear 16 -> 1 (so every element has its own stiffness and every node
+//! its own inverse mass), density 1, area 1, free left end loaded by F = 1 on node 0, fixed right
+//! end, dt at Courant number 0.5. The state starts from u = 0 and a smooth half-step velocity
+//! v = 1e-3 cos(pi x / 2) (zero at the fixed end), so every value is a normal float and the
+//! (stable) scheme keeps it bounded however many iterations criterion runs; each benchmark checks
+//! at the end that the state is still finite. Throughput is `Elements(N)`: criterion's
+//! "elem/s" is element-steps per second; ns per node-step = time per step / (N + 1).
+//!
+//! Target: as fast as the tight C loop doing the same arithmetic, `benches/c_reference/cd_step.c`
+//! compiled with `gcc -O3 -march=native` — the team's figure is about 1.6–1.8 ns per node-step
+//! for N <= 1e5 on the 2-core machines (see `benches/c_reference/README.md` for what that loop
+//! actually measures per variant).
+//!
+//! Run:      cargo bench --bench cd_step
+//!           (one function only: cargo bench --bench cd_step -- 'lumped_cd_step/step/')
+//!           C reference: bash benches/c_reference/run.sh
+//! Numbers:  target/criterion/lumped_cd_step/<step|step_with_energy>/<N>/new/estimates.json
+//!           (i.e. target/criterion/*/*/*/new/estimates.json; `median.point_estimate` is in ns
+//!           per step), HTML report in target/criterion/report/index.html.
+//! Duration: about a minute (warm-up 1 s and 3 s of measurement per benchmark, 4 s at N = 1e6).
+
+use std::f64::consts::FRAC_PI_2;
+use std::hint::black_box;
+use std::time::Duration;
+
+use courant_solver::kernel::LumpedCentralDifference;
+use courant_solver::{
+    Bar, End, Field, InitialConditions, Load, Mesh, Model, Supports, TimeFunction,
+};
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+
+/// Element counts.
+const SIZES: [usize; 3] = [1_000, 100_000, 1_000_000];
+
+/// The graded, loaded, free-fixed bar of `n` elements and its kernel at Courant number 0.5.
+fn graded_kernel(n: usize) -> LumpedCentralDifference {
+    let mesh = Mesh::uniform(1.0, n).unwrap();
+    let bar = Bar::new(
+        mesh,
+        &Field::Linear {
+            left: 16.0,
+            right: 1.0,
+        },
+        &Field::Constant(1.0),
+        &Field::Constant(1.0),
+    )
+    .unwrap();
+    let load = Load::Traction {
+        end: End::Left,
+        stress: -1.0,
+        time: TimeFunction::HEAVISIDE,
+    };
+    let model = Model::new(
+        bar,
+        Supports::FREE_FIXED,
+        &[load],
+        InitialConditions::default(),
+    )
+    .unwrap();
+    let dt = 0.5 * model.bar().stiffest_element().1;
+    let u0 = vec![0.0; n + 1];
+    // Smooth and bounded, zero at the fixed right end (node n).
+    let v_half: Vec<f64> = (0..=n)
+        .map(|i| {
+            if i == n {
+                0.0
+            } else {
+                1e-3 * (FRAC_PI_2 * i as f64 / n as f64).cos()
+            }
+        })
+        .collect();
+    LumpedCentralDifference::new(&model, dt, &u0, &v_half)
+}
+
+fn assert_finite(kernel: &LumpedCentralDifference) {
+    assert!(
+        kernel
+            .displacement()
+            .iter()
+            .chain(kernel.half_step_velocity())
+            .all(|x| x.is_finite()),
+        "the benchmark state blew up"
+    );
+}
+
+fn lumped_cd_step(c: &mut Criterion) {
+    let forces = [(0usize, 1.0f64)];
+    let mut group = c.benchmark_group("lumped_cd_step");
+    group.warm_up_time(Duration::from_secs(1));
+    for n in SIZES {
+        if n >= 1_000_000 {
+            group
+                .sample_size(20)
+                .measurement_time(Duration::from_secs(4));
+        } else {
+            group
+                .sample_size(50)
+                .measurement_time(Duration::from_secs(3));
+        }
+        group.throughput(Throughput::Elements(n as u64));
+
+        let mut kernel = graded_kernel(n);
+        group.bench_with_input(BenchmarkId::new("step", n), &n, |b, _| {
+            b.iter(|| kernel.step(black_box(&forces)));
+        });
+        assert_finite(&kernel);
+
+        let mut kernel = graded_kernel(n);
+        group.bench_with_input(BenchmarkId::new("step_with_energy", n), &n, |b, _| {
+            b.iter(|| kernel.step_with_energy(black_box(&forces)));
+        });
+        assert_finite(&kernel);
+    }
+    group.finish();
+}
+
+criterion_group!(benches, lumped_cd_step);
+criterion_main!(benches);

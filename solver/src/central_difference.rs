@@ -219,8 +219,8 @@ impl CentralDifference {
             balance_error: 0.0,
         };
         output.energy.samples.push(first);
-        let energy_reference0 = kinetic0 + strain0;
-        output.energy.scale = energy_reference0;
+        output.energy.scale = kinetic0 + strain0;
+        let mut guard = BlowUpGuard::new(self.stability.blowup_energy_ratio, kinetic0 + strain0);
         let mut max_work = 0.0_f64;
         record(
             model,
@@ -234,6 +234,7 @@ impl CentralDifference {
         );
 
         eval_forces(0.0, &mut forces);
+        guard.admit(impulse_energy(model, dt, &forces));
         let mut previous_forces = forces.clone();
         let mut work = 0.0;
         for step in 1..=steps {
@@ -247,6 +248,8 @@ impl CentralDifference {
                 .map(|(f, f0)| 0.5 * (f.1 + f0.1) * dt * v[f.0])
                 .sum::<f64>();
             let sums = kernel.step_with_energy(&forces);
+            guard.admit(work.abs());
+            guard.admit(impulse_energy(model, dt, &forces));
             std::mem::swap(&mut forces, &mut previous_forces);
 
             let balance_error = sums.kinetic_staggered + sums.strain - work - invariant0;
@@ -256,8 +259,7 @@ impl CentralDifference {
             energy.max_balance_error = energy.max_balance_error.max(balance_error.abs());
             energy.scale = energy.scale.max(max_work).max(mechanical);
             output.steps = step;
-            let blowup_limit = self.stability.blowup_energy_ratio * energy_reference0.max(max_work);
-            if !(mechanical <= blowup_limit) {
+            if let Some(energy_ratio) = guard.tripped(mechanical) {
                 let u = kernel.displacement();
                 let node = (0..nodes).fold(0, |best, i| {
                     if u[i].abs() > u[best].abs() || u[i].is_nan() {
@@ -270,11 +272,7 @@ impl CentralDifference {
                     step,
                     time: t,
                     node,
-                    energy_ratio: if mechanical.is_finite() {
-                        mechanical / energy_reference0.max(max_work)
-                    } else {
-                        f64::INFINITY
-                    },
+                    energy_ratio,
                     courant: output.courant,
                 };
                 return Err(RunError::Diverged {
@@ -306,6 +304,45 @@ impl CentralDifference {
         }
         Ok(output)
     }
+}
+
+/// Detects an unstable run: kinetic + strain energy far above every energy that entered the bar.
+///
+/// A stable central-difference run has `T + U = W + E^0 + dt^2/8 a M a` (full-step kinetic
+/// energy `T`), where the last term is at most of the order of the impulse energy
+/// `sum_j dt^2 F_j^2/(8 m_j)` of the loads. The reference is the largest of the initial energy,
+/// `|W|` and that impulse energy seen so far; the run has diverged when `T + U` exceeds
+/// `ratio` times it, or is not finite.
+struct BlowUpGuard {
+    ratio: f64,
+    reference: f64,
+}
+
+impl BlowUpGuard {
+    fn new(ratio: f64, initial_energy: f64) -> Self {
+        Self { ratio, reference: initial_energy }
+    }
+
+    fn admit(&mut self, energy: f64) {
+        self.reference = self.reference.max(energy);
+    }
+
+    /// `Some(T+U / reference)` when the run has diverged.
+    fn tripped(&self, mechanical: f64) -> Option<f64> {
+        if mechanical <= self.ratio * self.reference {
+            None
+        } else if mechanical.is_finite() {
+            Some(mechanical / self.reference)
+        } else {
+            Some(f64::INFINITY)
+        }
+    }
+}
+
+/// `sum_j dt^2 F_j^2 / (8 m_j)`: the kinetic energy one step of the loads alone gives the
+/// full-step velocity.
+fn impulse_energy(model: &Model, dt: f64, forces: &[(usize, f64)]) -> f64 {
+    forces.iter().map(|&(node, f)| 0.125 * dt * dt * f * f * model.inverse_mass()[node]).sum()
 }
 
 fn validate_request(
