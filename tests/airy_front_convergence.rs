@@ -29,22 +29,40 @@ struct Band {
 }
 
 fn bands() -> Vec<Band> {
-    let mut reader = csv::Reader::from_path(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/airy_front_convergence.csv")).unwrap();
+    let mut reader = csv::Reader::from_path(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/airy_front_convergence.csv"
+    ))
+    .unwrap();
     reader
         .records()
         .map(|r| {
             let r = r.unwrap();
-            Band { metric: r[0].to_string(), min_order: r[2].parse().unwrap(), max_order: r[3].parse().unwrap() }
+            Band {
+                metric: r[0].to_string(),
+                min_order: r[2].parse().unwrap(),
+                max_order: r[3].parse().unwrap(),
+            }
         })
         .collect()
 }
 
-/// (l1, l2, linf) per mesh and time, and the overshoot of each profile.
-fn errors() -> Vec<Vec<((f64, f64, f64), f64)>> {
+/// Errors of one profile: (l1, l2, linf) and the overshoot.
+type ProfileErrors = ((f64, f64, f64), f64);
+
+/// Errors per mesh (outer) and time (inner).
+fn errors() -> Vec<Vec<ProfileErrors>> {
     MESHES
         .iter()
         .map(|&n| {
-            let out = run_fig1(n, 0.5, &TIMES, Start::HalfStep, TimeFunction::HEAVISIDE, &[]);
+            let out = run_fig1(
+                n,
+                0.5,
+                &TIMES,
+                Start::HalfStep,
+                TimeFunction::HEAVISIDE,
+                &[],
+            );
             out.profiles
                 .iter()
                 .map(|p| {
@@ -52,7 +70,11 @@ fn errors() -> Vec<Vec<((f64, f64, f64), f64)>> {
                     // |sigma| beyond the largest exact |sigma| behind the front (sigma0 = -1, and
                     // the plateau behind every front is -1 at 0.5 T, -2 at 1.5 T).
                     let plateau = if p.time < 1.0 { 1.0 } else { 2.0 };
-                    let overshoot = p.stress.iter().map(|s| -s - plateau).fold(f64::NEG_INFINITY, f64::max);
+                    let overshoot = p
+                        .stress
+                        .iter()
+                        .map(|s| -s - plateau)
+                        .fold(f64::NEG_INFINITY, f64::max);
                     (error_norms(&p.stress, &exact), overshoot)
                 })
                 .collect()
@@ -97,7 +119,10 @@ fn overshoot_behind_the_front_tends_to_the_airy_value() {
     for (mi, &n) in MESHES.iter().enumerate().skip(2) {
         for (ti, t) in TIMES.iter().enumerate() {
             let overshoot = errors[mi][ti].1;
-            assert!((overshoot - airy_overshoot).abs() < 0.01, "N = {n}, t = {t}: overshoot {overshoot:.4} vs {airy_overshoot}");
+            assert!(
+                (overshoot - airy_overshoot).abs() < 0.01,
+                "N = {n}, t = {t}: overshoot {overshoot:.4} vs {airy_overshoot}"
+            );
         }
     }
 }

@@ -12,26 +12,47 @@ mod common;
 
 use common::fig1_model;
 use courant_solver::{
-    Bar, CentralDifference, End, Field, InitialConditions, Load, Mesh, Model, OutputRequest, Support, Supports, TimeFunction,
+    Bar, CentralDifference, End, Field, InitialConditions, Load, Mesh, Model, OutputRequest,
+    Support, Supports, TimeFunction,
 };
 
 fn run(model: &Model, co: f64, end: f64) -> courant_solver::RunOutput {
     let dt = co * model.bar().stiffest_element().1;
     let steps = (end / dt).round() as usize;
-    CentralDifference::new(dt).run(model, steps, &OutputRequest::default()).unwrap()
+    CentralDifference::new(dt)
+        .run(model, steps, &OutputRequest::default())
+        .unwrap()
 }
 
 fn graded(n: usize) -> Bar {
-    Bar::new(Mesh::uniform(1.0, n).unwrap(), &Field::Linear { left: 16.0, right: 1.0 }, &Field::Constant(1.0), &Field::Constant(1.0)).unwrap()
+    Bar::new(
+        Mesh::uniform(1.0, n).unwrap(),
+        &Field::Linear {
+            left: 16.0,
+            right: 1.0,
+        },
+        &Field::Constant(1.0),
+        &Field::Constant(1.0),
+    )
+    .unwrap()
 }
 
 #[test]
 fn balance_error_is_round_off_for_every_load_mesh_and_courant_number() {
     let loads = [
         TimeFunction::HEAVISIDE,
-        TimeFunction::Ramp { start: 0.1, rise: 0.3 },
-        TimeFunction::Pulse { start: 0.0, duration: 0.2 },
-        TimeFunction::Table { times: vec![0.0, 0.1, 0.4, 0.5], values: vec![0.0, 1.0, -0.5, 0.0] },
+        TimeFunction::Ramp {
+            start: 0.1,
+            rise: 0.3,
+        },
+        TimeFunction::Pulse {
+            start: 0.0,
+            duration: 0.2,
+        },
+        TimeFunction::Table {
+            times: vec![0.0, 0.1, 0.4, 0.5],
+            values: vec![0.0, 1.0, -0.5, 0.0],
+        },
     ];
     let bars = [
         Bar::homogeneous(Mesh::uniform(1.0, 100).unwrap(), 1.0, 1.0, 1.0).unwrap(),
@@ -40,12 +61,25 @@ fn balance_error_is_round_off_for_every_load_mesh_and_courant_number() {
     ];
     for bar in &bars {
         for time in &loads {
-            let load = Load::Traction { end: End::Left, stress: -1.0, time: time.clone() };
-            let model = Model::new(bar.clone(), Supports::FREE_FIXED, &[load], InitialConditions::default()).unwrap();
+            let load = Load::Traction {
+                end: End::Left,
+                stress: -1.0,
+                time: time.clone(),
+            };
+            let model = Model::new(
+                bar.clone(),
+                Supports::FREE_FIXED,
+                &[load],
+                InitialConditions::default(),
+            )
+            .unwrap();
             for co in [0.1, 0.5, 0.9, 1.0] {
                 let out = run(&model, co, 3.0);
                 let rel = out.energy.relative_balance_error();
-                assert!(rel < 1e-13, "{time:?} Co = {co}: relative balance error {rel:e}");
+                assert!(
+                    rel < 1e-13,
+                    "{time:?} Co = {co}: relative balance error {rel:e}"
+                );
             }
         }
     }
@@ -54,16 +88,27 @@ fn balance_error_is_round_off_for_every_load_mesh_and_courant_number() {
 #[test]
 fn balance_holds_for_free_vibration_from_an_initial_velocity_field() {
     let n = 80;
-    let velocity: Vec<f64> = (0..=n).map(|i| (std::f64::consts::PI * i as f64 / n as f64).sin()).collect();
-    let initial = InitialConditions { displacement: None, velocity: Some(velocity) };
-    let free_free = Supports { left: Support::Free, right: Support::Free };
+    let velocity: Vec<f64> = (0..=n)
+        .map(|i| (std::f64::consts::PI * i as f64 / n as f64).sin())
+        .collect();
+    let initial = InitialConditions {
+        displacement: None,
+        velocity: Some(velocity),
+    };
+    let free_free = Supports {
+        left: Support::Free,
+        right: Support::Free,
+    };
     let model = Model::new(graded(n), free_free, &[], initial).unwrap();
     let out = run(&model, 0.7, 5.0);
     assert!(out.energy.relative_balance_error() < 1e-13);
     // No load: the work is zero and the energy at the end equals the start.
     let (first, last) = (out.energy.samples[0], *out.energy.samples.last().unwrap());
     assert_eq!(last.work, 0.0);
-    assert!((last.kinetic_staggered + last.strain - first.kinetic_staggered - first.strain).abs() < 1e-13 * out.energy.scale);
+    assert!(
+        (last.kinetic_staggered + last.strain - first.kinetic_staggered - first.strain).abs()
+            < 1e-13 * out.energy.scale
+    );
 }
 
 #[test]
@@ -73,7 +118,16 @@ fn full_step_energies_track_the_work_within_a_stated_bound_below_courant_one() {
     // Co = 0.5 and 0.1; the bound asserted is 2 %.
     for co in [0.5, 0.1] {
         let out = run(&fig1_model(100, TimeFunction::HEAVISIDE), co, 3.0);
-        let worst = out.energy.samples.iter().map(|s| (s.kinetic + s.strain - s.work).abs()).fold(0.0, f64::max);
-        assert!(worst <= 0.02 * out.energy.scale, "Co = {co}: |T + U - W| reached {worst:e} of scale {}", out.energy.scale);
+        let worst = out
+            .energy
+            .samples
+            .iter()
+            .map(|s| (s.kinetic + s.strain - s.work).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            worst <= 0.02 * out.energy.scale,
+            "Co = {co}: |T + U - W| reached {worst:e} of scale {}",
+            out.energy.scale
+        );
     }
 }

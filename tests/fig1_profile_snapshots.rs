@@ -14,8 +14,17 @@ use courant::table::Precision;
 
 #[test]
 fn fig1_profiles_are_locked_per_case() {
-    let scene = builtin_scene("fig1").expect("fig1 is built in").expect("fig1 is valid");
-    assert_eq!(scene.cases.iter().map(|c| c.name.as_str()).collect::<Vec<_>>(), ["co1", "co0.5", "co0.1"]);
+    let scene = builtin_scene("fig1")
+        .expect("fig1 is built in")
+        .expect("fig1 is valid");
+    assert_eq!(
+        scene
+            .cases
+            .iter()
+            .map(|c| c.name.as_str())
+            .collect::<Vec<_>>(),
+        ["co1", "co0.5", "co0.1"]
+    );
     for case in &scene.cases {
         let result = run_case(case).unwrap();
         let csv = profile_table(&result).to_csv(Precision::SNAPSHOT);

@@ -280,7 +280,7 @@ impl CentralDifference {
                     partial: Box::new(output),
                 });
             }
-            if step % request.energy_every == 0 || step == steps {
+            if step.is_multiple_of(request.energy_every) || step == steps {
                 energy.samples.push(EnergySample {
                     step,
                     time: t,
@@ -320,7 +320,10 @@ struct BlowUpGuard {
 
 impl BlowUpGuard {
     fn new(ratio: f64, initial_energy: f64) -> Self {
-        Self { ratio, reference: initial_energy }
+        Self {
+            ratio,
+            reference: initial_energy,
+        }
     }
 
     fn admit(&mut self, energy: f64) {
@@ -342,7 +345,10 @@ impl BlowUpGuard {
 /// `sum_j dt^2 F_j^2 / (8 m_j)`: the kinetic energy one step of the loads alone gives the
 /// full-step velocity.
 fn impulse_energy(model: &Model, dt: f64, forces: &[(usize, f64)]) -> f64 {
-    forces.iter().map(|&(node, f)| 0.125 * dt * dt * f * f * model.inverse_mass()[node]).sum()
+    forces
+        .iter()
+        .map(|&(node, f)| 0.125 * dt * dt * f * f * model.inverse_mass()[node])
+        .sum()
 }
 
 fn validate_request(
@@ -392,7 +398,7 @@ fn record<'a>(
             stress: model.element_stress(u),
         });
     }
-    if step % request.history_every == 0 && !output.histories.is_empty() {
+    if step.is_multiple_of(request.history_every) && !output.histories.is_empty() {
         let v_half = kernel.half_step_velocity();
         for history in &mut output.histories {
             let i = history.node;

@@ -326,10 +326,20 @@ mod tests {
     #[test]
     fn a_right_traction_pulls_along_plus_sigma_a() {
         let bar = Bar::homogeneous(Mesh::uniform(1.0, 4).unwrap(), 1.0, 1.0, 2.0).unwrap();
-        let load = Load::Traction { end: End::Right, stress: 3.0, time: TimeFunction::HEAVISIDE };
-        let supports = Supports { left: Support::Fixed, right: Support::Free };
+        let load = Load::Traction {
+            end: End::Right,
+            stress: 3.0,
+            time: TimeFunction::HEAVISIDE,
+        };
+        let supports = Supports {
+            left: Support::Fixed,
+            right: Support::Free,
+        };
         let model = Model::new(bar, supports, &[load], InitialConditions::default()).unwrap();
-        assert_eq!((model.loads()[0].node, model.loads()[0].magnitude), (4, 6.0));
+        assert_eq!(
+            (model.loads()[0].node, model.loads()[0].magnitude),
+            (4, 6.0)
+        );
     }
 
     #[test]

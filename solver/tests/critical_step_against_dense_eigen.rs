@@ -6,7 +6,9 @@
 //! graded, geometric and random meshes with every support combination, and the element
 //! (Fried) and Gershgorin estimates are conservative on all of them.
 
-use courant_solver::{Bar, CriticalStep, Field, InitialConditions, Load, Mesh, Model, Support, Supports, TimeFunction};
+use courant_solver::{
+    Bar, CriticalStep, Field, InitialConditions, Load, Mesh, Model, Support, Supports, TimeFunction,
+};
 use nalgebra::DMatrix;
 
 fn dense_omega_max(model: &Model) -> f64 {
@@ -17,7 +19,12 @@ fn dense_omega_max(model: &Model) -> f64 {
     let m = model.nodal_mass();
     let index = |i: usize| free.iter().position(|&f| f == i);
     for (e, &ke) in k.iter().enumerate() {
-        for (a, b, sign) in [(e, e, 1.0), (e + 1, e + 1, 1.0), (e, e + 1, -1.0), (e + 1, e, -1.0)] {
+        for (a, b, sign) in [
+            (e, e, 1.0),
+            (e + 1, e + 1, 1.0),
+            (e, e + 1, -1.0),
+            (e + 1, e, -1.0),
+        ] {
             if let (Some(i), Some(j)) = (index(a), index(b)) {
                 s[(i, j)] += sign * ke / (m[a] * m[b]).sqrt();
             }
@@ -31,15 +38,27 @@ fn wobble(n: usize, seed: u64) -> Vec<f64> {
     let mut x = seed;
     (0..n)
         .map(|_| {
-            x = x.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            x = x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             0.5 + (x >> 11) as f64 / (1u64 << 53) as f64
         })
         .collect()
 }
 
 fn bars() -> Vec<(String, Bar)> {
-    let graded = Bar::new(Mesh::uniform(1.0, 120).unwrap(), &Field::Linear { left: 16.0, right: 1.0 }, &Field::Constant(1.0), &Field::Constant(1.0)).unwrap();
-    let geometric = Bar::homogeneous(Mesh::geometric(2.0, 80, 1.03).unwrap(), 3.0, 2.0, 0.5).unwrap();
+    let graded = Bar::new(
+        Mesh::uniform(1.0, 120).unwrap(),
+        &Field::Linear {
+            left: 16.0,
+            right: 1.0,
+        },
+        &Field::Constant(1.0),
+        &Field::Constant(1.0),
+    )
+    .unwrap();
+    let geometric =
+        Bar::homogeneous(Mesh::geometric(2.0, 80, 1.03).unwrap(), 3.0, 2.0, 0.5).unwrap();
     let n = 150;
     let mut x = vec![0.0];
     for w in wobble(n, 7) {
@@ -52,20 +71,46 @@ fn bars() -> Vec<(String, Bar)> {
         &Field::PerElement(wobble(n, 17)),
     )
     .unwrap();
-    vec![("graded".into(), graded), ("geometric".into(), geometric), ("random".into(), random)]
+    vec![
+        ("graded".into(), graded),
+        ("geometric".into(), geometric),
+        ("random".into(), random),
+    ]
 }
 
 #[test]
 fn sturm_bisection_equals_dense_eigen_and_estimates_are_conservative() {
-    let supports = [(Support::Free, Support::Fixed), (Support::Fixed, Support::Free), (Support::Free, Support::Free), (Support::Fixed, Support::Fixed)];
+    let supports = [
+        (Support::Free, Support::Fixed),
+        (Support::Fixed, Support::Free),
+        (Support::Free, Support::Free),
+        (Support::Fixed, Support::Fixed),
+    ];
     for (name, bar) in bars() {
         for (left, right) in supports {
-            let load = Load::Force { node: bar.node_count() / 2, magnitude: 1.0, time: TimeFunction::HEAVISIDE };
-            let model = Model::new(bar.clone(), Supports { left, right }, &[load], InitialConditions::default()).unwrap();
+            let load = Load::Force {
+                node: bar.node_count() / 2,
+                magnitude: 1.0,
+                time: TimeFunction::HEAVISIDE,
+            };
+            let model = Model::new(
+                bar.clone(),
+                Supports { left, right },
+                &[load],
+                InitialConditions::default(),
+            )
+            .unwrap();
             let c = CriticalStep::lumped(&model);
             let dense = dense_omega_max(&model);
-            assert!((c.omega_max - dense).abs() <= 1e-12 * dense, "{name} {left:?}-{right:?}: {} vs {dense}", c.omega_max);
-            assert!(c.element <= c.exact && c.gershgorin <= c.exact, "{name} {left:?}-{right:?}: {c:?}");
+            assert!(
+                (c.omega_max - dense).abs() <= 1e-12 * dense,
+                "{name} {left:?}-{right:?}: {} vs {dense}",
+                c.omega_max
+            );
+            assert!(
+                c.element <= c.exact && c.gershgorin <= c.exact,
+                "{name} {left:?}-{right:?}: {c:?}"
+            );
         }
     }
 }

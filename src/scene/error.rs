@@ -57,7 +57,18 @@ impl Source<'_> {
     /// Convert a TOML deserialisation error, recovering the dotted key from the text at its span.
     pub fn from_toml(&self, err: &toml::de::Error) -> SceneError {
         let key = err.span().map(|s| self.key_at(s.start)).unwrap_or_default();
-        let message = err.message().trim().replace('\n', "; ");
+        let message = err
+            .message()
+            .trim()
+            .replace('\n', "; ")
+            .replace(
+                "data did not match any variant of untagged enum RawField",
+                "expected a number or `{ linear = [left, right] }`",
+            )
+            .replace(
+                "data did not match any variant of untagged enum OneOrMany",
+                "expected a positive number or a list of positive numbers",
+            );
         self.error(err.span(), &key, message)
     }
 

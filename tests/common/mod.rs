@@ -3,16 +3,26 @@
 
 use courant_references::DalembertBar;
 use courant_solver::{
-    Bar, CentralDifference, End, InitialConditions, Load, Mesh, Model, OutputRequest, RunOutput, Start, Supports,
-    TimeFunction,
+    Bar, CentralDifference, End, InitialConditions, Load, Mesh, Model, OutputRequest, RunOutput,
+    Start, Supports, TimeFunction,
 };
 
 /// The homogeneous unit bar of the seed's Fig. 1 (L = A = rho = E = 1, sigma0 = -1), N elements,
 /// loaded by `time` at the free left end, fixed at the right end.
 pub fn fig1_model(n: usize, time: TimeFunction) -> Model {
     let bar = Bar::homogeneous(Mesh::uniform(1.0, n).unwrap(), 1.0, 1.0, 1.0).unwrap();
-    let load = Load::Traction { end: End::Left, stress: -1.0, time };
-    Model::new(bar, Supports::FREE_FIXED, &[load], InitialConditions::default()).unwrap()
+    let load = Load::Traction {
+        end: End::Left,
+        stress: -1.0,
+        time,
+    };
+    Model::new(
+        bar,
+        Supports::FREE_FIXED,
+        &[load],
+        InitialConditions::default(),
+    )
+    .unwrap()
 }
 
 /// d'Alembert's solution of that bar.
@@ -22,30 +32,58 @@ pub fn fig1_exact() -> DalembertBar {
 
 /// Run lumped CD at Courant number `co` (dt shrunk to hit `times` exactly), recording profiles
 /// at `times` and the histories of `history_nodes` at every step.
-pub fn run_fig1(n: usize, co: f64, times: &[f64], start: Start, time: TimeFunction, history_nodes: &[usize]) -> RunOutput {
+pub fn run_fig1(
+    n: usize,
+    co: f64,
+    times: &[f64],
+    start: Start,
+    time: TimeFunction,
+    history_nodes: &[usize],
+) -> RunOutput {
     let model = fig1_model(n, time);
     let end = times.iter().copied().fold(0.0, f64::max);
     let plan = courant_solver::plan(co / n as f64, times, end).unwrap();
-    let integrator = CentralDifference { start, ..CentralDifference::new(plan.dt) };
-    let request = OutputRequest { profile_steps: plan.output_steps, history_nodes: history_nodes.to_vec(), ..Default::default() };
+    let integrator = CentralDifference {
+        start,
+        ..CentralDifference::new(plan.dt)
+    };
+    let request = OutputRequest {
+        profile_steps: plan.output_steps,
+        history_nodes: history_nodes.to_vec(),
+        ..Default::default()
+    };
     integrator.run(&model, plan.steps, &request).unwrap()
 }
 
 /// Exact element averages of the stress on the uniform N-element unit mesh at time t.
 pub fn exact_averages(n: usize, t: f64) -> Vec<f64> {
     let exact = fig1_exact();
-    (0..n).map(|e| exact.stress_average(e as f64 / n as f64, (e + 1) as f64 / n as f64, t)).collect()
+    (0..n)
+        .map(|e| exact.stress_average(e as f64 / n as f64, (e + 1) as f64 / n as f64, t))
+        .collect()
 }
 
 /// max_e |a_e - b_e|.
 pub fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max)
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
 }
 
 /// Normalised (L1, L2, Linf) stress errors on the uniform unit mesh (|sigma0| = 1, L = 1).
 pub fn error_norms(stress: &[f64], exact: &[f64]) -> (f64, f64, f64) {
     let h = 1.0 / stress.len() as f64;
-    let l1 = stress.iter().zip(exact).map(|(s, e)| h * (s - e).abs()).sum();
-    let l2 = stress.iter().zip(exact).map(|(s, e)| h * (s - e).powi(2)).sum::<f64>().sqrt();
+    let l1 = stress
+        .iter()
+        .zip(exact)
+        .map(|(s, e)| h * (s - e).abs())
+        .sum();
+    let l2 = stress
+        .iter()
+        .zip(exact)
+        .map(|(s, e)| h * (s - e).powi(2))
+        .sum::<f64>()
+        .sqrt();
     (l1, l2, max_abs_diff(stress, exact))
 }
