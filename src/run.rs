@@ -110,14 +110,9 @@ fn compare(case: &Case, output: RunOutput, status: Status, wall_time: Duration) 
         .profiles
         .into_iter()
         .map(|p| {
-            let exact = reference.map(|r| {
-                (
-                    r.element_averages(mesh, p.time),
-                    r.element_envelope(mesh, p.time),
-                )
-            });
+            let exact = reference.map(|r| (r.element_averages(mesh, p.time), r.extreme(p.time)));
             let norms = reference.zip(exact.as_ref()).map(|(r, (avg, env))| {
-                ErrorNorms::of(mesh, &p.stress, avg, env, r.stress_scale(), r.load_sign())
+                ErrorNorms::of(mesh, &p.stress, avg, *env, r.stress_scale(), r.load_sign())
             });
             ProfileComparison {
                 time: p.time,

@@ -1,6 +1,6 @@
 //! Source of truth: the command-line contract in the README ("Running scenes"): `courant list`
 //! names every built-in scene; `courant run` writes `<case>.csv` profiles with the columns
-//! `t, x, stress, reference, error`, histories, energy logs and a `summary.csv` with cost and
+//! `t, element, x, stress, reference, error`, histories, energy logs and a `summary.csv` with cost and
 //! error per case; exit status 0 when every expectation holds, 1 when one fails.
 //!
 //! Proves: the files exist with their headers, the same scene gives bit-identical results on a

@@ -59,7 +59,7 @@ fn the_minimal_scene_is_valid_and_uses_the_documented_defaults() {
 }
 
 #[rstest]
-#[case::syntax_error("elements = 10", "elements = = 10", 9, "mesh.elements", "")]
+#[case::syntax_error("elements = 10", "elements = = 10", 9, "mesh.elements", "extra `=`")]
 #[case::unknown_key(
     "elements = 10",
     "elements = 10\nelemnts = 3",
@@ -116,6 +116,41 @@ fn the_minimal_scene_is_valid_and_uses_the_documented_defaults() {
     "mesh.elements",
     "0 must be at least 1"
 )]
+#[case::too_many_elements(
+    "elements = 10",
+    "elements = 1000000000000",
+    9,
+    "mesh.elements",
+    "must be between 1 and 10000000"
+)]
+#[case::extreme_grading(
+    "elements = 10",
+    "elements = 2000\ngrading = 1.5",
+    10,
+    "mesh.grading",
+    "smallest element"
+)]
+#[case::field_of_wrong_shape(
+    "modulus = 1.0",
+    "modulus = { linear = 3 }",
+    6,
+    "material.modulus",
+    "a number or `{ linear = [left, right] }`"
+)]
+#[case::too_many_steps(
+    "courant = 0.5",
+    "courant = 1e-9",
+    17,
+    "integrator.courant",
+    "at most 100000000"
+)]
+#[case::too_much_work(
+    "elements = 10",
+    "elements = 1000000",
+    17,
+    "integrator.courant",
+    "node-steps"
+)]
 #[case::zero_courant(
     "courant = 0.5",
     "courant = 0.0",
@@ -166,6 +201,13 @@ fn the_minimal_scene_is_valid_and_uses_the_documented_defaults() {
     "nothing excites the bar"
 )]
 #[case::traction_without_end("end = \"left\"", "node = 0", 11, "load", "needs `end`")]
+#[case::force_on_a_fixed_node(
+    "kind = \"traction\"\nend = \"left\"",
+    "kind = \"force\"\nnode = 10",
+    11,
+    "load",
+    "which is fixed"
+)]
 #[case::reference_does_not_apply(
     "[mesh]",
     "[supports]\nleft = \"free\"\nright = \"free\"\n\n[mesh]",
@@ -179,6 +221,13 @@ fn the_minimal_scene_is_valid_and_uses_the_documented_defaults() {
     25,
     "expect",
     "is not one of"
+)]
+#[case::bound_min_above_max(
+    "kind = \"dalembert\"",
+    "kind = \"dalembert\"\n\n[[expect]]\nmetric = \"l1\"\nmin = 2.0\nmax = 1.0\nsource = \"x\"",
+    25,
+    "expect",
+    "above max"
 )]
 fn bad_input_names_line_key_and_rule(
     #[case] find: &str,

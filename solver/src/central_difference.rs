@@ -118,11 +118,14 @@ impl CentralDifference {
         }
     }
 
-    /// Refuse `dt` above the exact critical step (with a relative allowance of 1e-12 so that
-    /// Co = 1 on a free-free uniform bar, where `dt = dt_crit`, is accepted).
+    /// Refuse `dt` above the exact critical step (with the relative allowance
+    /// [`crate::time_step::ROUNDING_SLACK`] of the time plan, so that Co = 1 on a free-free
+    /// uniform bar, where `dt = dt_crit`, is accepted after the plan's rounding).
     pub fn check_stability(&self, model: &Model) -> Result<CriticalStep, UnstableStepError> {
         let critical = CriticalStep::lumped(model);
-        if self.dt > critical.exact * (1.0 + 1e-12) && !self.stability.allow_unstable {
+        if self.dt > critical.exact * (1.0 + crate::time_step::ROUNDING_SLACK)
+            && !self.stability.allow_unstable
+        {
             return Err(UnstableStepError {
                 dt: self.dt,
                 dt_crit: critical.exact,
@@ -178,10 +181,12 @@ impl CentralDifference {
             .map(|i| v0[i] + start_factor * dt * a0[i])
             .collect();
         let mass = model.nodal_mass();
-        // v^{-1/2} = 2 v^0 - v^{1/2}, so that v^0 is the mean of the two half steps.
+        // v^{-1/2} = v^{1/2} - dt a^0: the recurrence run backwards one step (for the half-step
+        // start v^0 is then the mean of the two half steps; for the three-level start
+        // v^{-1/2} = v^0, i.e. u^{-1} = u^0 - dt v^0).
         let kinetic_staggered0: f64 = 0.5
             * (0..nodes)
-                .map(|i| mass[i] * (2.0 * v0[i] - v_half[i]) * v_half[i])
+                .map(|i| mass[i] * (v_half[i] - dt * a0[i]) * v_half[i])
                 .sum::<f64>();
         let kinetic0: f64 = 0.5 * (0..nodes).map(|i| mass[i] * v0[i] * v0[i]).sum::<f64>();
         let strain0 = model.strain_energy(u0);

@@ -68,9 +68,10 @@ pub enum InputError {
 /// The time step is above the critical step of the scheme and unstable runs were not allowed.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[error(
-    "time step dt = {dt:.6e} exceeds the critical step dt_crit = {dt_crit:.6e} \
-     (Courant number {courant:.6} relative to the stiffest element; element {element} controls \
-     with h/c = {element_dt:.6e}); lower the Courant number or set allow_unstable = true"
+    "time step dt = {dt:.6e} exceeds the critical step dt_crit = {dt_crit:.6e} by {:.3e} \
+     relative (Courant number {courant:.6} relative to the stiffest element; element {element} \
+     controls with h/c = {element_dt:.6e}); lower the Courant number or set allow_unstable = true",
+    dt / dt_crit - 1.0
 )]
 pub struct UnstableStepError {
     /// The requested time step.

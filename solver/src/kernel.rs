@@ -139,10 +139,12 @@ impl LumpedCentralDifference {
         if ENERGY {
             let m = &self.mass[from..to];
             for i in 0..v.len() {
-                let r = k[i + 1] * (u[i + 2] - u[i + 1]) - k[i] * (u[i + 1] - u[i]);
+                let right = u[i + 2] - u[i + 1];
+                let r = k[i + 1] * right - k[i] * (u[i + 1] - u[i]);
                 let old = v[i];
                 let new = old + s[i] * r;
                 v[i] = new;
+                sums.strain += k[i + 1] * right * right;
                 sums.kinetic_staggered += m[i] * old * new;
                 sums.kinetic += m[i] * (old + new) * (old + new);
             }
@@ -163,6 +165,8 @@ impl LumpedCentralDifference {
         let new = old + self.dt_inverse_mass[p] * r;
         self.v[p] = new;
         if ENERGY {
+            let right = u[p + 1] - u[p];
+            sums.strain += k[p] * right * right;
             sums.kinetic_staggered += self.mass[p] * old * new;
             sums.kinetic += self.mass[p] * (old + new) * (old + new);
         }

@@ -10,10 +10,20 @@
 use crate::error::InputError;
 
 /// Node positions of a 1D mesh, strictly increasing. Element `e` joins nodes `e` and `e + 1`.
+///
+/// Element lengths are stored, not re-derived from rounded node positions: on a uniform mesh
+/// every `h_e` is exactly `L/N`, which keeps Co = 1 exactness at round-off level for large N.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Mesh {
     nodes: Vec<f64>,
+    lengths: Vec<f64>,
 }
+
+/// Largest number of elements a mesh may have (memory: about 100 bytes per element in a run).
+pub const MAX_ELEMENTS: usize = 10_000_000;
+
+/// Smallest element length relative to the bar length a graded mesh may produce.
+pub const MIN_RELATIVE_ELEMENT_LENGTH: f64 = 1e-12;
 
 impl Mesh {
     /// Uniform mesh of `elements` elements on `[0, length]`: `x_i = i L / N`.
@@ -27,16 +37,30 @@ impl Mesh {
     pub fn geometric(length: f64, elements: usize, ratio: f64) -> Result<Self, InputError> {
         positive("length", length)?;
         positive("grading ratio", ratio)?;
-        if elements == 0 {
+        check_element_count(elements)?;
+        // The smallest element relative to L: (r - 1)/(r^N - 1) for r > 1, and the mirror image
+        // for r < 1; it must stay representable and above the floor.
+        let big = ratio.max(1.0 / ratio);
+        let smallest = if ratio == 1.0 {
+            1.0 / elements as f64
+        } else {
+            (big - 1.0) / (big.powf(elements as f64) - 1.0)
+        };
+        if smallest.is_nan() || smallest < MIN_RELATIVE_ELEMENT_LENGTH {
             return Err(InputError::Parameter {
-                field: "elements",
-                value: 0.0,
-                rule: "must be at least 1",
+                field: "grading ratio",
+                value: ratio,
+                rule: "makes the smallest element shorter than 1e-12 of the bar for this many elements",
             });
         }
         let mut nodes = Vec::with_capacity(elements + 1);
         if ratio == 1.0 {
             nodes.extend((0..=elements).map(|i| length * i as f64 / elements as f64));
+            let mut mesh = Self::from_nodes(nodes)?;
+            mesh.lengths
+                .iter_mut()
+                .for_each(|h| *h = length / elements as f64);
+            return Ok(mesh);
         } else {
             // Partial sums of the progression, normalised so the last node is exactly L.
             let mut x = 0.0;
@@ -84,7 +108,9 @@ impl Mesh {
                 });
             }
         }
-        Ok(Self { nodes })
+        check_element_count(nodes.len() - 1)?;
+        let lengths = nodes.windows(2).map(|w| w[1] - w[0]).collect();
+        Ok(Self { nodes, lengths })
     }
 
     /// Node positions.
@@ -104,7 +130,7 @@ impl Mesh {
 
     /// Length of element `e`, `h_e = x_{e+1} - x_e`.
     pub fn element_length(&self, e: usize) -> f64 {
-        self.nodes[e + 1] - self.nodes[e]
+        self.lengths[e]
     }
 
     /// Midpoint of element `e`.
@@ -131,6 +157,18 @@ impl Mesh {
             i if (self.nodes[i] - x) < (x - self.nodes[i - 1]) => i,
             i => i - 1,
         }
+    }
+}
+
+fn check_element_count(elements: usize) -> Result<(), InputError> {
+    if (1..=MAX_ELEMENTS).contains(&elements) {
+        Ok(())
+    } else {
+        Err(InputError::Parameter {
+            field: "elements",
+            value: elements as f64,
+            rule: "must be between 1 and 10000000",
+        })
     }
 }
 
@@ -175,6 +213,30 @@ mod tests {
         assert!(Mesh::uniform(1.0, 0).is_err());
         let err = Mesh::from_nodes(vec![0.0, 0.5, 0.5]).unwrap_err();
         assert!(err.to_string().contains("node 2"), "{err}");
+    }
+
+    #[test]
+    fn extreme_grading_and_huge_meshes_are_refused_by_rule() {
+        let err = Mesh::geometric(1.0, 2000, 1.5).unwrap_err();
+        assert!(
+            err.to_string()
+                .starts_with("grading ratio = 1.5 makes the smallest element"),
+            "{err}"
+        );
+        assert!(Mesh::geometric(1.0, 2000, 1.0 / 1.5).is_err());
+        assert!(Mesh::geometric(1.0, 100, 1.2).is_ok());
+        assert!(
+            Mesh::uniform(1.0, MAX_ELEMENTS + 1)
+                .unwrap_err()
+                .to_string()
+                .contains("between 1 and")
+        );
+    }
+
+    #[test]
+    fn uniform_elements_are_exactly_l_over_n() {
+        let m = Mesh::uniform(1.0, 3000).unwrap();
+        assert!((0..3000).all(|e| m.element_length(e) == 1.0 / 3000.0));
     }
 
     #[test]

@@ -121,6 +121,12 @@ impl Model {
             (i == 0 && supports.left == Support::Fixed)
                 || (i == last && supports.right == Support::Fixed)
         };
+        if let Some(load) = resolved.iter().find(|l| fixed(l.node)) {
+            return Err(InputError::Other(format!(
+                "a load acts on node {}, which is fixed: it would do nothing; load a free node or free that end",
+                load.node
+            )));
+        }
         let mut fields = [
             ("initial displacement", initial.displacement),
             ("initial velocity", initial.velocity),
@@ -340,6 +346,23 @@ mod tests {
             (model.loads()[0].node, model.loads()[0].magnitude),
             (4, 6.0)
         );
+    }
+
+    #[test]
+    fn a_load_on_a_fixed_node_is_refused() {
+        let load = Load::Force {
+            node: 4,
+            magnitude: 1.0,
+            time: TimeFunction::HEAVISIDE,
+        };
+        let err = Model::new(
+            unit_bar(4),
+            Supports::FREE_FIXED,
+            &[load],
+            InitialConditions::default(),
+        )
+        .unwrap_err();
+        assert!(err.to_string().contains("node 4, which is fixed"), "{err}");
     }
 
     #[test]

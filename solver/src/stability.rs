@@ -3,8 +3,8 @@
 //!
 //! - **element**: `min_e h_e/c_e`. For the two-node lumped element `omega_max^e = 2 c_e/h_e`, and
 //!   Fried's theorem (`omega_max <= max_e omega_max^e`, Fried 1972) makes it conservative.
-//! - **Gershgorin**: `omega_max^2 <= max_i sum_j |K_ij|/m_i` over free nodes (row sums of
-//!   `M^-1 K`); conservative.
+//! - **Gershgorin**: `omega_max^2 <= max_i sum_j |K_ij|/sqrt(m_i m_j)` over free nodes (row
+//!   sums of the symmetric `M^-1/2 K M^-1/2`); conservative.
 //! - **exact**: the largest eigenvalue of `M^-1/2 K M^-1/2` (symmetric tridiagonal, fixed nodes
 //!   deleted), found by Sturm-sequence bisection to full precision (Wilkinson, The Algebraic
 //!   Eigenvalue Problem (1965), §5.37). Unlike power iteration it does not slow down when the top
@@ -23,7 +23,7 @@ pub struct CriticalStep {
     pub element: f64,
     /// The element that attains the element estimate.
     pub controlling_element: usize,
-    /// Gershgorin estimate `2/sqrt(max_i sum_j |K_ij|/m_i)`.
+    /// Gershgorin estimate `2/sqrt(max_i sum_j |K_ij|/sqrt(m_i m_j))`.
     pub gershgorin: f64,
 }
 

@@ -24,6 +24,14 @@ pub struct TimePlan {
 
 /// Plan a run of nominal step `nominal_dt` to `end_time` that lands exactly on `output_times`
 /// (each in `[0, end_time]`).
+///
+/// The common interval `tau` is the greatest common divisor of the end and output times
+/// (Euclid within a tolerance of 1e-9 of the smallest time, so decimal inputs like 0.3 work),
+/// snapped so that the end time is an exact multiple of it. Then, as in methods.md §1,
+/// `dt = tau / ceil(tau/dt_0 (1 - 1e-9))`: `dt` exceeds `dt_0` by at most the relative slack
+/// [`ROUNDING_SLACK`], and only through round-off. Output times that share no common interval
+/// give a small `tau`, hence a small step: the plan's `dt` and step count say so, and
+/// [`MAX_STEPS`] bounds the run.
 pub fn plan(nominal_dt: f64, output_times: &[f64], end_time: f64) -> Result<TimePlan, InputError> {
     crate::mesh::positive("dt", nominal_dt)?;
     crate::mesh::positive("end time", end_time)?;
@@ -41,27 +49,43 @@ pub fn plan(nominal_dt: f64, output_times: &[f64], end_time: f64) -> Result<Time
             )));
         }
     }
-    let tol = ROUNDING_SLACK * end_time;
-    let tau = output_times
-        .iter()
-        .filter(|&&t| t > tol)
-        .fold(end_time, |g, &t| float_gcd(g, t, tol));
-    if tau < nominal_dt * (1.0 - ROUNDING_SLACK) {
+    let positive_times = || {
+        output_times
+            .iter()
+            .copied()
+            .filter(|&t| t > ROUNDING_SLACK * end_time)
+    };
+    let smallest = positive_times().fold(end_time, f64::min);
+    let tol = (ROUNDING_SLACK * smallest).max(64.0 * f64::EPSILON * end_time);
+    let tau = positive_times().fold(end_time, |g, t| float_gcd(g, t, tol));
+    // Snap tau so that the end time is an exact multiple of it.
+    let intervals = (end_time / tau).round().max(1.0);
+    let per_interval = (end_time / intervals / nominal_dt * (1.0 - ROUNDING_SLACK))
+        .ceil()
+        .max(1.0);
+    let steps_f = intervals * per_interval;
+    if steps_f > MAX_STEPS as f64 {
         return Err(InputError::Other(format!(
-            "the output times and end time {end_time} share no common interval as long as the step \
-             dt = {nominal_dt:e} (their largest common interval is {tau:e}); choose times that are \
-             multiples of a common interval of at least one step"
+            "the run needs {steps_f:.3e} steps of dt <= {nominal_dt:e} to reach {end_time} through the output times \
+             (common interval {:e}); at most {MAX_STEPS} are allowed: raise the step, shorten the run or choose \
+             output times that are multiples of a longer common interval",
+            end_time / intervals
         )));
     }
-    let per_tau = (tau / nominal_dt * (1.0 - ROUNDING_SLACK)).ceil().max(1.0);
-    let dt = tau / per_tau;
-    let to_step = |t: f64| (t / dt).round() as usize;
+    let steps = steps_f as usize;
+    let dt = end_time / steps_f;
     Ok(TimePlan {
         dt,
-        steps: to_step(end_time),
-        output_steps: output_times.iter().map(|&t| to_step(t)).collect(),
+        steps,
+        output_steps: output_times
+            .iter()
+            .map(|&t| (t / dt).round() as usize)
+            .collect(),
     })
 }
+
+/// Largest number of steps a plan may have.
+pub const MAX_STEPS: usize = 100_000_000;
 
 /// Greatest common divisor of two positive reals within an absolute tolerance (Euclid).
 fn float_gcd(a: f64, b: f64, tol: f64) -> f64 {
@@ -97,9 +121,47 @@ mod tests {
     }
 
     #[test]
-    fn incommensurable_output_times_are_refused() {
-        let err = plan(0.01, &[0.5, 0.501], 1.0).unwrap_err();
-        assert!(err.to_string().contains("no common interval"), "{err}");
+    fn output_times_with_a_short_common_interval_shorten_the_step() {
+        let p = plan(0.01, &[0.5, 0.501], 1.0).unwrap();
+        assert!((p.dt - 0.001).abs() < 1e-15, "{}", p.dt);
+        assert_eq!(p.output_steps, vec![500, 501]);
+        let p = plan(0.1, &[0.05], 0.05).unwrap();
+        assert_eq!((p.steps, p.dt), (1, 0.05));
+    }
+
+    #[test]
+    fn long_runs_with_decimal_times_never_exceed_the_nominal_step() {
+        for (times, end, dt0) in [
+            (vec![0.37, 0.74], 1000.0, 0.01),
+            (vec![0.3], 1e4, 0.01),
+            (vec![0.3], 1e5, 0.01),
+        ] {
+            let p = plan(dt0, &times, end).unwrap();
+            assert!(
+                p.dt <= dt0 * (1.0 + ROUNDING_SLACK),
+                "{times:?} to {end}: dt {} > {dt0}",
+                p.dt
+            );
+            assert!(
+                p.dt >= 0.99 * dt0,
+                "{times:?} to {end}: dt {} needlessly small",
+                p.dt
+            );
+            assert!((p.steps as f64 * p.dt - end).abs() <= 1e-12 * end);
+            for (&t, &n) in times.iter().zip(&p.output_steps) {
+                assert!(
+                    (n as f64 * p.dt - t).abs() <= 1e-12 * end,
+                    "{t} missed: {}",
+                    n as f64 * p.dt
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn a_plan_beyond_the_step_limit_is_refused() {
+        let err = plan(1e-9, &[], 1.0).unwrap_err();
+        assert!(err.to_string().contains("at most 100000000"), "{err}");
     }
 
     #[test]

@@ -17,6 +17,13 @@ use schema::*;
 use std::ops::Range;
 use toml::Spanned;
 
+/// Samples kept by default for histories and energy logs: every step up to this many steps,
+/// then every `ceil(steps / MAX_SAMPLES)`-th step.
+pub const MAX_SAMPLES: usize = 10_000;
+
+/// Largest `steps x elements` a scene case may ask for (about 4 minutes at 2.5 ns per node-step).
+pub const MAX_NODE_STEPS: f64 = 1e11;
+
 /// A validated scene.
 #[derive(Debug, Clone)]
 pub struct Scene {
@@ -211,8 +218,18 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
         .map(|v| positive(v, "mesh.grading"))
         .transpose()?
         .unwrap_or(1.0);
-    let mesh = Mesh::geometric(length, elements as usize, grading)
-        .map_err(|e| err(raw.mesh.elements.span(), "mesh", e.to_string()))?;
+    let mesh = Mesh::geometric(length, elements as usize, grading).map_err(|e| {
+        match (&e, &raw.mesh.grading) {
+            (
+                InputError::Parameter {
+                    field: "grading ratio",
+                    ..
+                },
+                Some(g),
+            ) => err(g.span(), "mesh.grading", e.to_string()),
+            _ => err(raw.mesh.elements.span(), "mesh.elements", e.to_string()),
+        }
+    })?;
     let modulus = field(&raw.material.modulus);
     let density = raw
         .material
@@ -400,10 +417,12 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             history_nodes.push(mesh.nearest_node(x));
         }
     }
-    let every = |v: &Option<Spanned<i64>>, key: &str| -> Result<usize, SceneError> {
+    // `None` here means "the default": every step up to MAX_SAMPLES steps, then thinned so
+    // that a long run keeps about MAX_SAMPLES samples (decided per case, from its step count).
+    let every = |v: &Option<Spanned<i64>>, key: &str| -> Result<Option<usize>, SceneError> {
         match v {
-            None => Ok(1),
-            Some(s) if *s.get_ref() >= 1 => Ok(*s.get_ref() as usize),
+            None => Ok(None),
+            Some(s) if *s.get_ref() >= 1 => Ok(Some(*s.get_ref() as usize)),
             Some(s) => Err(err(
                 s.span(),
                 key,
@@ -448,11 +467,25 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                 ),
             )
         })?;
+        let node_steps = plan.steps as f64 * model.bar().element_count() as f64;
+        if node_steps > MAX_NODE_STEPS {
+            return Err(err(
+                spanned.span(),
+                steps_key,
+                format!(
+                    "case {case_name}: {} steps x {} elements = {node_steps:.2e} node-steps, more than the {MAX_NODE_STEPS:.0e} \
+                     a scene may ask for; coarsen the mesh, raise the step or shorten the run",
+                    plan.steps,
+                    model.bar().element_count()
+                ),
+            ));
+        }
+        let thinned = plan.steps.div_ceil(MAX_SAMPLES).max(1);
         let request = OutputRequest {
             profile_steps: plan.output_steps.clone(),
             history_nodes: history_nodes.clone(),
-            history_every,
-            energy_every,
+            history_every: history_every.unwrap_or(thinned),
+            energy_every: energy_every.unwrap_or(thinned),
         };
         cases.push(Case {
             name: case_name,
@@ -640,6 +673,9 @@ fn expectation(
             return Err(fail("`equals` applies only to metric \"diverged\"".into()));
         }
         (_, None, None, None) => return Err(fail("needs `max`, `min` or both".into())),
+        (_, Some(lo), Some(hi), None) if lo > hi => {
+            return Err(fail(format!("min = {lo} is above max = {hi}")));
+        }
         (_, min, max, None) => Bound::Range { min, max },
     };
     if raw.source.trim().is_empty() {

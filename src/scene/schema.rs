@@ -247,9 +247,10 @@ pub struct RawOutput {
     pub history_points: Option<Spanned<Vec<f64>>>,
     /// Default: the last profile time (required when there are none).
     pub end_time: Option<Spanned<f64>>,
-    /// Default 1.
+    /// Default: every step for runs of up to 10000 steps, else every ceil(steps/10000)-th.
     pub history_every: Option<Spanned<i64>>,
-    /// Default 1.
+    /// Default: every step for runs of up to 10000 steps, else every ceil(steps/10000)-th (the
+    /// balance is checked at every step regardless).
     pub energy_every: Option<Spanned<i64>>,
 }
 
