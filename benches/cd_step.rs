@@ -12,8 +12,12 @@
 //!
 //! Target: as fast as the tight C loop doing the same arithmetic, `benches/c_reference/cd_step.c`
 //! compiled with `gcc -O3 -march=native` — the team's figure is about 1.6–1.8 ns per node-step
-//! for N <= 1e5 on the 2-core machines (see `benches/c_reference/README.md` for what that loop
-//! actually measures per variant).
+//! for N <= 1e5 on the 2-core machines. `run.sh` there prints the C loop's own numbers (two-pass,
+//! fused and blocked variants); compare with those, measured on the same machine.
+//! ISA: the kernel selects an AVX2-compiled copy of the step at run time where the CPU has AVX2
+//! (bit-identical results; see kernel.rs), so a default `cargo bench` is comparable with the C
+//! loop at `-march=native`. `step_with_energy` adds three energy sums, kept in 8 independent
+//! lanes so they vectorise.
 //!
 //! Run:      cargo bench --bench cd_step
 //!           (one function only: cargo bench --bench cd_step -- 'lumped_cd_step/step/')
