@@ -32,9 +32,6 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use courant_solver::kernel::LumpedCentralDifference;
-use courant_solver::{
-    Bar, End, Field, InitialConditions, Load, Mesh, Model, Supports, TimeFunction,
-};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 /// Element counts.
@@ -42,29 +39,7 @@ const SIZES: [usize; 3] = [1_000, 100_000, 1_000_000];
 
 /// The graded, loaded, free-fixed bar of `n` elements and its kernel at Courant number 0.5.
 fn graded_kernel(n: usize) -> LumpedCentralDifference {
-    let mesh = Mesh::uniform(1.0, n).unwrap();
-    let bar = Bar::new(
-        mesh,
-        &Field::Linear {
-            left: 16.0,
-            right: 1.0,
-        },
-        &Field::Constant(1.0),
-        &Field::Constant(1.0),
-    )
-    .unwrap();
-    let load = Load::Traction {
-        end: End::Left,
-        stress: -1.0,
-        time: TimeFunction::HEAVISIDE,
-    };
-    let model = Model::new(
-        bar,
-        Supports::FREE_FIXED,
-        &[load],
-        InitialConditions::default(),
-    )
-    .unwrap();
+    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
     let dt = 0.5 * model.bar().stiffest_element().1;
     let u0 = vec![0.0; n + 1];
     // Smooth and bounded, zero at the fixed right end (node n).

@@ -254,31 +254,9 @@ fn has_avx2() -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Bar, End, Field, InitialConditions, Load, Mesh, Supports, TimeFunction};
 
     fn graded_kernel(n: usize) -> LumpedCentralDifference {
-        let bar = Bar::new(
-            Mesh::uniform(1.0, n).unwrap(),
-            &Field::Linear {
-                left: 16.0,
-                right: 1.0,
-            },
-            &Field::Constant(1.0),
-            &Field::Constant(1.0),
-        )
-        .unwrap();
-        let load = Load::Traction {
-            end: End::Left,
-            stress: -1.0,
-            time: TimeFunction::HEAVISIDE,
-        };
-        let model = Model::new(
-            bar,
-            Supports::FREE_FIXED,
-            &[load],
-            InitialConditions::default(),
-        )
-        .unwrap();
+        let model = crate::fixtures::graded_seed_bar(n).unwrap();
         let dt = 0.5 * model.bar().stiffest_element().1;
         let v: Vec<f64> = (0..=n)
             .map(|i| if i == n { 0.0 } else { (i as f64 * 0.37).sin() })

@@ -13,6 +13,7 @@
 pub mod bar;
 pub mod central_difference;
 pub mod error;
+pub mod fixtures;
 pub mod kernel;
 pub mod load;
 pub mod mesh;

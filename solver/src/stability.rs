@@ -125,7 +125,7 @@ pub fn largest_eigenvalue(diag: &[f64], off: &[f64], upper: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bar::{Bar, Field};
+    use crate::bar::Bar;
     use crate::load::{End, Load, TimeFunction};
     use crate::mesh::Mesh;
     use crate::model::{InitialConditions, Model, Support, Supports};
@@ -173,17 +173,7 @@ mod tests {
 
     #[test]
     fn graded_bar_is_controlled_by_its_stiff_end() {
-        let bar = Bar::new(
-            Mesh::uniform(1.0, 100).unwrap(),
-            &Field::Linear {
-                left: 16.0,
-                right: 1.0,
-            },
-            &Field::Constant(1.0),
-            &Field::Constant(1.0),
-        )
-        .unwrap();
-        let cs = CriticalStep::lumped(&model(bar, Supports::FREE_FIXED));
+        let cs = CriticalStep::lumped(&crate::fixtures::graded_seed_bar(100).unwrap());
         assert_eq!(cs.controlling_element, 0);
         assert!(
             cs.exact >= cs.element,

@@ -2,27 +2,12 @@
 #![allow(dead_code)]
 
 use courant_references::DalembertBar;
-use courant_solver::{
-    Bar, CentralDifference, End, InitialConditions, Load, Mesh, Model, OutputRequest, RunOutput,
-    Start, Supports, TimeFunction,
-};
+use courant_solver::{CentralDifference, Model, OutputRequest, RunOutput, Start, TimeFunction};
 
 /// The homogeneous unit bar of the seed's Fig. 1 (L = A = rho = E = 1, sigma0 = -1), N elements,
 /// loaded by `time` at the free left end, fixed at the right end.
 pub fn fig1_model(n: usize, time: TimeFunction) -> Model {
-    let bar = Bar::homogeneous(Mesh::uniform(1.0, n).unwrap(), 1.0, 1.0, 1.0).unwrap();
-    let load = Load::Traction {
-        end: End::Left,
-        stress: -1.0,
-        time,
-    };
-    Model::new(
-        bar,
-        Supports::FREE_FIXED,
-        &[load],
-        InitialConditions::default(),
-    )
-    .unwrap()
+    courant_solver::fixtures::seed_bar(n, courant_solver::Field::Constant(1.0), time).unwrap()
 }
 
 /// d'Alembert's solution of that bar.

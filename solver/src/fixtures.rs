@@ -1,0 +1,48 @@
+//! The seed paper's canonical bars, shared by tests, benchmarks and examples.
+//!
+//! ```text
+//!   sigma0 f(t) ==> o---o---o--- ... ---o //  fixed
+//!                   x = 0              x = L = 1
+//! ```
+
+use crate::bar::{Bar, Field};
+use crate::error::InputError;
+use crate::load::{End, Load, TimeFunction};
+use crate::mesh::Mesh;
+use crate::model::{InitialConditions, Model, Supports};
+
+/// The unit free-fixed bar of the seed's Figs. 1 and 2 (L = A = rho = 1, `elements` uniform
+/// elements, modulus `modulus`), loaded at its free left end by the traction
+/// `sigma0 f(t)`, `sigma0 = -1` (compressive), fixed at the right end, starting at rest.
+pub fn seed_bar(elements: usize, modulus: Field, time: TimeFunction) -> Result<Model, InputError> {
+    let bar = Bar::new(
+        Mesh::uniform(1.0, elements)?,
+        &modulus,
+        &Field::Constant(1.0),
+        &Field::Constant(1.0),
+    )?;
+    let load = Load::Traction {
+        end: End::Left,
+        stress: -1.0,
+        time,
+    };
+    Model::new(
+        bar,
+        Supports::FREE_FIXED,
+        &[load],
+        InitialConditions::default(),
+    )
+}
+
+/// The graded bar of the seed's Fig. 2: modulus linear from 16 at the loaded end to 1 at the
+/// fixed end, Heaviside load.
+pub fn graded_seed_bar(elements: usize) -> Result<Model, InputError> {
+    seed_bar(
+        elements,
+        Field::Linear {
+            left: 16.0,
+            right: 1.0,
+        },
+        TimeFunction::HEAVISIDE,
+    )
+}
