@@ -5,7 +5,12 @@ use crate::scene::{Scene, SceneError};
 use std::path::Path;
 
 /// (name, TOML text) of every built-in scene.
-pub const BUILTIN_SCENES: &[(&str, &str)] = &[("fig1", include_str!("../scenes/fig1.toml"))];
+pub const BUILTIN_SCENES: &[(&str, &str)] = &[
+    ("fig1", include_str!("../scenes/fig1.toml")),
+    ("fig1_masses", include_str!("../scenes/fig1_masses.toml")),
+    ("fig6", include_str!("../scenes/fig6.toml")),
+    ("dispersion", include_str!("../scenes/dispersion.toml")),
+];
 
 /// The text of a built-in scene.
 pub fn builtin_text(name: &str) -> Option<&'static str> {

@@ -1,7 +1,10 @@
 //! Checking a scene's expectations against its results.
 
+use crate::dispersion::DispersionResult;
 use crate::run::{CaseResult, Status};
+use crate::scene::Study;
 use crate::scene::{Bound, Expectation, Metric, Scene};
+use crate::spectra::SpectrumResult;
 use crate::table::Cell;
 
 /// What was measured for an expectation.
@@ -81,14 +84,51 @@ impl Verdict {
 }
 
 /// Evaluate every expectation of `scene` on the matching results.
-pub fn evaluate(scene: &Scene, results: &[CaseResult]) -> Vec<Verdict> {
+pub fn evaluate(
+    scene: &Scene,
+    results: &[CaseResult],
+    spectra: &[SpectrumResult],
+    dispersion: &[DispersionResult],
+) -> Vec<Verdict> {
     let mut verdicts = Vec::new();
     for expectation in &scene.expectations {
-        for result in results
-            .iter()
-            .filter(|r| expectation.cases.contains(&r.case))
-        {
-            let measured = measure(expectation, result);
+        let wanted = |case: &String| expectation.cases.contains(case);
+        let measured: Vec<(String, Measured)> = match expectation.metric.study() {
+            Study::Spectrum => spectra
+                .iter()
+                .filter(|r| wanted(&r.case))
+                .map(|r| {
+                    let value = r.closed_form_deviation();
+                    (
+                        r.case.clone(),
+                        value.map_or(
+                            Measured::Missing("no closed form for this case".into()),
+                            Measured::Value,
+                        ),
+                    )
+                })
+                .collect(),
+            Study::Dispersion => dispersion
+                .iter()
+                .filter(|r| wanted(&r.case.name))
+                .map(|r| {
+                    let value = match expectation.metric {
+                        Metric::PhaseErrorOrder => r.min_order().map_or(
+                            Measured::Missing("no mode pair n, 2n".into()),
+                            Measured::Value,
+                        ),
+                        _ => Measured::Value(r.deviation()),
+                    };
+                    (r.case.name.clone(), value)
+                })
+                .collect(),
+            Study::TimeStepping => results
+                .iter()
+                .filter(|r| wanted(&r.case))
+                .map(|r| (r.case.clone(), measure(expectation, r)))
+                .collect(),
+        };
+        for (case, measured) in measured {
             let pass = match (&measured, expectation.bound) {
                 (Measured::Value(x), Bound::Range { min, max }) => {
                     x.is_finite() && min.is_none_or(|lo| *x >= lo) && max.is_none_or(|hi| *x <= hi)
@@ -97,7 +137,7 @@ pub fn evaluate(scene: &Scene, results: &[CaseResult]) -> Vec<Verdict> {
                 _ => false,
             };
             verdicts.push(Verdict {
-                case: result.case.clone(),
+                case,
                 metric: expectation.metric,
                 at: expectation.at,
                 measured,
@@ -139,5 +179,8 @@ fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
         Metric::Overshoot => norm_of(|n| n.overshoot),
         Metric::EnergyBalance => Measured::Value(result.energy.relative_balance_error()),
         Metric::Diverged => Measured::Flag(matches!(result.status, Status::Diverged(_))),
+        Metric::ClosedFormDeviation | Metric::DispersionDeviation | Metric::PhaseErrorOrder => {
+            Measured::Missing("not a time-stepping metric".into())
+        }
     }
 }

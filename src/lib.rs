@@ -7,14 +7,16 @@
 //! writes named CSV tables ([`results`], [`table`], [`write`]).
 
 pub mod builtin;
+pub mod dispersion;
 pub mod expect;
 pub mod metrics;
 pub mod reference;
 pub mod results;
 pub mod run;
 pub mod scene;
+pub mod spectra;
 pub mod table;
 pub mod write;
 
-pub use run::{CaseResult, Status, run_case};
+pub use run::{CaseResult, SceneOutcome, Status, run_case, run_scene};
 pub use scene::{Case, Scene, SceneError};

@@ -2,10 +2,9 @@
 
 use clap::{Parser, Subcommand};
 use courant::builtin::{BUILTIN_SCENES, builtin_scene, resolve};
-use courant::expect::{Verdict, evaluate};
 use courant::results::scene_files;
 use courant::write::write_dir_atomically;
-use courant::{CaseResult, Scene, Status, run_case};
+use courant::{CaseResult, Scene, SceneOutcome, Status, run_scene};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -79,18 +78,17 @@ fn run(args: &[String], out: &std::path::Path) -> ExitCode {
     }
     let mut failed = false;
     for scene in &scenes {
-        let results = match run_scene(scene) {
+        let outcome = match run_scene(scene) {
             Ok(r) => r,
             Err(e) => {
                 eprintln!("error: {}: {e}", scene.name);
                 return ExitCode::from(2);
             }
         };
-        let verdicts = evaluate(scene, &results);
-        print_scene(scene, &results, &verdicts);
-        failed |= verdicts.iter().any(|v| !v.pass);
+        print_scene(scene, &outcome);
+        failed |= !outcome.passed();
         let dir = out.join(&scene.name);
-        if let Err(e) = write_dir_atomically(&dir, &scene_files(&results, &verdicts)) {
+        if let Err(e) = write_dir_atomically(&dir, &scene_files(&outcome)) {
             eprintln!("error: cannot write {}: {e}", dir.display());
             return ExitCode::from(2);
         }
@@ -103,13 +101,53 @@ fn run(args: &[String], out: &std::path::Path) -> ExitCode {
     }
 }
 
-fn run_scene(scene: &Scene) -> Result<Vec<CaseResult>, courant_solver::RunError> {
-    scene.cases.iter().map(run_case).collect()
-}
-
-fn print_scene(scene: &Scene, results: &[CaseResult], verdicts: &[Verdict]) {
+fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
     println!("{}: {}", scene.name, scene.description);
     println!("  source: {}", scene.source);
+    if !outcome.spectra.is_empty() {
+        println!(
+            "  {:<24} {:>7} {:>22} {:>10}",
+            "case", "modes", "closed-form deviation", "wall [s]"
+        );
+        for s in &outcome.spectra {
+            let deviation = s
+                .closed_form_deviation()
+                .map_or("-".to_string(), |d| format!("{d:.3e}"));
+            println!(
+                "  {:<24} {:>7} {:>22} {:>10.4}",
+                s.case,
+                s.modes.len(),
+                deviation,
+                s.wall_time.as_secs_f64()
+            );
+        }
+    }
+    if !outcome.dispersion.is_empty() {
+        println!(
+            "  {:<18} {:>10} {:>16} {:>12}",
+            "case", "modes", "max deviation", "min order"
+        );
+        for d in &outcome.dispersion {
+            let order = d.min_order().map_or("-".to_string(), |o| format!("{o:.3}"));
+            println!(
+                "  {:<18} {:>10} {:>16.3e} {:>12}",
+                d.case.name,
+                d.rows.len(),
+                d.deviation(),
+                order
+            );
+        }
+    }
+    print_cases(&outcome.results);
+    for v in &outcome.verdicts {
+        println!("  {}", v.describe());
+    }
+}
+
+fn print_cases(results: &[CaseResult]) {
+    if results.is_empty() {
+        return;
+    }
     println!(
         "  {:<10} {:>7} {:>8} {:>11} {:>8} {:>10} {:>10} {:>10} {:>9} {:>10} {:>10}  status",
         "case", "N", "Co", "dt", "steps", "L1", "L2", "Linf", "overshoot", "energy", "wall [s]"
@@ -135,8 +173,5 @@ fn print_scene(scene: &Scene, results: &[CaseResult], verdicts: &[Verdict]) {
             r.energy.relative_balance_error(),
             r.wall_time.as_secs_f64(),
         );
-    }
-    for v in verdicts {
-        println!("  {}", v.describe());
     }
 }

@@ -90,14 +90,19 @@ pub fn energy_table(result: &CaseResult) -> Table {
 }
 
 /// One row per case: cost (dt, steps, wall time) beside accuracy (worst norms over the profile
-/// times, energy balance) and how the run ended.
+/// times, energy balance) and how the run ended. `dt_crit` is the exact critical step the run
+/// was checked against; the element (Fried) and nodal Gershgorin estimates stand beside it.
 pub fn summary_table(results: &[CaseResult]) -> Table {
     let mut table = Table::new(&[
         "case",
         "N",
+        "mass",
         "Co",
         "Co_crit",
         "dt",
+        "dt_crit",
+        "dt_crit_element",
+        "dt_crit_gershgorin",
         "steps",
         "l1",
         "l2",
@@ -116,9 +121,13 @@ pub fn summary_table(results: &[CaseResult]) -> Table {
         table.push(vec![
             r.case.as_str().into(),
             r.elements.into(),
+            r.critical.mass.label().into(),
             r.courant.into(),
             (r.courant * r.critical.exact / r.dt).into(),
             r.dt.into(),
+            r.critical.exact.into(),
+            r.critical.element.into(),
+            r.critical.gershgorin.into(),
             r.steps.into(),
             norms.map(|n| n.l1).into(),
             norms.map(|n| n.l2).into(),
@@ -179,9 +188,32 @@ pub fn expectations_table(verdicts: &[Verdict]) -> Table {
     table
 }
 
+/// One row per spectrum case: `case, N, masses, closed_form_deviation, wall_time_s`.
+pub fn spectrum_summary_table(spectra: &[crate::spectra::SpectrumResult]) -> Table {
+    let mut table = Table::new(&[
+        "case",
+        "modes",
+        "masses",
+        "closed_form_deviation",
+        "wall_time_s",
+    ]);
+    for s in spectra {
+        let masses: Vec<String> = s.masses.iter().map(|m| m.label()).collect();
+        table.push(vec![
+            s.case.as_str().into(),
+            s.modes.len().into(),
+            masses.join(" ").into(),
+            s.closed_form_deviation().into(),
+            s.wall_time.as_secs_f64().into(),
+        ]);
+    }
+    table
+}
+
 /// All files of a scene's output directory, as (file name, CSV text).
-pub fn scene_files(results: &[CaseResult], verdicts: &[Verdict]) -> Vec<(String, String)> {
+pub fn scene_files(outcome: &crate::SceneOutcome) -> Vec<(String, String)> {
     let full = Precision::RoundTrip;
+    let (results, verdicts) = (&outcome.results, &outcome.verdicts);
     let mut files = Vec::new();
     for r in results {
         files.push((format!("{}.csv", r.case), profile_table(r).to_csv(full)));
@@ -196,8 +228,26 @@ pub fn scene_files(results: &[CaseResult], verdicts: &[Verdict]) -> Vec<(String,
             energy_table(r).to_csv(full),
         ));
     }
-    files.push(("summary.csv".into(), summary_table(results).to_csv(full)));
-    files.push(("norms.csv".into(), norms_table(results).to_csv(full)));
+    for s in &outcome.spectra {
+        files.push((
+            format!("{}.csv", s.case),
+            crate::spectra::spectrum_table(s).to_csv(full),
+        ));
+    }
+    if !outcome.spectra.is_empty() {
+        files.push((
+            "summary.csv".into(),
+            spectrum_summary_table(&outcome.spectra).to_csv(full),
+        ));
+    } else if !outcome.dispersion.is_empty() {
+        files.push((
+            "dispersion.csv".into(),
+            crate::dispersion::dispersion_table(&outcome.dispersion).to_csv(full),
+        ));
+    } else {
+        files.push(("summary.csv".into(), summary_table(results).to_csv(full)));
+        files.push(("norms.csv".into(), norms_table(results).to_csv(full)));
+    }
     files.push((
         "expectations.csv".into(),
         expectations_table(verdicts).to_csv(full),

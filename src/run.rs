@@ -176,3 +176,49 @@ fn compare(case: &Case, output: RunOutput, status: Status, wall_time: Duration) 
         wall_time,
     }
 }
+
+/// Everything a scene produced: time-stepping results, spectra, expectation verdicts.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneOutcome {
+    /// Time-stepping case results, in case order.
+    pub results: Vec<CaseResult>,
+    /// Spectrum case results, in case order.
+    pub spectra: Vec<crate::spectra::SpectrumResult>,
+    /// Dispersion case results, in case order.
+    pub dispersion: Vec<crate::dispersion::DispersionResult>,
+    /// Verdicts of the scene's expectations.
+    pub verdicts: Vec<crate::expect::Verdict>,
+}
+
+impl SceneOutcome {
+    /// True when every expectation holds.
+    pub fn passed(&self) -> bool {
+        self.verdicts.iter().all(|v| v.pass)
+    }
+}
+
+/// Run every case of a scene and check its expectations.
+pub fn run_scene(scene: &crate::Scene) -> Result<SceneOutcome, RunError> {
+    let results = scene
+        .cases
+        .iter()
+        .map(run_case)
+        .collect::<Result<Vec<_>, _>>()?;
+    let spectra = scene
+        .spectra
+        .iter()
+        .map(crate::spectra::run_spectrum)
+        .collect::<Result<Vec<_>, _>>()?;
+    let dispersion = scene
+        .dispersion
+        .iter()
+        .map(crate::dispersion::run_dispersion)
+        .collect::<Result<Vec<_>, _>>()?;
+    let verdicts = crate::expect::evaluate(scene, &results, &spectra, &dispersion);
+    Ok(SceneOutcome {
+        results,
+        spectra,
+        dispersion,
+        verdicts,
+    })
+}

@@ -31,3 +31,22 @@ fn fig1_profiles_are_locked_per_case() {
         insta::assert_snapshot!(format!("fig1_{}", case.name), csv);
     }
 }
+
+/// Source: the Fig. 1 bar with the reciprocal mass RMM(1/2) at its own critical Courant number
+/// sqrt(2/3) (`scenes/fig1_masses.toml`, case `rmm0.5-co1`; methods.md §5). Locks its profile.
+#[test]
+fn fig1_rmm_profile_is_locked() {
+    let scene = builtin_scene("fig1_masses")
+        .expect("built in")
+        .expect("valid");
+    let case = scene
+        .cases
+        .iter()
+        .find(|c| c.name == "rmm0.5-co1")
+        .expect("case rmm0.5-co1");
+    let result = run_case(case).unwrap();
+    insta::assert_snapshot!(
+        "fig1_rmm0.5_co1",
+        profile_table(&result).to_csv(Precision::SNAPSHOT)
+    );
+}

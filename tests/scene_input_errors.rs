@@ -79,7 +79,7 @@ fn the_minimal_scene_is_valid_and_uses_the_documented_defaults() {
     "elements = \"ten\"",
     9,
     "mesh.elements",
-    "invalid type"
+    "expected a whole number"
 )]
 #[case::negative_modulus(
     "modulus = 1.0",

@@ -9,8 +9,11 @@
 //! - [`dalembert`]: the homogeneous free-fixed bar under a Heaviside end traction.
 //! - [`error`]: the validation error shared by all references.
 
+pub mod contact;
 pub mod dalembert;
 pub mod error;
+pub mod graded;
+pub mod spectra;
 
 pub use dalembert::{DalembertBar, Energies};
 pub use error::ReferenceError;

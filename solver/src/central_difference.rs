@@ -14,7 +14,9 @@
 //! the trapezoidal work increment, exactly. So `E^n - W^n` is constant to round-off.
 
 use crate::error::{DivergenceError, InputError, UnstableStepError};
-use crate::kernel::LumpedCentralDifference;
+use crate::kernel::{LumpedCentralDifference, StepEnergy};
+use crate::mass::{MassKind, MassOperator};
+use crate::matrix_kernel::MatrixCentralDifference;
 use crate::model::Model;
 use crate::output::{
     EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput, StressProfile,
@@ -87,6 +89,8 @@ pub struct CentralDifference {
     pub start: Start,
     /// Stability guard.
     pub stability: StabilityPolicy,
+    /// Mass matrix (default lumped).
+    pub mass: MassKind,
 }
 
 /// Why a run did not complete.
@@ -115,14 +119,24 @@ impl CentralDifference {
             dt,
             start: Start::HalfStep,
             stability: StabilityPolicy::default(),
+            mass: MassKind::Lumped,
         }
     }
 
     /// Refuse `dt` above the exact critical step (with the relative allowance
     /// [`crate::time_step::ROUNDING_SLACK`] of the time plan, so that Co = 1 on a free-free
     /// uniform bar, where `dt = dt_crit`, is accepted after the plan's rounding).
-    pub fn check_stability(&self, model: &Model) -> Result<CriticalStep, UnstableStepError> {
-        let critical = CriticalStep::lumped(model);
+    pub fn check_stability(&self, model: &Model) -> Result<CriticalStep, RunError> {
+        let operator = MassOperator::new(model, self.mass)?;
+        Ok(self.check_stability_with(model, &operator)?)
+    }
+
+    fn check_stability_with(
+        &self,
+        model: &Model,
+        operator: &MassOperator,
+    ) -> Result<CriticalStep, UnstableStepError> {
+        let critical = CriticalStep::of(model, self.mass, operator);
         if self.dt > critical.exact * (1.0 + crate::time_step::ROUNDING_SLACK)
             && !self.stability.allow_unstable
         {
@@ -131,7 +145,7 @@ impl CentralDifference {
                 dt_crit: critical.exact,
                 courant: model.bar().courant_number(self.dt),
                 element: critical.controlling_element,
-                element_dt: critical.element,
+                element_dt: critical.element_transit,
             });
         }
         Ok(critical)
@@ -146,7 +160,8 @@ impl CentralDifference {
     ) -> Result<RunOutput, RunError> {
         crate::mesh::positive("dt", self.dt)?;
         validate_request(model, steps, request)?;
-        self.check_stability(model)?;
+        let operator = MassOperator::new(model, self.mass)?;
+        self.check_stability_with(model, &operator)?;
         let dt = self.dt;
         let nodes = model.bar().node_count();
 
@@ -167,12 +182,14 @@ impl CentralDifference {
             }
         };
 
-        // Start.
+        // Start: a^0 = M^-1 (F(0) - K u^0).
         let u0 = model.initial_displacement();
         let v0 = model.initial_velocity();
-        let a0: Vec<f64> = (0..nodes)
-            .map(|i| model.acceleration_at(u0, i, 0.0))
+        let mut r0: Vec<f64> = (0..nodes)
+            .map(|i| model.external_force_at(i, 0.0) + model.internal_force_at(u0, i))
             .collect();
+        let mut a0 = vec![0.0; nodes];
+        operator.apply_inverse(&mut r0, &mut a0);
         let start_factor = match self.start {
             Start::HalfStep => 0.5,
             Start::ThreeLevel => 1.0,
@@ -180,19 +197,32 @@ impl CentralDifference {
         let v_half: Vec<f64> = (0..nodes)
             .map(|i| v0[i] + start_factor * dt * a0[i])
             .collect();
-        let mass = model.nodal_mass();
         // v^{-1/2} = v^{1/2} - dt a^0: the recurrence run backwards one step (for the half-step
         // start v^0 is then the mean of the two half steps; for the three-level start
         // v^{-1/2} = v^0, i.e. u^{-1} = u^0 - dt v^0).
-        let kinetic_staggered0: f64 = 0.5
-            * (0..nodes)
-                .map(|i| mass[i] * (v_half[i] - dt * a0[i]) * v_half[i])
-                .sum::<f64>();
-        let kinetic0: f64 = 0.5 * (0..nodes).map(|i| mass[i] * v0[i] * v0[i]).sum::<f64>();
+        let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(a, b)| a * b).sum::<f64>();
+        let mut m_times = vec![0.0; nodes];
+        operator.apply(&v_half, &mut m_times);
+        let v_before: Vec<f64> = (0..nodes).map(|i| v_half[i] - dt * a0[i]).collect();
+        let kinetic_staggered0 = 0.5 * dot(&v_before, &m_times);
+        operator.apply(v0, &mut m_times);
+        let kinetic0 = 0.5 * dot(v0, &m_times);
         let strain0 = model.strain_energy(u0);
         let invariant0 = kinetic_staggered0 + strain0;
 
-        let mut kernel = LumpedCentralDifference::new(model, dt, u0, &v_half);
+        let mut kernel = match self.mass {
+            MassKind::Lumped => {
+                Kernel::Lumped(LumpedCentralDifference::new(model, dt, u0, &v_half))
+            }
+            _ => Kernel::Matrix(MatrixCentralDifference::new(
+                dt,
+                model.stiffness(),
+                operator,
+                u0,
+                &v_half,
+                &a0,
+            )),
+        };
         let mut output = RunOutput {
             dt,
             steps: 0,
@@ -311,6 +341,51 @@ impl CentralDifference {
     }
 }
 
+/// The step kernel of a run: the fused lumped one, or the one with a matrix mass.
+enum Kernel {
+    Lumped(LumpedCentralDifference),
+    Matrix(MatrixCentralDifference),
+}
+
+impl Kernel {
+    fn dt(&self) -> f64 {
+        match self {
+            Kernel::Lumped(k) => k.dt(),
+            Kernel::Matrix(k) => k.dt(),
+        }
+    }
+
+    fn displacement(&self) -> &[f64] {
+        match self {
+            Kernel::Lumped(k) => k.displacement(),
+            Kernel::Matrix(k) => k.displacement(),
+        }
+    }
+
+    fn half_step_velocity(&self) -> &[f64] {
+        match self {
+            Kernel::Lumped(k) => k.half_step_velocity(),
+            Kernel::Matrix(k) => k.half_step_velocity(),
+        }
+    }
+
+    fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
+        match self {
+            Kernel::Lumped(k) => k.step_with_energy(forces),
+            Kernel::Matrix(k) => k.step_with_energy(forces),
+        }
+    }
+
+    /// `a^n` at node `i` of the current state `u^n` (time `t`): local for the lumped mass, the
+    /// kept global solve otherwise.
+    fn acceleration_at(&self, model: &Model, i: usize, t: f64) -> f64 {
+        match self {
+            Kernel::Lumped(k) => model.acceleration_at(k.displacement(), i, t),
+            Kernel::Matrix(k) => k.acceleration()[i],
+        }
+    }
+}
+
 /// Detects an unstable run: kinetic + strain energy far above every energy that entered the bar.
 ///
 /// A stable central-difference run has `T + U = W + E^0 + dt^2/8 a M a` (full-step kinetic
@@ -386,7 +461,7 @@ fn validate_request(
 #[allow(clippy::too_many_arguments)]
 fn record<'a>(
     model: &Model,
-    kernel: &LumpedCentralDifference,
+    kernel: &Kernel,
     step: usize,
     time: f64,
     initial_velocity: &[f64],
@@ -407,7 +482,7 @@ fn record<'a>(
         let v_half = kernel.half_step_velocity();
         for history in &mut output.histories {
             let i = history.node;
-            let acceleration = model.acceleration_at(u, i, time);
+            let acceleration = kernel.acceleration_at(model, i, time);
             // v^n = v^{n+1/2} - dt/2 a^n; at n = 0 the state's own v^0.
             let velocity = if step == 0 {
                 initial_velocity[i]

@@ -10,15 +10,19 @@
 //! Conventions (time levels, load convention H(0) = 1, Courant number relative to the stiffest
 //! element) follow courant's `methods.md` §1-2.
 
+pub mod banded;
 pub mod bar;
 pub mod central_difference;
 pub mod error;
 pub mod fixtures;
 pub mod kernel;
 pub mod load;
+pub mod mass;
+pub mod matrix_kernel;
 pub mod mesh;
 pub mod model;
 pub mod output;
+pub mod spectrum;
 pub mod stability;
 pub mod time_step;
 
@@ -26,6 +30,7 @@ pub use bar::{Bar, Field};
 pub use central_difference::{CentralDifference, OutputRequest, RunError, StabilityPolicy, Start};
 pub use error::{DivergenceError, InputError, UnstableStepError};
 pub use load::{End, Load, NodalLoad, TimeFunction};
+pub use mass::{MassKind, MassOperator};
 pub use mesh::Mesh;
 pub use model::{InitialConditions, Model, Support, Supports};
 pub use output::{EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput, StressProfile};

@@ -1,54 +1,160 @@
-//! Critical time step of lumped-mass central difference, `dt_crit = 2/omega_max` (seed eq. 5),
-//! by three estimates:
+//! Critical time step of central difference, `dt_crit = 2/omega_max` (seed eq. 5), for every
+//! mass kind, by three estimates:
 //!
-//! - **element**: `min_e h_e/c_e`. For the two-node lumped element `omega_max^e = 2 c_e/h_e`, and
-//!   Fried's theorem (`omega_max <= max_e omega_max^e`, Fried 1972) makes it conservative.
-//! - **Gershgorin**: `omega_max^2 <= max_i sum_j |K_ij|/sqrt(m_i m_j)` over free nodes (row
-//!   sums of the symmetric `M^-1/2 K M^-1/2`); conservative.
-//! - **exact**: the largest eigenvalue of `M^-1/2 K M^-1/2` (symmetric tridiagonal, fixed nodes
-//!   deleted), found by Sturm-sequence bisection to full precision (Wilkinson, The Algebraic
-//!   Eigenvalue Problem (1965), §5.37). Unlike power iteration it does not slow down when the top
-//!   of the spectrum is clustered, as it is on uniform meshes.
+//! - **element** (Fried): `2/max_e omega_max^e`, `omega_max^e` of the element's own matrices:
+//!   `Co_e min_e h_e/c_e` with `Co_e` = 1 (LMM), `1/sqrt 3` (CMM), `sqrt((1 + 2 beta)/3)` (AMM,
+//!   RMM). Fried's theorem (`omega_max <= max_e omega_max^e`, Fried 1972) makes it conservative
+//!   for assembled masses (LMM, CMM, AMM); for RMM it is **not** a bound, since the inverse mass
+//!   is assembled: with `beta > 5/2` the assembled spectrum peaks inside the band and the
+//!   element estimate is too large. (Also reported: the closed-form infinite-mesh value.)
+//! - **Gershgorin** (nodal): LMM: row sums of `M^-1/2 K M^-1/2`; CMM/AMM: the pencil bound
+//!   `max_i sum_j |K_ij| / (M_ii - sum_{j != i} |M_ij|)` where `M` is diagonally dominant, else
+//!   `3/(1 + 2 beta)` times the lumped bound (since `M >= (1 + 2 beta)/3 LMM`); RMM: the row-sum
+//!   norm of `M^-1 K`. All conservative.
+//! - **exact**: the largest eigenvalue by bisection on the inertia of a shifted pencil (Sylvester;
+//!   Wilkinson, The Algebraic Eigenvalue Problem (1965), §5.37): the symmetric tridiagonal
+//!   `M^-1/2 K M^-1/2` for LMM, `K - x M` for CMM/AMM, the band-3 `M^-1 K M^-1 - x M^-1` for RMM
+//!   (congruent to `K - x M`). Unlike power iteration it does not slow down when the top of the
+//!   spectrum is clustered, as it is on uniform meshes. Runs use this one.
 
+use crate::mass::{MassKind, MassOperator};
 use crate::model::Model;
 
-/// The critical-step estimates of one model.
+/// The critical-step estimates of one model and mass kind.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CriticalStep {
-    /// Exact `2/omega_max`.
+    /// The mass kind.
+    pub mass: MassKind,
+    /// Exact `2/omega_max` (the one runs are checked against).
     pub exact: f64,
     /// Largest angular frequency `omega_max` of the free nodes.
     pub omega_max: f64,
-    /// Element estimate `min_e h_e/c_e`.
+    /// Element (Fried) estimate `2/max_e omega_max^e` = `element_courant(kind) min_e h_e/c_e`
+    /// (a bound except for RMM).
     pub element: f64,
-    /// The element that attains the element estimate.
+    /// Closed-form critical step of the infinite uniform mesh,
+    /// `critical_courant(kind) min_e h_e/c_e` (the uniform-mesh value, not a bound in general).
+    pub infinite_mesh: f64,
+    /// The element with the smallest transit time.
     pub controlling_element: usize,
-    /// Gershgorin estimate `2/sqrt(max_i sum_j |K_ij|/sqrt(m_i m_j))`.
+    /// Its transit time `min_e h_e/c_e`.
+    pub element_transit: f64,
+    /// Nodal Gershgorin estimate (conservative).
     pub gershgorin: f64,
 }
 
 impl CriticalStep {
-    /// Compute all three estimates for a lumped-mass model.
+    /// All estimates for a lumped-mass model.
     pub fn lumped(model: &Model) -> Self {
         let (diag, off) = scaled_stiffness(model);
         let gershgorin_bound = gershgorin_upper_bound(&diag, &off);
         let lambda_max = largest_eigenvalue(&diag, &off, gershgorin_bound);
-        let (controlling_element, element) = model.bar().stiffest_element();
+        Self::from_eigenvalues(model, MassKind::Lumped, lambda_max, gershgorin_bound)
+    }
+
+    /// All estimates for `model` with the mass `operator` of `kind`.
+    pub fn of(model: &Model, kind: MassKind, operator: &MassOperator) -> Self {
+        if kind == MassKind::Lumped {
+            return Self::lumped(model);
+        }
+        let gershgorin_bound = nodal_gershgorin(model, kind, operator);
+        let (p, q) = operator.pencil(model);
+        let n = p.order();
+        let mut hi = gershgorin_bound * (1.0 + 1e-12);
+        let mut lo = 0.0_f64;
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if p.negative_pivots_of_shifted(&q, mid) == n {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        Self::from_eigenvalues(model, kind, 0.5 * (lo + hi), gershgorin_bound)
+    }
+
+    fn from_eigenvalues(
+        model: &Model,
+        mass: MassKind,
+        lambda_max: f64,
+        gershgorin_bound: f64,
+    ) -> Self {
+        let (controlling_element, element_transit) = model.bar().stiffest_element();
         let omega_max = lambda_max.sqrt();
+        let step = |lambda: f64| {
+            if lambda > 0.0 {
+                2.0 / lambda.sqrt()
+            } else {
+                f64::INFINITY
+            }
+        };
         Self {
-            exact: if omega_max > 0.0 {
-                2.0 / omega_max
-            } else {
-                f64::INFINITY
-            },
+            mass,
+            exact: step(lambda_max),
             omega_max,
-            element,
+            element: mass.element_courant() * element_transit,
+            infinite_mesh: mass.critical_courant() * element_transit,
             controlling_element,
-            gershgorin: if gershgorin_bound > 0.0 {
-                2.0 / gershgorin_bound.sqrt()
-            } else {
-                f64::INFINITY
-            },
+            element_transit,
+            gershgorin: step(gershgorin_bound),
+        }
+    }
+}
+
+/// Nodal Gershgorin-type upper bound on `omega_max^2` (see the module doc).
+fn nodal_gershgorin(model: &Model, kind: MassKind, operator: &MassOperator) -> f64 {
+    let (diag, off) = scaled_stiffness(model);
+    let lumped = gershgorin_upper_bound(&diag, &off);
+    let (k, _) = operator.pencil(model);
+    let n = k.order();
+    let row_sum = |i: usize| -> f64 {
+        (i.saturating_sub(1)..=(i + 1).min(n - 1))
+            .map(|j| k.get(i, j).abs())
+            .sum()
+    };
+    match operator {
+        MassOperator::Diagonal { .. } => lumped,
+        MassOperator::Tridiagonal { matrix, fixed, .. } => {
+            let beta = match kind {
+                MassKind::Averaged { beta } => beta,
+                _ => 0.0,
+            };
+            let fallback = 3.0 / (1.0 + 2.0 * beta) * lumped;
+            let mut bound = 0.0_f64;
+            for i in (0..n).filter(|&i| !fixed[i]) {
+                let left = if i > 0 { matrix.off[i - 1].abs() } else { 0.0 };
+                let right = if i + 1 < n { matrix.off[i].abs() } else { 0.0 };
+                let margin = matrix.diag[i] - left - right;
+                if margin <= 0.0 {
+                    return fallback;
+                }
+                bound = bound.max(row_sum(i) / margin);
+            }
+            bound.min(fallback)
+        }
+        MassOperator::Reciprocal { inverse, .. } => {
+            // Row sums of |M^-1 K|, M^-1 K pentadiagonal.
+            let entry = |t: &crate::banded::Tridiagonal, i: usize, j: usize| match i.abs_diff(j) {
+                0 => t.diag[i],
+                1 => t.off[i.min(j)],
+                _ => 0.0,
+            };
+            (0..n)
+                .map(|i| {
+                    (i.saturating_sub(2)..=(i + 2).min(n - 1))
+                        .map(|j| {
+                            (i.saturating_sub(1)..=(i + 1).min(n - 1))
+                                .filter(|a| a.abs_diff(j) <= 1)
+                                .map(|a| entry(inverse, i, a) * k.get(a, j))
+                                .sum::<f64>()
+                                .abs()
+                        })
+                        .sum::<f64>()
+                })
+                .fold(0.0, f64::max)
         }
     }
 }
@@ -154,6 +260,7 @@ mod tests {
                 cs.omega_max
             );
             assert!(cs.exact >= cs.element && cs.gershgorin <= cs.exact);
+            assert_eq!(cs.element, cs.element_transit);
         }
     }
 

@@ -66,6 +66,14 @@ impl Source<'_> {
                 "expected a number or `{ linear = [left, right] }`",
             )
             .replace(
+                "data did not match any variant of untagged enum OneOrManyInts",
+                "expected a whole number or a list of whole numbers",
+            )
+            .replace(
+                "data did not match any variant of untagged enum OneOrManyStrings",
+                "expected a string or a list of strings",
+            )
+            .replace(
                 "data did not match any variant of untagged enum OneOrMany",
                 "expected a positive number or a list of positive numbers",
             );

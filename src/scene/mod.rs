@@ -4,13 +4,16 @@
 //! [`schema`]. A list of Courant numbers (or time steps) expands into one case each. Validation
 //! happens here, before anything runs: a scene that parses is a scene that can run.
 
+pub mod dispersion;
 pub mod error;
 pub mod schema;
+pub mod spectrum;
 
 use crate::reference::Reference;
 use courant_solver::{
-    Bar, CentralDifference, CriticalStep, End, Field, InitialConditions, InputError, Load, Mesh,
-    Model, OutputRequest, StabilityPolicy, Start, Support, Supports, TimeFunction, TimePlan,
+    Bar, CentralDifference, CriticalStep, End, Field, InitialConditions, InputError, Load,
+    MassKind, Mesh, Model, OutputRequest, StabilityPolicy, Start, Support, Supports, TimeFunction,
+    TimePlan,
 };
 pub use error::{SceneError, Source};
 use schema::*;
@@ -24,6 +27,55 @@ pub const MAX_SAMPLES: usize = 10_000;
 /// Largest `steps x elements` a scene case may ask for (about 4 minutes at 2.5 ns per node-step).
 pub const MAX_NODE_STEPS: f64 = 1e11;
 
+/// Parse a mass label: `lmm`/`lumped`, `cmm`/`consistent`, `amm`/`averaged`, `rmm`/`reciprocal`
+/// (beta = 1/2), or `amm(beta)`, `rmm(beta)`.
+pub fn parse_mass(label: &str) -> Result<MassKind, String> {
+    let label = label.trim();
+    let (name, beta) = match label.split_once('(') {
+        Some((name, rest)) => {
+            let inner = rest
+                .strip_suffix(')')
+                .ok_or_else(|| format!("\"{label}\": a beta is written amm(0.5)"))?;
+            let beta: f64 = inner
+                .trim()
+                .parse()
+                .map_err(|_| format!("\"{label}\": beta \"{inner}\" is not a number"))?;
+            (name.trim(), Some(beta))
+        }
+        None => (label, None),
+    };
+    let kind = match (name, beta) {
+        ("lmm" | "lumped", None) => MassKind::Lumped,
+        ("cmm" | "consistent", None) => MassKind::Consistent,
+        ("amm" | "averaged", b) => MassKind::Averaged {
+            beta: b.unwrap_or(0.5),
+        },
+        ("rmm" | "reciprocal", b) => MassKind::Reciprocal {
+            beta: b.unwrap_or(0.5),
+        },
+        ("lmm" | "lumped" | "cmm" | "consistent", Some(_)) => {
+            return Err(format!("\"{label}\": only amm and rmm take a beta"));
+        }
+        _ => {
+            return Err(format!(
+                "\"{label}\" is not a mass kind (lmm, cmm, amm, rmm, amm(beta), rmm(beta))"
+            ));
+        }
+    };
+    kind.validate().map_err(|e| format!("\"{label}\": {e}"))?;
+    Ok(kind)
+}
+
+/// File-name friendly mass name: `lmm`, `cmm`, `amm0.5`, `rmm0.5`.
+pub fn mass_name(kind: MassKind) -> String {
+    match kind {
+        MassKind::Lumped => "lmm".into(),
+        MassKind::Consistent => "cmm".into(),
+        MassKind::Averaged { beta } => format!("amm{beta}"),
+        MassKind::Reciprocal { beta } => format!("rmm{beta}"),
+    }
+}
+
 /// A validated scene.
 #[derive(Debug, Clone)]
 pub struct Scene {
@@ -33,8 +85,12 @@ pub struct Scene {
     pub description: String,
     /// Source of truth.
     pub source: String,
-    /// The cases, in file order.
+    /// The time-stepping cases, in file order.
     pub cases: Vec<Case>,
+    /// The spectrum cases (spectrum scenes only).
+    pub spectra: Vec<spectrum::SpectrumCase>,
+    /// The dispersion cases (dispersion scenes only).
+    pub dispersion: Vec<dispersion::DispersionCase>,
     /// Expectations every run is checked against.
     pub expectations: Vec<Expectation>,
 }
@@ -75,6 +131,35 @@ pub enum Metric {
     EnergyBalance,
     /// Whether the run diverged.
     Diverged,
+    /// Spectrum scenes: largest relative deviation of the computed elastic frequencies from the
+    /// closed-form discrete spectra (methods.md §5), over every mode and mass kind.
+    ClosedFormDeviation,
+    /// Dispersion scenes: largest `|measured - closed form|` of the phase-speed ratio.
+    DispersionDeviation,
+    /// Dispersion scenes: smallest observed order of the phase error between modes `n` and `2n`.
+    PhaseErrorOrder,
+}
+
+/// The kind of study a scene is; each metric belongs to one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Study {
+    /// Time-stepping cases.
+    TimeStepping,
+    /// Spectra.
+    Spectrum,
+    /// Single-mode dispersion runs.
+    Dispersion,
+}
+
+impl Study {
+    /// Name in messages.
+    pub fn name(self) -> &'static str {
+        match self {
+            Study::TimeStepping => "time-stepping",
+            Study::Spectrum => "spectrum",
+            Study::Dispersion => "dispersion",
+        }
+    }
 }
 
 impl Metric {
@@ -87,6 +172,9 @@ impl Metric {
             Metric::Overshoot => "overshoot",
             Metric::EnergyBalance => "energy_balance",
             Metric::Diverged => "diverged",
+            Metric::ClosedFormDeviation => "closed_form_deviation",
+            Metric::DispersionDeviation => "dispersion_deviation",
+            Metric::PhaseErrorOrder => "phase_error_order",
         }
     }
 
@@ -98,9 +186,21 @@ impl Metric {
             Metric::Overshoot,
             Metric::EnergyBalance,
             Metric::Diverged,
+            Metric::ClosedFormDeviation,
+            Metric::DispersionDeviation,
+            Metric::PhaseErrorOrder,
         ]
         .into_iter()
         .find(|m| m.name() == s)
+    }
+
+    /// The study the metric belongs to.
+    pub fn study(self) -> Study {
+        match self {
+            Metric::ClosedFormDeviation => Study::Spectrum,
+            Metric::DispersionDeviation | Metric::PhaseErrorOrder => Study::Dispersion,
+            _ => Study::TimeStepping,
+        }
     }
 
     /// True for metrics measured on profiles (they need a reference).
@@ -166,78 +266,299 @@ impl Scene {
 }
 
 fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
-    let err = |span: Range<usize>, key: &str, msg: String| src.error(Some(span), key, msg);
-    let positive = |v: &Spanned<f64>, key: &str| -> Result<f64, SceneError> {
-        let x = *v.get_ref();
-        if x.is_finite() && x > 0.0 {
-            Ok(x)
-        } else {
-            Err(err(
-                v.span(),
-                key,
-                format!("{x} must be positive and finite"),
-            ))
-        }
-    };
     for (value, key) in [
         (&raw.scene.description, "scene.description"),
         (&raw.scene.source, "scene.source"),
     ] {
         if value.get_ref().trim().is_empty() {
-            return Err(err(value.span(), key, "must not be empty".into()));
+            return Err(src.error(Some(value.span()), key, "must not be empty"));
         }
     }
+    let geometry = Geometry::read(src, &raw)?;
+    if raw.spectrum.is_some() || raw.dispersion.is_some() {
+        let (kind, study) = if raw.spectrum.is_some() {
+            ("spectrum", Study::Spectrum)
+        } else {
+            ("dispersion", Study::Dispersion)
+        };
+        if raw.integrator.is_some() || (raw.spectrum.is_some() && raw.dispersion.is_some()) {
+            return Err(src.error(
+                None,
+                kind,
+                "a spectrum or dispersion scene has no [integrator] and is one study only",
+            ));
+        }
+        let (spectra, dispersion) = match (&raw.spectrum, &raw.dispersion) {
+            (Some(s), _) => (spectrum::build(src, &raw, s, &geometry)?, Vec::new()),
+            (None, Some(d)) => (Vec::new(), dispersion::build(src, d, &geometry)?),
+            (None, None) => (Vec::new(), Vec::new()),
+        };
+        let names: Vec<String> = spectra
+            .iter()
+            .map(|c| c.name.clone())
+            .chain(dispersion.iter().map(|c| c.name.clone()))
+            .collect();
+        let expectations = raw
+            .expectations
+            .iter()
+            .map(|e| expectation(src, e, &names, false, study, &[], 1.0))
+            .collect::<Result<Vec<_>, _>>()?;
+        return Ok(Scene {
+            name: name.to_string(),
+            description: raw.scene.description.get_ref().clone(),
+            source: raw.scene.source.get_ref().clone(),
+            cases: Vec::new(),
+            spectra,
+            dispersion,
+            expectations,
+        });
+    }
+    let Some(integrator) = &raw.integrator else {
+        return Err(src.error(
+            None,
+            "integrator",
+            "is required: give [integrator] with `courant` or `dt`",
+        ));
+    };
+    let stepping = Stepping::read(src, integrator)?;
+    let transit = geometry.transit_time();
+    let outputs = Outputs::read(src, &raw.output, transit)?;
 
-    // Geometry and material.
-    let length = raw
-        .bar
-        .length
-        .as_ref()
-        .map(|v| positive(v, "bar.length"))
-        .transpose()?
-        .unwrap_or(1.0);
-    let area = raw
-        .bar
-        .area
-        .as_ref()
-        .map(|v| positive(v, "bar.area"))
-        .transpose()?
-        .unwrap_or(1.0);
-    let elements = *raw.mesh.elements.get_ref();
-    if elements < 1 {
-        return Err(err(
-            raw.mesh.elements.span(),
-            "mesh.elements",
-            format!("{elements} must be at least 1"),
+    let mut cases = Vec::new();
+    for &elements in &geometry.element_counts {
+        let model = model_of(src, &raw, &geometry, elements)?;
+        let reference = match &raw.reference.kind {
+            None => None,
+            Some(kind) => Reference::for_model(*kind.get_ref(), &model)
+                .map_err(|m| src.error(Some(kind.span()), "reference.kind", m))?,
+        };
+        let history_nodes = outputs.history_nodes(src, &model)?;
+        let (stiffest, element_dt) = model.bar().stiffest_element();
+        for &mass in &stepping.masses {
+            for &value in &stepping.values {
+                let mut case_name = String::new();
+                if geometry.element_counts.len() > 1 {
+                    case_name += &format!("n{elements}-");
+                }
+                if stepping.masses.len() > 1 {
+                    case_name += &format!("{}-", mass_name(mass));
+                }
+                let nominal_dt = if stepping.by_courant {
+                    case_name += &format!("co{value}");
+                    let unit = match integrator.courant_unit {
+                        RawCourantUnit::StiffestElement => 1.0,
+                        RawCourantUnit::Critical => mass.critical_courant(),
+                    };
+                    value * unit * element_dt
+                } else {
+                    case_name += &format!("dt{value}");
+                    value
+                };
+                let fail = |msg: String| {
+                    src.error(
+                        Some(stepping.span.clone()),
+                        stepping.key,
+                        format!("case {case_name}: {msg}"),
+                    )
+                };
+                let plan =
+                    courant_solver::plan(nominal_dt, &outputs.profile_times, outputs.end_time)
+                        .map_err(|e| fail(e.to_string()))?;
+                let integrator = CentralDifference {
+                    dt: plan.dt,
+                    start: stepping.start,
+                    stability: stepping.stability,
+                    mass,
+                };
+                let critical = integrator.check_stability(&model).map_err(|e| {
+                    let exact = courant_solver::MassOperator::new(&model, mass)
+                        .map(|op| CriticalStep::of(&model, mass, &op).exact / element_dt)
+                        .unwrap_or(f64::NAN);
+                    fail(format!(
+                        "{e} ({} critical Courant number {exact:.6}, element {stiffest})",
+                        mass.label()
+                    ))
+                })?;
+                let node_steps = plan.steps as f64 * model.bar().element_count() as f64;
+                if node_steps > MAX_NODE_STEPS {
+                    return Err(fail(format!(
+                        "{} steps x {} elements = {node_steps:.2e} node-steps, more than the {MAX_NODE_STEPS:.0e} a scene \
+                         may ask for; coarsen the mesh, raise the step or shorten the run",
+                        plan.steps,
+                        model.bar().element_count()
+                    )));
+                }
+                let thinned = plan.steps.div_ceil(MAX_SAMPLES).max(1);
+                let request = OutputRequest {
+                    profile_steps: plan.output_steps.clone(),
+                    history_nodes: history_nodes.clone(),
+                    history_every: outputs.history_every.unwrap_or(thinned),
+                    energy_every: outputs.energy_every.unwrap_or(thinned),
+                };
+                cases.push(Case {
+                    name: case_name,
+                    model: model.clone(),
+                    integrator,
+                    plan,
+                    request,
+                    critical,
+                    reference: reference.clone(),
+                    transit_time: transit,
+                });
+            }
+        }
+    }
+    let mut seen = std::collections::HashSet::new();
+    if let Some(dup) = cases.iter().find(|c| !seen.insert(c.name.clone())) {
+        return Err(src.error(
+            Some(stepping.span.clone()),
+            stepping.key,
+            format!("case {} appears twice", dup.name),
         ));
     }
-    let grading = raw
-        .mesh
-        .grading
-        .as_ref()
-        .map(|v| positive(v, "mesh.grading"))
-        .transpose()?
-        .unwrap_or(1.0);
-    let mesh = Mesh::geometric(length, elements as usize, grading).map_err(|e| {
+    let has_reference = cases.iter().any(|c| c.reference.is_some());
+    let names: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
+    let expectations = raw
+        .expectations
+        .iter()
+        .map(|e| {
+            expectation(
+                src,
+                e,
+                &names,
+                has_reference,
+                Study::TimeStepping,
+                &outputs.profile_times,
+                outputs.unit,
+            )
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Scene {
+        name: name.to_string(),
+        description: raw.scene.description.into_inner(),
+        source: raw.scene.source.into_inner(),
+        cases,
+        spectra: Vec::new(),
+        dispersion: Vec::new(),
+        expectations,
+    })
+}
+
+fn positive(src: &Source, v: &Spanned<f64>, key: &str) -> Result<f64, SceneError> {
+    let x = *v.get_ref();
+    if x.is_finite() && x > 0.0 {
+        Ok(x)
+    } else {
+        Err(src.error(
+            Some(v.span()),
+            key,
+            format!("{x} must be positive and finite"),
+        ))
+    }
+}
+
+/// Bar geometry and material as the scene states them.
+struct Geometry<'r> {
+    length: f64,
+    area: f64,
+    element_counts: Vec<usize>,
+    grading: f64,
+    modulus: Field,
+    density: Field,
+    raw: &'r RawScene,
+}
+
+impl<'r> Geometry<'r> {
+    fn read(src: &Source, raw: &'r RawScene) -> Result<Self, SceneError> {
+        let optional = |v: &Option<Spanned<f64>>, key: &str| {
+            v.as_ref().map(|v| positive(src, v, key)).transpose()
+        };
+        let counts = raw.mesh.elements.get_ref().values();
+        let span = raw.mesh.elements.span();
+        if counts.is_empty() {
+            return Err(src.error(
+                Some(span),
+                "mesh.elements",
+                "the list is empty; give at least one element count",
+            ));
+        }
+        if let Some(bad) = counts.iter().find(|&&n| n < 1) {
+            return Err(src.error(
+                Some(span),
+                "mesh.elements",
+                format!("{bad} must be at least 1"),
+            ));
+        }
+        Ok(Self {
+            length: optional(&raw.bar.length, "bar.length")?.unwrap_or(1.0),
+            area: optional(&raw.bar.area, "bar.area")?.unwrap_or(1.0),
+            element_counts: counts.iter().map(|&n| n as usize).collect(),
+            grading: optional(&raw.mesh.grading, "mesh.grading")?.unwrap_or(1.0),
+            modulus: field(&raw.material.modulus),
+            density: raw
+                .material
+                .density
+                .as_ref()
+                .map(field)
+                .unwrap_or(Field::Constant(1.0)),
+            raw,
+        })
+    }
+
+    /// Transit time of the continuum bar, `T = int_0^L dx / c(x)`: `L/c` for constant
+    /// properties, composite Simpson (20000 intervals, ~1e-15 relative for linear fields)
+    /// otherwise. Independent of the mesh, so times in transit units mean the same for every N.
+    fn transit_time(&self) -> f64 {
+        let at = |f: &Field, s: f64| match f {
+            Field::Constant(c) => *c,
+            Field::Linear { left, right } => left + (right - left) * s,
+            Field::PerElement(_) => f64::NAN,
+        };
+        let slowness = |s: f64| (at(&self.density, s) / at(&self.modulus, s)).sqrt();
+        if self.modulus.is_constant() && self.density.is_constant() {
+            return self.length * slowness(0.0);
+        }
+        let n = 20_000;
+        let h = 1.0 / n as f64;
+        let sum: f64 = (0..=n)
+            .map(|i| {
+                let w = if i == 0 || i == n {
+                    1.0
+                } else if i % 2 == 1 {
+                    4.0
+                } else {
+                    2.0
+                };
+                w * slowness(i as f64 * h)
+            })
+            .sum();
+        self.length * sum * h / 3.0
+    }
+}
+
+fn model_of(
+    src: &Source,
+    raw: &RawScene,
+    g: &Geometry,
+    elements: usize,
+) -> Result<Model, SceneError> {
+    let mesh = Mesh::geometric(g.length, elements, g.grading).map_err(|e| {
         match (&e, &raw.mesh.grading) {
             (
                 InputError::Parameter {
                     field: "grading ratio",
                     ..
                 },
-                Some(g),
-            ) => err(g.span(), "mesh.grading", e.to_string()),
-            _ => err(raw.mesh.elements.span(), "mesh.elements", e.to_string()),
+                Some(s),
+            ) => src.error(Some(s.span()), "mesh.grading", e.to_string()),
+            _ => src.error(
+                Some(raw.mesh.elements.span()),
+                "mesh.elements",
+                e.to_string(),
+            ),
         }
     })?;
-    let modulus = field(&raw.material.modulus);
-    let density = raw
-        .material
-        .density
-        .as_ref()
-        .map(field)
-        .unwrap_or(Field::Constant(1.0));
-    let bar = Bar::new(mesh, &modulus, &density, &Field::Constant(area)).map_err(|e| {
+    let bar = Bar::new(mesh, &g.modulus, &g.density, &Field::Constant(g.area)).map_err(|e| {
         let (key, span) = match &e {
             InputError::ElementProperty {
                 field: "density", ..
@@ -252,15 +573,15 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
         };
         src.error(span, key, e.to_string())
     })?;
-
     let supports = Supports {
         left: support(raw.supports.left),
         right: support(raw.supports.right),
     };
-    let mut loads = Vec::with_capacity(raw.loads.len());
-    for load in &raw.loads {
-        loads.push(load_of(src, load, bar.node_count() - 1)?);
-    }
+    let loads = raw
+        .loads
+        .iter()
+        .map(|l| load_of(src, l, bar.node_count() - 1))
+        .collect::<Result<Vec<_>, _>>()?;
     let nodal = |f: &Option<Spanned<RawField>>| -> Option<Vec<f64>> {
         f.as_ref().map(|f| {
             let field = field(f);
@@ -268,11 +589,11 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             mesh.nodes()
                 .iter()
                 .map(|&x| match &field {
-                    Field::Constant(c) => *c,
                     Field::Linear { left, right } => {
                         left + (right - left) * (x - mesh.start()) / mesh.length()
                     }
-                    Field::PerElement(_) => unreachable!("scene fields are constant or linear"),
+                    Field::Constant(c) => *c,
+                    Field::PerElement(_) => f64::NAN,
                 })
                 .collect()
         })
@@ -281,7 +602,8 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
         displacement: nodal(&raw.initial.displacement),
         velocity: nodal(&raw.initial.velocity),
     };
-    let model = Model::new(bar, supports, &loads, initial).map_err(|e| {
+    debug_assert!(std::ptr::eq(raw, g.raw));
+    Model::new(bar, supports, &loads, initial).map_err(|e| {
         let (key, span) = match &e {
             InputError::NodeValue {
                 field: "initial displacement",
@@ -297,229 +619,209 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                 "initial.velocity",
                 raw.initial.velocity.as_ref().map(|d| d.span()),
             ),
-            _ if raw.loads.is_empty() => ("load", None),
             _ => ("load", raw.loads.first().map(|l| l.span())),
         };
         src.error(span, key, e.to_string())
-    })?;
-    let transit_time = model.bar().transit_time();
+    })
+}
 
-    // Time stepping.
-    let (steps_key, spanned, by_courant) = match (&raw.integrator.courant, &raw.integrator.dt) {
-        (Some(c), None) => ("integrator.courant", c, true),
-        (None, Some(d)) => ("integrator.dt", d, false),
-        (Some(c), Some(_)) => {
-            return Err(err(
-                c.span(),
-                "integrator",
-                "give either `courant` or `dt`, not both".into(),
-            ));
-        }
-        (None, None) => {
-            return Err(src.error(
-                None,
-                "integrator",
-                "needs `courant` (Courant numbers) or `dt` (time steps)".to_string(),
-            ));
-        }
-    };
-    let values = spanned.get_ref().values();
-    if values.is_empty() {
-        return Err(err(
-            spanned.span(),
-            steps_key,
-            "the list is empty; give at least one value".into(),
-        ));
-    }
-    if let Some(bad) = values.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
-        return Err(err(
-            spanned.span(),
-            steps_key,
-            format!("{bad} must be positive and finite"),
-        ));
-    }
-    let blowup_energy_ratio = match &raw.integrator.blowup_energy_ratio {
-        Some(v) => positive(v, "integrator.blowup_energy_ratio")?,
-        None => StabilityPolicy::default().blowup_energy_ratio,
-    };
-    let stability = StabilityPolicy {
-        allow_unstable: raw.integrator.allow_unstable,
-        blowup_energy_ratio,
-    };
-    let start = match raw.integrator.start {
-        RawStart::HalfStep => Start::HalfStep,
-        RawStart::ThreeLevel => Start::ThreeLevel,
-    };
+/// The integrator settings of a time-stepping scene.
+struct Stepping {
+    key: &'static str,
+    span: Range<usize>,
+    values: Vec<f64>,
+    by_courant: bool,
+    masses: Vec<MassKind>,
+    start: Start,
+    stability: StabilityPolicy,
+}
 
-    // Outputs.
-    let unit = match raw.output.time_unit {
-        RawTimeUnit::Absolute => 1.0,
-        RawTimeUnit::Transit => transit_time,
-    };
-    let profile_times: Vec<f64> = raw
-        .output
-        .profile_times
-        .as_ref()
-        .map(|p| p.get_ref().iter().map(|t| t * unit).collect())
-        .unwrap_or_default();
-    let profile_span = raw.output.profile_times.as_ref().map(|p| p.span());
-    if let Some(bad) = profile_times
-        .iter()
-        .find(|t| !(t.is_finite() && **t >= 0.0))
-    {
-        return Err(src.error(
-            profile_span,
-            "output.profile_times",
-            format!("{} must be finite and not negative", bad / unit),
-        ));
-    }
-    let end_time = match &raw.output.end_time {
-        Some(e) => positive(e, "output.end_time")? * unit,
-        None => match profile_times.iter().copied().reduce(f64::max) {
-            Some(t) if t > 0.0 => t,
-            _ => {
+impl Stepping {
+    fn read(src: &Source, raw: &RawIntegrator) -> Result<Self, SceneError> {
+        let (key, spanned, by_courant) = match (&raw.courant, &raw.dt) {
+            (Some(c), None) => ("integrator.courant", c, true),
+            (None, Some(d)) => ("integrator.dt", d, false),
+            (Some(c), Some(_)) => {
                 return Err(src.error(
-                    profile_span,
-                    "output.end_time",
-                    "is needed when no positive profile time is given",
+                    Some(c.span()),
+                    "integrator",
+                    "give either `courant` or `dt`, not both",
                 ));
             }
-        },
-    };
-    if let Some(&late) = profile_times
-        .iter()
-        .find(|&&t| t > end_time * (1.0 + 1e-12))
-    {
-        return Err(src.error(
-            profile_span,
-            "output.profile_times",
-            format!(
-                "{} is after the end time {}; profile times must lie in [0, end_time]",
-                late / unit,
-                end_time / unit
-            ),
-        ));
-    }
-    let mut history_nodes = Vec::new();
-    if let Some(points) = &raw.output.history_points {
-        let mesh = model.bar().mesh();
-        for &x in points.get_ref() {
-            let inside = x.is_finite()
-                && x >= mesh.start() - 1e-12 * length
-                && x <= mesh.start() + length * (1.0 + 1e-12);
-            if !inside {
-                return Err(err(
-                    points.span(),
-                    "output.history_points",
-                    format!("{x} is outside the bar [0, {length}]"),
+            (None, None) => {
+                return Err(src.error(
+                    None,
+                    "integrator",
+                    "needs `courant` (Courant numbers) or `dt` (time steps)",
                 ));
             }
-            history_nodes.push(mesh.nearest_node(x));
-        }
-    }
-    // `None` here means "the default": every step up to MAX_SAMPLES steps, then thinned so
-    // that a long run keeps about MAX_SAMPLES samples (decided per case, from its step count).
-    let every = |v: &Option<Spanned<i64>>, key: &str| -> Result<Option<usize>, SceneError> {
-        match v {
-            None => Ok(None),
-            Some(s) if *s.get_ref() >= 1 => Ok(Some(*s.get_ref() as usize)),
-            Some(s) => Err(err(
-                s.span(),
-                key,
-                format!("{} must be at least 1", s.get_ref()),
-            )),
-        }
-    };
-    let history_every = every(&raw.output.history_every, "output.history_every")?;
-    let energy_every = every(&raw.output.energy_every, "output.energy_every")?;
-
-    // Reference.
-    let reference = match &raw.reference.kind {
-        None => None,
-        Some(kind) => Reference::for_model(*kind.get_ref(), &model)
-            .map_err(|m| err(kind.span(), "reference.kind", m))?,
-    };
-
-    // Cases.
-    let critical = CriticalStep::lumped(&model);
-    let (stiffest, element_dt) = model.bar().stiffest_element();
-    let mut cases = Vec::with_capacity(values.len());
-    for &value in &values {
-        let (case_name, nominal_dt) = if by_courant {
-            (format!("co{value}"), value * element_dt)
-        } else {
-            (format!("dt{value}"), value)
         };
-        let plan = courant_solver::plan(nominal_dt, &profile_times, end_time)
-            .map_err(|e| err(spanned.span(), steps_key, format!("case {case_name}: {e}")))?;
-        let integrator = CentralDifference {
-            dt: plan.dt,
+        let span = spanned.span();
+        let values = spanned.get_ref().values();
+        if values.is_empty() {
+            return Err(src.error(
+                Some(span),
+                key,
+                "the list is empty; give at least one value",
+            ));
+        }
+        if let Some(bad) = values.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
+            return Err(src.error(
+                Some(span),
+                key,
+                format!("{bad} must be positive and finite"),
+            ));
+        }
+        let masses = match &raw.mass {
+            None => vec![MassKind::Lumped],
+            Some(m) => {
+                let labels = m.get_ref().values();
+                if labels.is_empty() {
+                    return Err(src.error(
+                        Some(m.span()),
+                        "integrator.mass",
+                        "the list is empty; give at least one mass",
+                    ));
+                }
+                labels
+                    .iter()
+                    .map(|l| {
+                        parse_mass(l)
+                            .map_err(|msg| src.error(Some(m.span()), "integrator.mass", msg))
+                    })
+                    .collect::<Result<_, _>>()?
+            }
+        };
+        let blowup_energy_ratio = match &raw.blowup_energy_ratio {
+            Some(v) => positive(src, v, "integrator.blowup_energy_ratio")?,
+            None => StabilityPolicy::default().blowup_energy_ratio,
+        };
+        let start = match raw.start {
+            RawStart::HalfStep => Start::HalfStep,
+            RawStart::ThreeLevel => Start::ThreeLevel,
+        };
+        let stability = StabilityPolicy {
+            allow_unstable: raw.allow_unstable,
+            blowup_energy_ratio,
+        };
+        Ok(Self {
+            key,
+            span,
+            values,
+            by_courant,
+            masses,
             start,
             stability,
+        })
+    }
+}
+
+/// The output settings, with times converted to absolute time.
+struct Outputs<'r> {
+    unit: f64,
+    profile_times: Vec<f64>,
+    end_time: f64,
+    raw: &'r RawOutput,
+    history_every: Option<usize>,
+    energy_every: Option<usize>,
+}
+
+impl<'r> Outputs<'r> {
+    fn read(src: &Source, raw: &'r RawOutput, transit: f64) -> Result<Self, SceneError> {
+        let unit = match raw.time_unit {
+            RawTimeUnit::Absolute => 1.0,
+            RawTimeUnit::Transit => transit,
         };
-        integrator.check_stability(&model).map_err(|e| {
-            err(
-                spanned.span(),
-                steps_key,
+        let profile_span = raw.profile_times.as_ref().map(|p| p.span());
+        let given: Vec<f64> = raw
+            .profile_times
+            .as_ref()
+            .map(|p| p.get_ref().clone())
+            .unwrap_or_default();
+        if let Some(bad) = given.iter().find(|t| !(t.is_finite() && **t >= 0.0)) {
+            return Err(src.error(
+                profile_span,
+                "output.profile_times",
+                format!("{bad} must be finite and not negative"),
+            ));
+        }
+        let profile_times: Vec<f64> = given.iter().map(|t| t * unit).collect();
+        let end_time = match &raw.end_time {
+            Some(e) => positive(src, e, "output.end_time")? * unit,
+            None => match profile_times.iter().copied().reduce(f64::max) {
+                Some(t) if t > 0.0 => t,
+                _ => {
+                    return Err(src.error(
+                        profile_span,
+                        "output.end_time",
+                        "is needed when no positive profile time is given",
+                    ));
+                }
+            },
+        };
+        if let Some(&late) = profile_times
+            .iter()
+            .find(|&&t| t > end_time * (1.0 + 1e-12))
+        {
+            return Err(src.error(
+                profile_span,
+                "output.profile_times",
                 format!(
-                    "case {case_name}: {e} (critical Courant number {:.6}, element {stiffest})",
-                    critical.exact / element_dt
-                ),
-            )
-        })?;
-        let node_steps = plan.steps as f64 * model.bar().element_count() as f64;
-        if node_steps > MAX_NODE_STEPS {
-            return Err(err(
-                spanned.span(),
-                steps_key,
-                format!(
-                    "case {case_name}: {} steps x {} elements = {node_steps:.2e} node-steps, more than the {MAX_NODE_STEPS:.0e} \
-                     a scene may ask for; coarsen the mesh, raise the step or shorten the run",
-                    plan.steps,
-                    model.bar().element_count()
+                    "{} is after the end time {}; profile times must lie in [0, end_time]",
+                    late / unit,
+                    end_time / unit
                 ),
             ));
         }
-        let thinned = plan.steps.div_ceil(MAX_SAMPLES).max(1);
-        let request = OutputRequest {
-            profile_steps: plan.output_steps.clone(),
-            history_nodes: history_nodes.clone(),
-            history_every: history_every.unwrap_or(thinned),
-            energy_every: energy_every.unwrap_or(thinned),
+        // `None` means the default: every step up to MAX_SAMPLES steps, then thinned so that a
+        // long run keeps about MAX_SAMPLES samples (decided per case, from its step count).
+        let every = |v: &Option<Spanned<i64>>, key: &str| -> Result<Option<usize>, SceneError> {
+            match v {
+                None => Ok(None),
+                Some(s) if *s.get_ref() >= 1 => Ok(Some(*s.get_ref() as usize)),
+                Some(s) => Err(src.error(
+                    Some(s.span()),
+                    key,
+                    format!("{} must be at least 1", s.get_ref()),
+                )),
+            }
         };
-        cases.push(Case {
-            name: case_name,
-            model: model.clone(),
-            integrator,
-            plan,
-            request,
-            critical,
-            reference: reference.clone(),
-            transit_time,
-        });
-    }
-    let mut seen = std::collections::HashSet::new();
-    if let Some(dup) = cases.iter().find(|c| !seen.insert(c.name.clone())) {
-        return Err(err(
-            spanned.span(),
-            steps_key,
-            format!("case {} appears twice", dup.name),
-        ));
+        Ok(Self {
+            unit,
+            profile_times,
+            end_time,
+            raw,
+            history_every: every(&raw.history_every, "output.history_every")?,
+            energy_every: every(&raw.energy_every, "output.energy_every")?,
+        })
     }
 
-    let expectations = raw
-        .expectations
-        .iter()
-        .map(|e| expectation(src, e, &cases, reference.is_some(), &profile_times, unit))
-        .collect::<Result<Vec<_>, _>>()?;
-
-    Ok(Scene {
-        name: name.to_string(),
-        description: raw.scene.description.into_inner(),
-        source: raw.scene.source.into_inner(),
-        cases,
-        expectations,
-    })
+    /// History points snapped to the nearest nodes of `model`.
+    fn history_nodes(&self, src: &Source, model: &Model) -> Result<Vec<usize>, SceneError> {
+        let Some(points) = &self.raw.history_points else {
+            return Ok(Vec::new());
+        };
+        let mesh = model.bar().mesh();
+        let (start, length) = (mesh.start(), mesh.length());
+        points
+            .get_ref()
+            .iter()
+            .map(|&x| {
+                if x.is_finite()
+                    && x >= start - 1e-12 * length
+                    && x <= start + length * (1.0 + 1e-12)
+                {
+                    Ok(mesh.nearest_node(x))
+                } else {
+                    Err(src.error(
+                        Some(points.span()),
+                        "output.history_points",
+                        format!("{x} is outside the bar [0, {length}]"),
+                    ))
+                }
+            })
+            .collect()
+    }
 }
 
 fn field(f: &Spanned<RawField>) -> Field {
@@ -614,8 +916,9 @@ fn load_of(src: &Source, spanned: &Spanned<RawLoad>, last_node: usize) -> Result
 fn expectation(
     src: &Source,
     spanned: &Spanned<RawExpect>,
-    cases: &[Case],
+    names: &[String],
     has_reference: bool,
+    study: Study,
     profile_times: &[f64],
     unit: f64,
 ) -> Result<Expectation, SceneError> {
@@ -623,7 +926,7 @@ fn expectation(
     let fail = |msg: String| src.error(Some(spanned.span()), "expect", msg);
     let metric = Metric::parse(&raw.metric).ok_or_else(|| {
         fail(format!(
-            "metric = \"{}\" is not one of l1, l2, linf, overshoot, energy_balance, diverged",
+            "metric = \"{}\" is not one of l1, l2, linf, overshoot, energy_balance, diverged, closed_form_deviation, dispersion_deviation, phase_error_order",
             raw.metric
         ))
     })?;
@@ -633,9 +936,15 @@ fn expectation(
             metric.name()
         )));
     }
-    let names: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
+    if metric.study() != study {
+        return Err(fail(format!(
+            "metric \"{}\" does not apply to a {} scene",
+            metric.name(),
+            study.name()
+        )));
+    }
     let selected = match &raw.cases {
-        None => names.clone(),
+        None => names.to_vec(),
         Some(list) => {
             if let Some(unknown) = list.iter().find(|c| !names.contains(c)) {
                 return Err(fail(format!(

@@ -24,7 +24,12 @@ pub struct RawScene {
     /// Default: at rest, undeformed.
     #[serde(default)]
     pub initial: RawInitial,
-    pub integrator: RawIntegrator,
+    /// Required for time-stepping scenes; absent in spectrum scenes.
+    pub integrator: Option<RawIntegrator>,
+    /// Makes the scene a spectrum study (no time stepping).
+    pub spectrum: Option<RawSpectrum>,
+    /// Makes the scene a dispersion study (single-mode runs).
+    pub dispersion: Option<RawDispersion>,
     #[serde(default)]
     pub output: RawOutput,
     /// Default: `kind = "none"`.
@@ -78,7 +83,8 @@ pub struct RawMaterial {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawMesh {
-    pub elements: Spanned<i64>,
+    /// Element count(s); a list makes one case per count.
+    pub elements: Spanned<OneOrManyInts>,
     /// Ratio of consecutive element lengths, `h_{e+1}/h_e`. Default 1 (uniform).
     pub grading: Option<Spanned<f64>>,
 }
@@ -161,6 +167,23 @@ pub struct RawInitial {
     pub velocity: Option<Spanned<RawField>>,
 }
 
+/// One integer or a list of integers (each a case).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub enum OneOrManyInts {
+    One(i64),
+    Many(Vec<i64>),
+}
+
+impl OneOrManyInts {
+    pub fn values(&self) -> Vec<i64> {
+        match self {
+            OneOrManyInts::One(x) => vec![*x],
+            OneOrManyInts::Many(v) => v.clone(),
+        }
+    }
+}
+
 /// One number or a list of numbers (each a case).
 #[derive(Debug, Clone, Deserialize)]
 #[serde(untagged)]
@@ -185,11 +208,32 @@ pub enum RawScheme {
     CentralDifference,
 }
 
+/// One string or a list of strings (each a case).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub enum OneOrManyStrings {
+    One(String),
+    Many(Vec<String>),
+}
+
+impl OneOrManyStrings {
+    pub fn values(&self) -> Vec<String> {
+        match self {
+            OneOrManyStrings::One(x) => vec![x.clone()],
+            OneOrManyStrings::Many(v) => v.clone(),
+        }
+    }
+}
+
 #[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
 #[serde(rename_all = "kebab-case")]
-pub enum RawMass {
+pub enum RawCourantUnit {
+    /// Courant numbers relative to the stiffest element, `c dt / h` (methods.md §1).
     #[default]
-    Lumped,
+    StiffestElement,
+    /// Multiples of the mass kind's closed-form critical Courant number (1 for LMM,
+    /// 1/sqrt(3) for CMM, sqrt((1 + 2 beta)/3) for AMM and RMM).
+    Critical,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
@@ -206,9 +250,12 @@ pub struct RawIntegrator {
     /// Default `central-difference`.
     #[serde(default)]
     pub scheme: RawScheme,
-    /// Default `lumped`.
+    /// Mass matrix or matrices (one case each): `lmm`, `cmm`, `amm`, `rmm` (beta = 1/2), or
+    /// `amm(beta)`, `rmm(beta)`. Default `lmm`.
+    pub mass: Option<Spanned<OneOrManyStrings>>,
+    /// What the `courant` values are relative to. Default `stiffest-element`.
     #[serde(default)]
-    pub mass: RawMass,
+    pub courant_unit: RawCourantUnit,
     /// Courant number(s) relative to the stiffest element; one case each. Exactly one of
     /// `courant` and `dt`.
     pub courant: Option<Spanned<OneOrMany>>,
@@ -286,4 +333,27 @@ pub struct RawExpect {
     pub equals: Option<bool>,
     /// The source of truth the bound comes from.
     pub source: String,
+}
+
+/// A spectrum study: the frequencies of `K u = omega^2 M u` for each mass kind.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSpectrum {
+    /// End conditions, one case each: `free-free`, `fixed-free` (one end fixed), `fixed-fixed`.
+    pub ends: Spanned<OneOrManyStrings>,
+    /// Mass kinds, one column each (as `integrator.mass`).
+    pub masses: Spanned<OneOrManyStrings>,
+}
+
+/// A dispersion study: phase speeds of single-mode runs against the closed form.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawDispersion {
+    /// Mass kinds (as `integrator.mass`); `amm(4th)` and `rmm(4th)` take the fourth-order beta
+    /// of each Courant number.
+    pub masses: Spanned<OneOrManyStrings>,
+    /// Courant numbers `c dt/h`.
+    pub courant: Spanned<OneOrMany>,
+    /// Mode numbers `n` of the free-free bar (`kh = n pi/N`).
+    pub modes: Spanned<OneOrManyInts>,
 }
