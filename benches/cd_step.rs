@@ -97,5 +97,93 @@ fn lumped_cd_step(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, lumped_cd_step);
+/// One run step (with energies, as runs take it) per mass kind on the graded bar, N = 1e5, at half
+/// of each kind's critical Courant number. Targets (issue 3): RMM within 2x of LMM, CMM and AMM
+/// within 3x.
+fn mass_kind_step(c: &mut Criterion) {
+    use courant_solver::matrix_kernel::MatrixCentralDifference;
+    use courant_solver::{MassKind, MassOperator};
+    let n = 100_000;
+    let forces = [(0usize, 1.0f64)];
+    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+    let mut group = c.benchmark_group("mass_kind_step");
+    group
+        .warm_up_time(Duration::from_secs(1))
+        .sample_size(30)
+        .measurement_time(Duration::from_secs(3));
+    group.throughput(Throughput::Elements(n as u64));
+    let mut lumped = graded_kernel(n);
+    group.bench_function(BenchmarkId::new("lmm", n), |b| {
+        b.iter(|| lumped.step_with_energy(black_box(&forces)))
+    });
+    assert_finite(&lumped);
+    for kind in [
+        MassKind::Consistent,
+        MassKind::Averaged { beta: 0.5 },
+        MassKind::Reciprocal { beta: 0.5 },
+    ] {
+        let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
+        let operator = MassOperator::new(&model, kind).unwrap();
+        let v_half: Vec<f64> = (0..=n)
+            .map(|i| {
+                if i == n {
+                    0.0
+                } else {
+                    1e-3 * (FRAC_PI_2 * i as f64 / n as f64).cos()
+                }
+            })
+            .collect();
+        let zeros = vec![0.0; n + 1];
+        let start = courant_solver::matrix_kernel::StartState {
+            displacement: &zeros,
+            half_step_velocity: &v_half,
+            acceleration: &zeros,
+            residual: &zeros,
+            kinetic_staggered: 0.0,
+        };
+        let mut kernel = MatrixCentralDifference::new(dt, model.stiffness(), operator, &start);
+        let name = kind.label().replace(['(', ')'], "");
+        group.bench_function(BenchmarkId::new(name, n), |b| {
+            b.iter(|| kernel.step_with_energy(black_box(&forces)))
+        });
+        assert!(
+            kernel.displacement().iter().all(|x| x.is_finite()),
+            "{kind:?} blew up"
+        );
+    }
+    group.finish();
+}
+
+/// Dense spectra of a 200-element fixed-free bar per mass kind (target: well under a second).
+fn spectrum_dense(c: &mut Criterion) {
+    use courant_solver::{Bar, MassKind, Mesh, Model, Support, Supports};
+    let bar = Bar::homogeneous(Mesh::uniform(1.0, 200).unwrap(), 1.0, 1.0, 1.0).unwrap();
+    let model = Model::unloaded(
+        bar,
+        Supports {
+            left: Support::Fixed,
+            right: Support::Free,
+        },
+    );
+    let mut group = c.benchmark_group("spectrum_dense");
+    group
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(3));
+    for kind in [
+        MassKind::Lumped,
+        MassKind::Consistent,
+        MassKind::Averaged { beta: 0.5 },
+        MassKind::Reciprocal { beta: 0.5 },
+    ] {
+        let name = kind.label().replace(['(', ')'], "");
+        group.bench_function(BenchmarkId::new(name, 200), |b| {
+            b.iter(|| {
+                courant_solver::spectrum::angular_frequencies(black_box(&model), kind).unwrap()
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, lumped_cd_step, mass_kind_step, spectrum_dense);
 criterion_main!(benches);

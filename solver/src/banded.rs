@@ -17,16 +17,16 @@ impl Tridiagonal {
     /// `y = A x`.
     pub fn apply(&self, x: &[f64], y: &mut [f64]) {
         let n = self.diag.len();
-        for i in 0..n {
-            let mut s = self.diag[i] * x[i];
-            if i > 0 {
-                s += self.off[i - 1] * x[i - 1];
-            }
-            if i + 1 < n {
-                s += self.off[i] * x[i + 1];
-            }
-            y[i] = s;
+        let (d, o) = (&self.diag, &self.off);
+        if n == 1 {
+            y[0] = d[0] * x[0];
+            return;
         }
+        y[0] = d[0] * x[0] + o[0] * x[1];
+        for i in 1..n - 1 {
+            y[i] = o[i - 1] * x[i - 1] + d[i] * x[i] + o[i] * x[i + 1];
+        }
+        y[n - 1] = o[n - 2] * x[n - 2] + d[n - 1] * x[n - 1];
     }
 
     /// Decouple row and column `i`: zero its off-diagonals and set the diagonal to 1 (the
@@ -41,53 +41,97 @@ impl Tridiagonal {
         }
     }
 
-    /// `A = L D L^T` with unit lower-bidiagonal `L` (Thomas algorithm). `None` when a pivot is
-    /// not positive (the matrix is not positive definite).
+    /// Twisted factorisation of an SPD tridiagonal matrix, `None` when a pivot is not positive
+    /// (the matrix is not positive definite). See [`TridiagonalLdl`].
     pub fn factor_spd(&self) -> Option<TridiagonalLdl> {
-        let n = self.diag.len();
-        let mut d = vec![0.0; n];
-        let mut l = vec![0.0; n.saturating_sub(1)];
-        for i in 0..n {
-            d[i] = self.diag[i]
-                - if i > 0 {
-                    l[i - 1] * l[i - 1] * d[i - 1]
-                } else {
-                    0.0
-                };
-            if d[i].is_nan() || d[i] <= 0.0 {
-                return None;
-            }
-            if i + 1 < n {
-                l[i] = self.off[i] / d[i];
-            }
+        let (a, b) = (&self.diag, &self.off);
+        let n = a.len();
+        let m = n / 2;
+        let mut lower = vec![0.0; n];
+        let mut upper = vec![0.0; n];
+        let mut pivot = vec![0.0; n];
+        // Top rows 0..m: L D L^T from the top; lower[i] couples row i to row i + 1.
+        for i in 0..m {
+            pivot[i] = a[i] - if i > 0 { lower[i - 1] * b[i - 1] } else { 0.0 };
+            lower[i] = b[i] / pivot[i];
         }
-        let inverse_pivot = d.iter().map(|x| 1.0 / x).collect();
+        // Bottom rows m+1..n: U D U^T from the bottom; upper[i] couples row i to row i - 1.
+        for i in (m + 1..n).rev() {
+            pivot[i] = a[i] - if i + 1 < n { upper[i + 1] * b[i] } else { 0.0 };
+            upper[i] = b[i - 1] / pivot[i];
+        }
+        // The twist row m meets both.
+        pivot[m] = a[m]
+            - if m > 0 { lower[m - 1] * b[m - 1] } else { 0.0 }
+            - if m + 1 < n { upper[m + 1] * b[m] } else { 0.0 };
+        if pivot.iter().any(|p| p.is_nan() || *p <= 0.0) {
+            return None;
+        }
+        let inverse_pivot = pivot.iter().map(|p| 1.0 / p).collect();
         Some(TridiagonalLdl {
+            twist: m,
             inverse_pivot,
-            lower: l,
+            lower,
+            upper,
         })
     }
 }
 
-/// `L D L^T` factor of an SPD tridiagonal matrix, ready for O(n) solves.
+/// Twisted ("burn at both ends") factor of an SPD tridiagonal matrix: `L D L^T` from the top
+/// down to the middle row and `U D U^T` from the bottom up to it (Meurant, SIAM J. Matrix Anal.
+/// Appl. 13 (1992); Parlett and Dhillon 1997). A solve runs two independent recurrences at
+/// once, which roughly halves the latency-bound time of the Thomas algorithm; the arithmetic is
+/// still O(n) and exact up to round-off.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TridiagonalLdl {
+    twist: usize,
     inverse_pivot: Vec<f64>,
     lower: Vec<f64>,
+    upper: Vec<f64>,
 }
 
 impl TridiagonalLdl {
-    /// Solve `A x = b` in place (`b` becomes `x`): forward, diagonal, backward sweeps.
-    pub fn solve_in_place(&self, b: &mut [f64]) {
-        let n = b.len();
-        for i in 1..n {
-            b[i] -= self.lower[i - 1] * b[i - 1];
+    /// Solve `A x = b` in place (`b` becomes `x`).
+    pub fn solve_in_place(&self, x: &mut [f64]) {
+        let n = x.len();
+        let m = self.twist;
+        let (l, u, p) = (&self.lower, &self.upper, &self.inverse_pivot);
+        // Eliminate towards the twist: rows 1..m from the top, rows n-2..=m+1 from the bottom,
+        // two independent recurrences interleaved.
+        let (top, bottom) = (m.saturating_sub(1), n.saturating_sub(m + 2));
+        let both = top.min(bottom);
+        for j in 0..both {
+            let (i, k) = (1 + j, n - 2 - j);
+            x[i] -= l[i - 1] * x[i - 1];
+            x[k] -= u[k + 1] * x[k + 1];
         }
-        for (bi, p) in b.iter_mut().zip(&self.inverse_pivot) {
-            *bi *= p;
+        for i in 1 + both..1 + top {
+            x[i] -= l[i - 1] * x[i - 1];
         }
-        for i in (0..n.saturating_sub(1)).rev() {
-            b[i] -= self.lower[i] * b[i + 1];
+        for k in (m + 1..n - 1 - both).rev() {
+            x[k] -= u[k + 1] * x[k + 1];
+        }
+        let mut twist = x[m];
+        if m > 0 {
+            twist -= l[m - 1] * x[m - 1];
+        }
+        if m + 1 < n {
+            twist -= u[m + 1] * x[m + 1];
+        }
+        x[m] = twist * p[m];
+        // Substitute outwards from the twist, again two recurrences at once.
+        let (up, down) = (m, n - m - 1);
+        let both = up.min(down);
+        for j in 0..both {
+            let (i, k) = (m - 1 - j, m + 1 + j);
+            x[i] = x[i] * p[i] - l[i] * x[i + 1];
+            x[k] = x[k] * p[k] - u[k] * x[k - 1];
+        }
+        for i in (0..m - both).rev() {
+            x[i] = x[i] * p[i] - l[i] * x[i + 1];
+        }
+        for k in m + 1 + both..n {
+            x[k] = x[k] * p[k] - u[k] * x[k - 1];
         }
     }
 }
@@ -200,6 +244,36 @@ mod tests {
         for i in 0..4 {
             assert!((b[i] - x[i]).abs() < 1e-14);
         }
+    }
+
+    #[test]
+    fn twisted_solve_inverts_every_size() {
+        for n in 1usize..=25 {
+            let a = Tridiagonal {
+                diag: (0..n).map(|i| 3.0 + (i as f64 * 0.7).sin()).collect(),
+                off: (0..n.saturating_sub(1))
+                    .map(|i| 0.9 * (i as f64 * 1.3).cos())
+                    .collect(),
+            };
+            let f = a.factor_spd().unwrap();
+            let x: Vec<f64> = (0..n).map(|i| (i as f64 * 0.37).cos() - 0.2).collect();
+            let mut b = vec![0.0; n];
+            a.apply(&x, &mut b);
+            f.solve_in_place(&mut b);
+            for i in 0..n {
+                assert!(
+                    (b[i] - x[i]).abs() < 1e-13,
+                    "n = {n}, row {i}: {} vs {}",
+                    b[i],
+                    x[i]
+                );
+            }
+        }
+        let indefinite = Tridiagonal {
+            diag: vec![1.0, 1.0],
+            off: vec![2.0],
+        };
+        assert!(indefinite.factor_spd().is_none());
     }
 
     #[test]

@@ -126,10 +126,12 @@ pub enum MassOperator {
     Tridiagonal {
         /// `M` with fixed nodes decoupled.
         matrix: Tridiagonal,
-        /// Its `L D L^T` factor.
+        /// Its (twisted) `L D L^T` factor.
         factor: TridiagonalLdl,
         /// Fixed-node flags.
         fixed: Vec<bool>,
+        /// Indices of the fixed nodes.
+        fixed_nodes: Vec<usize>,
     },
     /// `M^-1 = A^-1 C A^-1` tridiagonal (RMM): multiply with it; `M v = A C^-1 A v` by a solve.
     Reciprocal {
@@ -203,10 +205,12 @@ impl MassOperator {
                     .filter(|(_, f)| **f)
                     .for_each(|(i, _)| matrix.decouple(i));
                 let factor = matrix.factor_spd().ok_or_else(not_spd)?;
+                let fixed_nodes = (0..n).filter(|&i| fixed[i]).collect();
                 MassOperator::Tridiagonal {
                     matrix,
                     factor,
                     fixed,
+                    fixed_nodes,
                 }
             }
             MassKind::Reciprocal { beta } => {
@@ -241,22 +245,22 @@ impl MassOperator {
         })
     }
 
-    /// `a = M^-1 r` (0 at fixed nodes). `r` is consumed as scratch for the solve.
-    pub fn apply_inverse(&self, r: &mut [f64], a: &mut [f64]) {
+    /// `a = M^-1 r` (0 at fixed nodes).
+    pub fn apply_inverse(&self, r: &[f64], a: &mut [f64]) {
         match self {
             MassOperator::Diagonal { inverse, .. } => {
-                for i in 0..r.len() {
-                    a[i] = inverse[i] * r[i];
+                for ((ai, ri), inv) in a.iter_mut().zip(r).zip(inverse) {
+                    *ai = inv * ri;
                 }
             }
-            MassOperator::Tridiagonal { factor, fixed, .. } => {
-                for (ri, &f) in r.iter_mut().zip(fixed) {
-                    if f {
-                        *ri = 0.0;
-                    }
-                }
-                factor.solve_in_place(r);
+            MassOperator::Tridiagonal {
+                factor,
+                fixed_nodes,
+                ..
+            } => {
                 a.copy_from_slice(r);
+                fixed_nodes.iter().for_each(|&i| a[i] = 0.0);
+                factor.solve_in_place(a);
             }
             MassOperator::Reciprocal { inverse, .. } => inverse.apply(r, a),
         }
@@ -407,7 +411,7 @@ mod tests {
             let mut mv = vec![0.0; 13];
             op.apply(&v, &mut mv);
             let mut back = vec![0.0; 13];
-            op.apply_inverse(&mut mv.clone(), &mut back);
+            op.apply_inverse(&mv, &mut back);
             for i in 0..13 {
                 assert!(
                     (back[i] - v[i]).abs() < 1e-13,
@@ -468,9 +472,9 @@ mod tests {
         let free_free = Model::unloaded(m.bar().clone(), crate::Supports::default());
         for beta in [0.0, 0.5, 1.0, 2.0] {
             let op = MassOperator::new(&free_free, MassKind::Reciprocal { beta }).unwrap();
-            let mut force: Vec<f64> = free_free.nodal_mass().iter().map(|mi| 9.81 * mi).collect();
+            let force: Vec<f64> = free_free.nodal_mass().iter().map(|mi| 9.81 * mi).collect();
             let mut a = vec![0.0; 12];
-            op.apply_inverse(&mut force, &mut a);
+            op.apply_inverse(&force, &mut a);
             assert!(
                 a.iter().all(|ai| (ai - 9.81).abs() < 1e-12),
                 "beta {beta}: {a:?}"

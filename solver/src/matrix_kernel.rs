@@ -1,56 +1,86 @@
 //! The central-difference step with a non-diagonal mass (CMM, AMM: a pre-factored tridiagonal
-//! solve; RMM: a tridiagonal product with the assembled `M^-1`), O(N) per step, no dense matrix.
+//! solve; RMM: a tridiagonal product with the assembled `M^-1`, no solve), O(N) per step, no
+//! dense matrix.
 //!
 //! ```text
 //!   u^{n+1}   = u^n + dt v^{n+1/2}
-//!   r^{n+1}   = F^{n+1} - K u^{n+1}              (element by element)
+//!   r^{n+1}   = F^{n+1} - K u^{n+1}              (element forces, branch-free)
 //!   a^{n+1}   = M^-1 r^{n+1}                      (solve, or product with M^-1)
 //!   v^{n+3/2} = v^{n+1/2} + dt a^{n+1}
 //! ```
 //!
-//! Energies use `M` itself: `1/2 v^{n+1/2} . M v^{n+3/2}` from the kept product `M v^{n+1/2}`,
-//! so the balance checks the mass operator as well as the update.
+//! Energies per step without applying `M` (since `M a = r` on the free nodes):
+//!
+//! ```text
+//!   T*^{n+1} = T*^n + 1/2 dt v^{n+1/2} . (r^n + r^{n+1})     (T* = 1/2 v^{n+1/2} M v^{n+3/2})
+//!   T^{n+1}  = T*^{n+1} + dt^2/8 a^{n+1} . r^{n+1}           (full-step kinetic energy)
+//! ```
+//!
+//! and, at sampled steps, `T*` from `M` itself ([`MatrixCentralDifference::staggered_kinetic_from_mass`]),
+//! which checks the mass operator against the update.
 
 use crate::kernel::StepEnergy;
 use crate::mass::MassOperator;
+
+/// The state a run starts from, after the start procedure.
+#[derive(Debug, Clone, Copy)]
+pub struct StartState<'a> {
+    /// `u^0`.
+    pub displacement: &'a [f64],
+    /// `v^{1/2}`.
+    pub half_step_velocity: &'a [f64],
+    /// `a^0 = M^-1 r^0`.
+    pub acceleration: &'a [f64],
+    /// `r^0 = F^0 - K u^0`.
+    pub residual: &'a [f64],
+    /// `1/2 v^{-1/2} M v^{1/2}`.
+    pub kinetic_staggered: f64,
+}
 
 /// Central difference with a tridiagonal mass or inverse mass.
 #[derive(Debug, Clone)]
 pub struct MatrixCentralDifference {
     dt: f64,
+    /// Element stiffnesses padded with a zero at both ends (length N + 2).
     stiffness: Vec<f64>,
     mass: MassOperator,
     u: Vec<f64>,
     v: Vec<f64>,
     a: Vec<f64>,
     r: Vec<f64>,
-    mv_old: Vec<f64>,
-    mv_new: Vec<f64>,
+    r_previous: Vec<f64>,
+    /// Element forces padded with a zero at both ends (length N + 2).
+    element_force: Vec<f64>,
+    scratch: Vec<f64>,
+    staggered: f64,
 }
 
 impl MatrixCentralDifference {
-    /// Set up with element stiffnesses, the mass operator, `u^0`, `v^{1/2}` and `a^0`.
-    pub fn new(
-        dt: f64,
-        stiffness: &[f64],
-        mass: MassOperator,
-        u0: &[f64],
-        v_half: &[f64],
-        a0: &[f64],
-    ) -> Self {
+    /// Set up with element stiffnesses, the mass operator, `u^0`, `v^{1/2}`, `a^0`, the residual
+    /// `r^0 = F^0 - K u^0` and the staggered kinetic energy `1/2 v^{-1/2} M v^{1/2}`.
+    pub fn new(dt: f64, stiffness: &[f64], mass: MassOperator, start: &StartState) -> Self {
+        let StartState {
+            displacement: u0,
+            half_step_velocity: v_half,
+            acceleration: a0,
+            residual: r0,
+            kinetic_staggered: staggered0,
+        } = *start;
         let n = u0.len();
-        let mut mv_old = vec![0.0; n];
-        mass.apply(v_half, &mut mv_old);
+        let mut padded = vec![0.0; n + 1];
+        padded[1..n].copy_from_slice(stiffness);
         Self {
             dt,
-            stiffness: stiffness.to_vec(),
+            stiffness: padded,
             mass,
             u: u0.to_vec(),
             v: v_half.to_vec(),
             a: a0.to_vec(),
             r: vec![0.0; n],
-            mv_old,
-            mv_new: vec![0.0; n],
+            r_previous: r0.to_vec(),
+            element_force: vec![0.0; n + 1],
+            scratch: vec![0.0; n],
+            staggered: staggered0,
         }
     }
 
@@ -80,35 +110,49 @@ impl MatrixCentralDifference {
         for (u, v) in self.u.iter_mut().zip(&self.v) {
             *u += dt * v;
         }
+        // Element forces N_e = k_e (u_{e+1} - u_e) at padded index e + 1 (ghosts stay 0).
         let n = self.u.len();
         let mut strain = 0.0;
-        self.r.iter_mut().for_each(|r| *r = 0.0);
-        for (e, &k) in self.stiffness.iter().enumerate() {
+        for e in 0..n - 1 {
             let du = self.u[e + 1] - self.u[e];
-            let force = k * du;
-            self.r[e] += force;
-            self.r[e + 1] -= force;
+            let force = self.stiffness[e + 1] * du;
+            self.element_force[e + 1] = force;
             strain += force * du;
+        }
+        // r_i = N_i - N_{i-1} + F_i.
+        for i in 0..n {
+            self.r[i] = self.element_force[i + 1] - self.element_force[i];
         }
         for &(node, f) in forces {
             self.r[node] += f;
         }
-        self.mass.apply_inverse(&mut self.r, &mut self.a);
+        self.mass.apply_inverse(&self.r, &mut self.a);
+        let (mut increment, mut impulse) = (0.0, 0.0);
         for i in 0..n {
+            increment += self.v[i] * (self.r_previous[i] + self.r[i]);
+            impulse += self.a[i] * self.r[i];
             self.v[i] += dt * self.a[i];
         }
-        self.mass.apply(&self.v, &mut self.mv_new);
-        let (mut staggered, mut kinetic) = (0.0, 0.0);
-        for i in 0..n {
-            let old = self.v[i] - dt * self.a[i];
-            staggered += self.v[i] * self.mv_old[i];
-            kinetic += (old + self.v[i]) * (self.mv_old[i] + self.mv_new[i]);
-        }
-        std::mem::swap(&mut self.mv_old, &mut self.mv_new);
+        self.staggered += 0.5 * dt * increment;
+        std::mem::swap(&mut self.r, &mut self.r_previous);
         StepEnergy {
-            kinetic_staggered: 0.5 * staggered,
-            kinetic: 0.125 * kinetic,
+            kinetic_staggered: self.staggered,
+            kinetic: self.staggered + 0.125 * dt * dt * impulse,
             strain: 0.5 * strain,
         }
+    }
+
+    /// `1/2 v^{n-1/2} . M v^{n+1/2}` computed with the mass operator itself (one product or
+    /// solve): compared with the running `T*` it checks `M^-1` against `M`.
+    pub fn staggered_kinetic_from_mass(&mut self) -> f64 {
+        let dt = self.dt;
+        self.mass.apply(&self.v, &mut self.scratch);
+        0.5 * self
+            .v
+            .iter()
+            .zip(&self.a)
+            .zip(&self.scratch)
+            .map(|((v, a), mv)| (v - dt * a) * mv)
+            .sum::<f64>()
     }
 }
