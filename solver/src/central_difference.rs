@@ -21,6 +21,7 @@ use crate::model::Model;
 use crate::output::{
     EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput, StressProfile,
 };
+use crate::park::{ParkOptions, ParkScheme};
 use crate::stability::CriticalStep;
 use thiserror::Error;
 
@@ -91,6 +92,9 @@ pub struct CentralDifference {
     pub stability: StabilityPolicy,
     /// Mass matrix (default lumped).
     pub mass: MassKind,
+    /// Replace the CD predictor by Park's pull-back scheme (lumped mass only; `theta = 0` is
+    /// CD). Default `None`.
+    pub park: Option<ParkOptions>,
 }
 
 /// Why a run did not complete.
@@ -120,6 +124,7 @@ impl CentralDifference {
             start: Start::HalfStep,
             stability: StabilityPolicy::default(),
             mass: MassKind::Lumped,
+            park: None,
         }
     }
 
@@ -208,13 +213,30 @@ impl CentralDifference {
         operator.apply(v0, &mut m_times);
         let kinetic0 = 0.5 * dot(v0, &m_times);
         let strain0 = model.strain_energy(u0);
-        let invariant0 = kinetic_staggered0 + strain0;
+        // Park's scheme keeps full-step velocities: its balance uses the plain kinetic energy
+        // (and measures the scheme's dissipation); CD's uses the conserved staggered one.
+        let invariant0 = if self.park.is_some() {
+            kinetic0 + strain0
+        } else {
+            kinetic_staggered0 + strain0
+        };
 
-        let mut kernel = match self.mass {
-            MassKind::Lumped => {
+        let mut kernel = match (self.park, self.mass) {
+            (Some(options), MassKind::Lumped) => {
+                let mut park = ParkScheme::new(model, dt, options)?;
+                park.start(model);
+                Kernel::Park(Box::new(park))
+            }
+            (Some(_), _) => {
+                return Err(InputError::Other(
+                    "Park's scheme runs with the lumped mass only".into(),
+                )
+                .into());
+            }
+            (None, MassKind::Lumped) => {
                 Kernel::Lumped(LumpedCentralDifference::new(model, dt, u0, &v_half))
             }
-            _ => Kernel::Matrix(Box::new(MatrixCentralDifference::new(
+            (None, _) => Kernel::Matrix(Box::new(MatrixCentralDifference::new(
                 dt,
                 model.stiffness(),
                 operator,
@@ -276,17 +298,22 @@ impl CentralDifference {
         guard.admit(impulse_energy(model, dt, &forces));
         let mut previous_forces = forces.clone();
         let mut work = 0.0;
+        let mut displaced = vec![0.0; forces.len()];
         for step in 1..=steps {
             let t = step as f64 * dt;
             eval_forces(t, &mut forces);
-            // Trapezoidal work: 1/2 (F^n + F^{n+1}) (u^{n+1} - u^n), u^{n+1} - u^n = dt v^{n+1/2}.
-            let v = kernel.half_step_velocity();
+            // Trapezoidal work: 1/2 (F^n + F^{n+1}) (u^{n+1} - u^n) at the loaded nodes.
+            for (slot, f) in displaced.iter_mut().zip(&forces) {
+                *slot = kernel.displacement()[f.0];
+            }
+            let sums = kernel.step_with_energy(model, t - dt, &forces);
+            let u = kernel.displacement();
             work += forces
                 .iter()
                 .zip(&previous_forces)
-                .map(|(f, f0)| 0.5 * (f.1 + f0.1) * dt * v[f.0])
+                .zip(&displaced)
+                .map(|((f, f0), u0)| 0.5 * (f.1 + f0.1) * (u[f.0] - u0))
                 .sum::<f64>();
-            let sums = kernel.step_with_energy(&forces);
             guard.admit(work.abs());
             guard.admit(impulse_energy(model, dt, &forces));
             std::mem::swap(&mut forces, &mut previous_forces);
@@ -356,6 +383,7 @@ impl CentralDifference {
 enum Kernel {
     Lumped(LumpedCentralDifference),
     Matrix(Box<MatrixCentralDifference>),
+    Park(Box<ParkScheme>),
 }
 
 impl Kernel {
@@ -363,6 +391,7 @@ impl Kernel {
         match self {
             Kernel::Lumped(k) => k.dt(),
             Kernel::Matrix(k) => k.dt(),
+            Kernel::Park(k) => k.dt(),
         }
     }
 
@@ -370,39 +399,40 @@ impl Kernel {
         match self {
             Kernel::Lumped(k) => k.displacement(),
             Kernel::Matrix(k) => k.displacement(),
+            Kernel::Park(k) => k.displacement(),
         }
     }
 
-    fn half_step_velocity(&self) -> &[f64] {
+    /// Advance from `t^n = t`; `forces` are the loads at `t^{n+1}` by node.
+    fn step_with_energy(&mut self, model: &Model, t: f64, forces: &[(usize, f64)]) -> StepEnergy {
         match self {
-            Kernel::Lumped(k) => k.half_step_velocity(),
-            Kernel::Matrix(k) => k.half_step_velocity(),
+            Kernel::Lumped(k) => k.step_with_energy(forces),
+            Kernel::Matrix(k) => k.step_with_energy(forces),
+            Kernel::Park(k) => k.step(model, t),
         }
     }
 
     /// `1/2 v^{n-1/2} M v^{n+1/2}` recomputed from the mass matrix, for kernels that carry it
-    /// forward incrementally (`None` for the lumped kernel, which always uses `M`).
+    /// forward incrementally (`None` for the others).
     fn staggered_from_mass(&mut self) -> Option<f64> {
         match self {
-            Kernel::Lumped(_) => None,
             Kernel::Matrix(k) => Some(k.staggered_kinetic_from_mass()),
+            _ => None,
         }
     }
 
-    fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
-        match self {
-            Kernel::Lumped(k) => k.step_with_energy(forces),
-            Kernel::Matrix(k) => k.step_with_energy(forces),
-        }
-    }
-
-    /// `a^n` at node `i` of the current state `u^n` (time `t`): local for the lumped mass, the
-    /// kept global solve otherwise.
-    fn acceleration_at(&self, model: &Model, i: usize, t: f64) -> f64 {
-        match self {
-            Kernel::Lumped(k) => model.acceleration_at(k.displacement(), i, t),
-            Kernel::Matrix(k) => k.acceleration()[i],
-        }
+    /// `(v^n, a^n)` at node `i` of the current state (time `t`): for CD `v^n = v^{n+1/2} - dt/2 a^n`,
+    /// with `a^n` local for the lumped mass and the kept solve otherwise; Park keeps both.
+    fn velocity_and_acceleration_at(&self, model: &Model, i: usize, t: f64) -> (f64, f64) {
+        let (v_half, a) = match self {
+            Kernel::Lumped(k) => (
+                k.half_step_velocity()[i],
+                model.acceleration_at(k.displacement(), i, t),
+            ),
+            Kernel::Matrix(k) => (k.half_step_velocity()[i], k.acceleration()[i]),
+            Kernel::Park(k) => return (k.velocity()[i], k.acceleration()[i]),
+        };
+        (v_half - 0.5 * self.dt() * a, a)
     }
 }
 
@@ -499,15 +529,14 @@ fn record<'a>(
         });
     }
     if step.is_multiple_of(request.history_every) && !output.histories.is_empty() {
-        let v_half = kernel.half_step_velocity();
         for history in &mut output.histories {
             let i = history.node;
-            let acceleration = kernel.acceleration_at(model, i, time);
-            // v^n = v^{n+1/2} - dt/2 a^n; at n = 0 the state's own v^0.
+            let (velocity, acceleration) = kernel.velocity_and_acceleration_at(model, i, time);
+            // At n = 0 the state's own v^0.
             let velocity = if step == 0 {
                 initial_velocity[i]
             } else {
-                v_half[i] - 0.5 * kernel.dt() * acceleration
+                velocity
             };
             history.samples.push(HistorySample {
                 step,

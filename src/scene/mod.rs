@@ -12,8 +12,8 @@ pub mod spectrum;
 use crate::reference::Reference;
 use courant_solver::{
     Bar, CentralDifference, CriticalStep, End, Field, InitialConditions, InputError, Load,
-    MassKind, Mesh, Model, OutputRequest, StabilityPolicy, Start, Support, Supports, TimeFunction,
-    TimePlan,
+    MassKind, Mesh, Model, OutputRequest, ParkOptions, ParkVariant, StabilityPolicy, Start,
+    Support, Supports, TimeFunction, TimePlan,
 };
 pub use error::{SceneError, Source};
 use schema::*;
@@ -334,11 +334,18 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
         };
         let history_nodes = outputs.history_nodes(src, &model)?;
         let (stiffest, element_dt) = model.bar().stiffest_element();
-        for &mass in &stepping.masses {
+        for (&(scheme_name, park), &mass) in stepping
+            .schemes
+            .iter()
+            .flat_map(|s| stepping.masses.iter().map(move |m| (s, m)))
+        {
             for &value in &stepping.values {
                 let mut case_name = String::new();
                 if geometry.element_counts.len() > 1 {
                     case_name += &format!("n{elements}-");
+                }
+                if stepping.schemes.len() > 1 {
+                    case_name += &format!("{scheme_name}-");
                 }
                 if stepping.masses.len() > 1 {
                     case_name += &format!("{}-", mass_name(mass));
@@ -369,6 +376,7 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                     start: stepping.start,
                     stability: stepping.stability,
                     mass,
+                    park,
                 };
                 let critical = integrator.check_stability(&model).map_err(|e| {
                     let exact = courant_solver::MassOperator::new(&model, mass)
@@ -632,6 +640,8 @@ struct Stepping {
     values: Vec<f64>,
     by_courant: bool,
     masses: Vec<MassKind>,
+    /// (case-name prefix, Park options or `None` for CD).
+    schemes: Vec<(&'static str, Option<ParkOptions>)>,
     start: Start,
     stability: StabilityPolicy,
 }
@@ -704,12 +714,88 @@ impl Stepping {
             allow_unstable: raw.allow_unstable,
             blowup_energy_ratio,
         };
+        let theta = match &raw.theta {
+            None => 0.5,
+            Some(t) if (0.0..=1.0).contains(t.get_ref()) => *t.get_ref(),
+            Some(t) => {
+                return Err(src.error(
+                    Some(t.span()),
+                    "integrator.theta",
+                    format!("{} must lie in [0, 1]", t.get_ref()),
+                ));
+            }
+        };
+        let variant = match raw
+            .park_variant
+            .as_ref()
+            .map(|v| (v.get_ref().as_str(), v.span()))
+        {
+            None | Some(("free", _)) => ParkVariant::Free,
+            Some(("incremental", _)) => ParkVariant::Incremental,
+            Some((other, span)) => {
+                return Err(src.error(
+                    Some(span),
+                    "integrator.park_variant",
+                    format!("\"{other}\" is not one of free, incremental"),
+                ));
+            }
+        };
+        let labels = raw
+            .scheme
+            .as_ref()
+            .map(|s| s.get_ref().values())
+            .unwrap_or_else(|| vec!["central-difference".into()]);
+        let scheme_span = raw.scheme.as_ref().map(|s| s.span());
+        if labels.is_empty() {
+            return Err(src.error(
+                scheme_span,
+                "integrator.scheme",
+                "the list is empty; give at least one scheme",
+            ));
+        }
+        let schemes = labels
+            .iter()
+            .map(|label| match label.as_str() {
+                "central-difference" | "cd" => Ok(("cd", None)),
+                "park-lts" => Ok((
+                    "park-lts",
+                    Some(ParkOptions {
+                        theta,
+                        variant,
+                        local_stepping: true,
+                    }),
+                )),
+                "park-global" => Ok((
+                    "park-global",
+                    Some(ParkOptions {
+                        theta,
+                        variant,
+                        local_stepping: false,
+                    }),
+                )),
+                other => Err(src.error(
+                    scheme_span.clone(),
+                    "integrator.scheme",
+                    format!(
+                        "\"{other}\" is not one of central-difference (cd), park-lts, park-global"
+                    ),
+                )),
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        if schemes.iter().any(|s| s.1.is_some()) && masses.iter().any(|m| *m != MassKind::Lumped) {
+            return Err(src.error(
+                scheme_span,
+                "integrator.scheme",
+                "Park's scheme runs with the lumped mass only",
+            ));
+        }
         Ok(Self {
             key,
             span,
             values,
             by_courant,
             masses,
+            schemes,
             start,
             stability,
         })

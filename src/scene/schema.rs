@@ -201,13 +201,6 @@ impl OneOrMany {
     }
 }
 
-#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
-#[serde(rename_all = "kebab-case")]
-pub enum RawScheme {
-    #[default]
-    CentralDifference,
-}
-
 /// One string or a list of strings (each a case).
 #[derive(Debug, Clone, Deserialize)]
 #[serde(untagged)]
@@ -247,9 +240,13 @@ pub enum RawStart {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawIntegrator {
-    /// Default `central-difference`.
-    #[serde(default)]
-    pub scheme: RawScheme,
+    /// Scheme or schemes (one case each): `central-difference` (or `cd`), `park-lts` (Park's
+    /// scheme with local time stepping), `park-global` (without). Default `central-difference`.
+    pub scheme: Option<Spanned<OneOrManyStrings>>,
+    /// Park's blend `theta` (default 1/2).
+    pub theta: Option<Spanned<f64>>,
+    /// Park's element acceleration: `free` (default, the seed's formula) or `incremental`.
+    pub park_variant: Option<Spanned<String>>,
     /// Mass matrix or matrices (one case each): `lmm`, `cmm`, `amm`, `rmm` (beta = 1/2), or
     /// `amm(beta)`, `rmm(beta)`. Default `lmm`.
     pub mass: Option<Spanned<OneOrManyStrings>>,

@@ -1,0 +1,203 @@
+//! Source of truth: Park's explicit scheme with local time stepping and pull-back interpolation
+//! (seed §3.1, corrected in methods.md §6) and its limits: theta = 0 is central difference, and
+//! at alpha_e = dt/dt_e = 1 every theta is (the pull-back weights become beta1 = 1/2, beta2 = 0).
+//!
+//! ```text
+//!   element e:  u~ = u + dt_e v + dt_e^2/2 a  ->  a~  ->  u_fs = u + dt v + dt_e^2 (beta1 a + beta2 a~)
+//!   node:       u^{n+1} = theta avg(u_fs) + (1 - theta) u_cd
+//! ```
+//!
+//! Proves: theta = 0 reproduces CD to round-off on a graded bar; on the homogeneous Fig. 1 bar at
+//! Co = 1 both variants reproduce CD and d'Alembert to round-off; alpha > 1 is refused naming the
+//! element; the `incremental` variant keeps an exact static state static on graded and layered
+//! meshes while `free` drifts (slightly: the drift is measured and bounded).
+
+mod common;
+
+use common::*;
+use courant_solver::fixtures::graded_seed_bar;
+use courant_solver::{
+    Bar, CentralDifference, End, Field, InitialConditions, Load, Mesh, Model, OutputRequest,
+    ParkOptions, ParkVariant, Supports, TimeFunction,
+};
+
+fn run(
+    model: &Model,
+    dt: f64,
+    steps: usize,
+    park: Option<ParkOptions>,
+) -> courant_solver::RunOutput {
+    let request = OutputRequest {
+        profile_steps: vec![steps / 2, steps],
+        ..Default::default()
+    };
+    CentralDifference {
+        park,
+        ..CentralDifference::new(dt)
+    }
+    .run(model, steps, &request)
+    .unwrap()
+}
+
+#[test]
+fn theta_zero_is_central_difference_on_a_graded_bar() {
+    let model = graded_seed_bar(100).unwrap();
+    let dt = 0.5 * model.bar().stiffest_element().1;
+    let cd = run(&model, dt, 400, None);
+    for variant in [ParkVariant::Free, ParkVariant::Incremental] {
+        for local_stepping in [true, false] {
+            let park = run(
+                &model,
+                dt,
+                400,
+                Some(ParkOptions {
+                    theta: 0.0,
+                    variant,
+                    local_stepping,
+                }),
+            );
+            for (a, b) in cd.profiles.iter().zip(&park.profiles) {
+                let diff = max_abs_diff(&a.stress, &b.stress);
+                assert!(
+                    diff < 1e-11,
+                    "{variant:?} lts {local_stepping}: theta = 0 differs from CD by {diff:e}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn alpha_one_everywhere_is_central_difference_and_exact_for_both_variants() {
+    let model = fig1_model(100, TimeFunction::HEAVISIDE);
+    let dt = 0.01;
+    let steps = 150; // t = 1.5 T, after the reflection
+    for variant in [ParkVariant::Free, ParkVariant::Incremental] {
+        let park = run(
+            &model,
+            dt,
+            steps,
+            Some(ParkOptions {
+                theta: 0.5,
+                variant,
+                local_stepping: true,
+            }),
+        );
+        for p in &park.profiles {
+            let err = max_abs_diff(&p.stress, &exact_averages(100, p.time));
+            assert!(
+                err < 1e-10,
+                "{variant:?} t = {}: error {err:e} against d'Alembert",
+                p.time
+            );
+        }
+    }
+}
+
+#[test]
+fn alpha_above_one_is_refused_naming_the_element() {
+    let model = graded_seed_bar(20).unwrap();
+    // Without local stepping alpha is uniform; with it, the soft elements have alpha < 1. Ask
+    // for a step above the stiffest element's transit time: refused (CD's own limit would also
+    // refuse it, so allow_unstable to reach Park's check).
+    let dt = 1.05 * model.bar().stiffest_element().1;
+    let integrator = CentralDifference {
+        park: Some(ParkOptions::default()),
+        stability: courant_solver::StabilityPolicy {
+            allow_unstable: true,
+            ..Default::default()
+        },
+        ..CentralDifference::new(dt)
+    };
+    let err = integrator
+        .run(&model, 10, &OutputRequest::default())
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("element 0 has alpha = 1.05"), "{err}");
+}
+
+/// The static solution of a bar fixed on the right and pulled by a constant end force on the
+/// left: every element carries the same force N = sigma0 A, u_i = sum_{e >= i} N h_e/(E_e A).
+fn static_state(bar: Bar) -> Model {
+    let sigma0 = -1.0;
+    let n = bar.element_count();
+    let mut u = vec![0.0; n + 1];
+    for e in (0..n).rev() {
+        u[e] = u[e + 1] - sigma0 * bar.mesh().element_length(e) / bar.modulus()[e];
+    }
+    let load = Load::Traction {
+        end: End::Left,
+        stress: sigma0,
+        time: TimeFunction::HEAVISIDE,
+    };
+    Model::new(
+        bar,
+        Supports::FREE_FIXED,
+        &[load],
+        InitialConditions {
+            displacement: Some(u),
+            velocity: None,
+        },
+    )
+    .unwrap()
+}
+
+#[test]
+fn incremental_variant_keeps_a_static_state_static_and_free_drifts() {
+    let graded = Bar::new(
+        Mesh::uniform(1.0, 50).unwrap(),
+        &Field::Linear {
+            left: 16.0,
+            right: 1.0,
+        },
+        &Field::Constant(1.0),
+        &Field::Constant(1.0),
+    )
+    .unwrap();
+    let layered_modulus: Vec<f64> = (0..50).map(|e| if e < 25 { 16.0 } else { 1.0 }).collect();
+    let layered = Bar::new(
+        Mesh::uniform(1.0, 50).unwrap(),
+        &Field::PerElement(layered_modulus),
+        &Field::Constant(1.0),
+        &Field::Constant(1.0),
+    )
+    .unwrap();
+    for (name, bar) in [("graded", graded), ("layered", layered)] {
+        let model = static_state(bar);
+        let dt = 0.5 * model.bar().stiffest_element().1;
+        let steps = 2000;
+        let drift = |variant| {
+            let out = run(
+                &model,
+                dt,
+                steps,
+                Some(ParkOptions {
+                    theta: 0.5,
+                    variant,
+                    local_stepping: true,
+                }),
+            );
+            // Stress must stay sigma0 = -1 in every element.
+            out.profiles
+                .iter()
+                .flat_map(|p| p.stress.iter())
+                .map(|s| (s + 1.0).abs())
+                .fold(0.0, f64::max)
+        };
+        let incremental = drift(ParkVariant::Incremental);
+        let free = drift(ParkVariant::Free);
+        assert!(
+            incremental < 1e-12,
+            "{name}: incremental drifts by {incremental:e}"
+        );
+        assert!(
+            free > 1e-6,
+            "{name}: the free variant should drift visibly, drifted {free:e}"
+        );
+        assert!(
+            free < 0.5,
+            "{name}: the free variant's drift should stay small, drifted {free:e}"
+        );
+        eprintln!("{name}: free-variant static drift after {steps} steps: {free:e} of |sigma0|");
+    }
+}
