@@ -8,6 +8,7 @@ use std::path::Path;
 pub const BUILTIN_SCENES: &[(&str, &str)] = &[
     ("fig1", include_str!("../scenes/fig1.toml")),
     ("fig1_masses", include_str!("../scenes/fig1_masses.toml")),
+    ("fig2", include_str!("../scenes/fig2.toml")),
     ("fig6", include_str!("../scenes/fig6.toml")),
     ("dispersion", include_str!("../scenes/dispersion.toml")),
 ];

@@ -177,6 +177,8 @@ fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
         Metric::L2 => norm_of(|n| n.l2),
         Metric::Linf => norm_of(|n| n.linf),
         Metric::Overshoot => norm_of(|n| n.overshoot),
+        Metric::TvRatio => norm_of(|n| n.tv_ratio),
+        Metric::EnergyLost => Measured::Value(result.energy_lost()),
         Metric::EnergyBalance => Measured::Value(result.energy.relative_balance_error()),
         Metric::Diverged => Measured::Flag(matches!(result.status, Status::Diverged(_))),
         Metric::ClosedFormDeviation | Metric::DispersionDeviation | Metric::PhaseErrorOrder => {

@@ -7,6 +7,7 @@
 //!   L2   = sqrt( (1/L) sum_e h_e (sigma_e - sigma_ref,e)^2 ) / |sigma0|
 //!   Linf = max_e |sigma_e - sigma_ref,e| / |sigma0|
 //!   overshoot = max(0, max_e s sigma_e - max_x s sigma(x,t)) / |sigma0|,  s = sign(sigma0)
+//!   tv_ratio  = sum_e |sigma_{e+1} - sigma_e| / sum_e |sigma_ref,e+1 - sigma_ref,e|
 //! ```
 //!
 //! The overshoot measures how far the numerical stress goes beyond the exact solution's extreme
@@ -27,6 +28,10 @@ pub struct ErrorNorms {
     pub linf: f64,
     /// Overshoot beyond the exact envelope, fraction of the jump.
     pub overshoot: f64,
+    /// Total variation of the element stresses over that of the exact element averages,
+    /// `sum_e |sigma_{e+1} - sigma_e| / sum_e |sigma_ref,e+1 - sigma_ref,e|`: 1 for a profile
+    /// without spurious oscillations, above 1 when it oscillates.
+    pub tv_ratio: f64,
 }
 
 impl ErrorNorms {
@@ -50,11 +55,18 @@ impl ErrorNorms {
             linf = linf.max(err);
             overshoot = overshoot.max(sign * stress[e] - extreme);
         }
+        let variation = |v: &[f64]| v.windows(2).map(|w| (w[1] - w[0]).abs()).sum::<f64>();
+        let exact_variation = variation(reference);
         Self {
             l1: l1 / length / scale,
             l2: (l2 / length).sqrt() / scale,
             linf: linf / scale,
             overshoot: overshoot / scale,
+            tv_ratio: if exact_variation > 0.0 {
+                variation(stress) / exact_variation
+            } else {
+                f64::NAN
+            },
         }
     }
 
@@ -65,6 +77,7 @@ impl ErrorNorms {
             l2: a.l2.max(b.l2),
             linf: a.linf.max(b.linf),
             overshoot: a.overshoot.max(b.overshoot),
+            tv_ratio: a.tv_ratio.max(b.tv_ratio),
         })
     }
 }

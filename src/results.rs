@@ -46,9 +46,9 @@ pub fn history_table(result: &CaseResult) -> Table {
                 h.history.x.into(),
                 s.time.into(),
                 s.displacement.into(),
-                exact.map(|e| e.0).into(),
+                exact.map(|e| e.0).filter(|v| !v.is_nan()).into(),
                 s.velocity.into(),
-                exact.map(|e| e.1).into(),
+                exact.map(|e| e.1).filter(|v| !v.is_nan()).into(),
                 s.acceleration.into(),
             ]);
         }
@@ -108,7 +108,9 @@ pub fn summary_table(results: &[CaseResult]) -> Table {
         "l2",
         "linf",
         "overshoot",
+        "tv_ratio",
         "energy_balance",
+        "energy_lost",
         "status",
         "wall_time_s",
     ]);
@@ -133,7 +135,9 @@ pub fn summary_table(results: &[CaseResult]) -> Table {
             norms.map(|n| n.l2).into(),
             norms.map(|n| n.linf).into(),
             norms.map(|n| n.overshoot).into(),
+            norms.map(|n| n.tv_ratio).into(),
             r.energy.relative_balance_error().into(),
+            r.energy_lost().into(),
             status.into(),
             r.wall_time.as_secs_f64().into(),
         ]);
@@ -141,9 +145,9 @@ pub fn summary_table(results: &[CaseResult]) -> Table {
     table
 }
 
-/// Norms per case and profile time: `case, t, l1, l2, linf, overshoot`.
+/// Norms per case and profile time: `case, t, l1, l2, linf, overshoot, tv_ratio`.
 pub fn norms_table(results: &[CaseResult]) -> Table {
-    let mut table = Table::new(&["case", "t", "l1", "l2", "linf", "overshoot"]);
+    let mut table = Table::new(&["case", "t", "l1", "l2", "linf", "overshoot", "tv_ratio"]);
     for r in results {
         for p in &r.profiles {
             if let Some(n) = p.norms {
@@ -154,6 +158,7 @@ pub fn norms_table(results: &[CaseResult]) -> Table {
                     n.l2.into(),
                     n.linf.into(),
                     n.overshoot.into(),
+                    n.tv_ratio.into(),
                 ]);
             }
         }

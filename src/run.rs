@@ -78,6 +78,18 @@ pub struct CaseResult {
 }
 
 impl CaseResult {
+    /// Energy dissipated by the end of the run relative to the energy scale,
+    /// `-(balance error at the last sample) / scale`: round-off for CD, the scheme's numerical
+    /// dissipation for Park.
+    pub fn energy_lost(&self) -> f64 {
+        let last = self.energy.samples.last().map_or(0.0, |s| s.balance_error);
+        if self.energy.scale > 0.0 {
+            -last / self.energy.scale
+        } else {
+            0.0
+        }
+    }
+
     /// Worst norms over all profiles.
     pub fn worst_norms(&self) -> Option<ErrorNorms> {
         ErrorNorms::worst(self.profiles.iter().filter_map(|p| p.norms))
@@ -133,8 +145,8 @@ fn compare(case: &Case, output: RunOutput, status: Status, wall_time: Duration) 
                     .iter()
                     .map(|s| {
                         (
-                            r.displacement(mesh, h.x, s.time),
-                            r.velocity(mesh, h.x, s.time),
+                            r.displacement(mesh, h.x, s.time).unwrap_or(f64::NAN),
+                            r.velocity(mesh, h.x, s.time).unwrap_or(f64::NAN),
                         )
                     })
                     .collect()
@@ -145,13 +157,13 @@ fn compare(case: &Case, output: RunOutput, status: Status, wall_time: Duration) 
             }
         })
         .collect();
-    let energy_reference = reference.map(|r| {
+    let energy_reference = reference.and_then(|r| {
         output
             .energy
             .samples
             .iter()
             .map(|s| r.energies(s.time))
-            .collect()
+            .collect::<Option<Vec<_>>>()
     });
     CaseResult {
         case: case.name.clone(),

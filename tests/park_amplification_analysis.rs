@@ -15,7 +15,10 @@
 //! theta = 1/2 removes it (the error then falls ~16x when kh halves); the spectral radius is
 //! <= 1 for alpha <= 1 at every kh, and > 1 just above alpha = 1.
 
-use courant_solver::{Bar, CentralDifference, InitialConditions, Mesh, Model, OutputRequest, ParkOptions, ParkVariant, Support, Supports};
+use courant_solver::{
+    Bar, CentralDifference, InitialConditions, Mesh, Model, OutputRequest, ParkOptions,
+    ParkVariant, Support, Supports,
+};
 use std::f64::consts::PI;
 
 /// The one-step matrix of the scheme for a mode (`c = h = 1`, so `dt = dt_e alpha`, `dt_e = 1`).
@@ -61,13 +64,45 @@ fn solver_runs_follow_the_analysed_map() {
     let bar = Bar::homogeneous(Mesh::uniform(1.0, n).unwrap(), 1.0, 1.0, 1.0).unwrap();
     let k = mode as f64 * PI;
     let u0: Vec<f64> = bar.mesh().nodes().iter().map(|x| (k * x).cos()).collect();
-    let model = Model::new(bar, Supports { left: Support::Free, right: Support::Free }, &[], InitialConditions { displacement: Some(u0), velocity: None }).unwrap();
-    for (alpha, theta, variant) in [(0.5, 0.5, ParkVariant::Free), (0.8, 1.0, ParkVariant::Incremental), (0.3, 0.25, ParkVariant::Free)] {
+    let model = Model::new(
+        bar,
+        Supports {
+            left: Support::Free,
+            right: Support::Free,
+        },
+        &[],
+        InitialConditions {
+            displacement: Some(u0),
+            velocity: None,
+        },
+    )
+    .unwrap();
+    for (alpha, theta, variant) in [
+        (0.5, 0.5, ParkVariant::Free),
+        (0.8, 1.0, ParkVariant::Incremental),
+        (0.3, 0.25, ParkVariant::Free),
+    ] {
         let h = 1.0 / n as f64;
-        let park = ParkOptions { theta, variant, local_stepping: true };
-        let integrator = CentralDifference { park: Some(park), ..CentralDifference::new(alpha * h) };
+        let park = ParkOptions {
+            theta,
+            variant,
+            local_stepping: true,
+        };
+        let integrator = CentralDifference {
+            park: Some(park),
+            ..CentralDifference::new(alpha * h)
+        };
         let steps = 60;
-        let out = integrator.run(&model, steps, &OutputRequest { history_nodes: vec![0, 7], ..Default::default() }).unwrap();
+        let out = integrator
+            .run(
+                &model,
+                steps,
+                &OutputRequest {
+                    history_nodes: vec![0, 7],
+                    ..Default::default()
+                },
+            )
+            .unwrap();
         let m = step_matrix(k * h, alpha, theta);
         // Time in units of h/c: V scales by h, so iterate (U, V h).
         let (mut u, mut v) = (1.0, 0.0);
@@ -75,7 +110,11 @@ fn solver_runs_follow_the_analysed_map() {
             for history in &out.histories {
                 let expected = u * (k * history.x).cos();
                 let got = history.samples[s].displacement;
-                assert!((got - expected).abs() < 1e-12, "alpha {alpha} theta {theta} step {s} node {}: {got} vs {expected}", history.node);
+                assert!(
+                    (got - expected).abs() < 1e-12,
+                    "alpha {alpha} theta {theta} step {s} node {}: {got} vs {expected}",
+                    history.node
+                );
             }
             (u, v) = (m[0][0] * u + m[0][1] * v, m[1][0] * u + m[1][1] * v);
         }
@@ -89,7 +128,10 @@ fn leading_phase_error_is_two_theta_minus_one_times_one_minus_alpha_squared_over
             let kh = 0.02;
             let coefficient = phase_error(kh, alpha, theta) / (kh * kh);
             let theory = (2.0 * theta - 1.0) * (1.0 - alpha * alpha) / 24.0;
-            assert!((coefficient - theory).abs() <= 0.02 * theory.abs(), "theta {theta} alpha {alpha}: {coefficient} vs {theory}");
+            assert!(
+                (coefficient - theory).abs() <= 0.02 * theory.abs(),
+                "theta {theta} alpha {alpha}: {coefficient} vs {theory}"
+            );
         }
     }
 }
@@ -98,9 +140,15 @@ fn leading_phase_error_is_two_theta_minus_one_times_one_minus_alpha_squared_over
 fn theta_one_half_cancels_the_second_order_phase_error() {
     for alpha in [0.3, 0.6, 0.9] {
         let ratio = phase_error(0.2, alpha, 0.5) / phase_error(0.1, alpha, 0.5);
-        assert!((14.0..=18.0).contains(&ratio), "alpha {alpha}: error ratio {ratio} (fourth order wants 16)");
+        assert!(
+            (14.0..=18.0).contains(&ratio),
+            "alpha {alpha}: error ratio {ratio} (fourth order wants 16)"
+        );
         let cd_ratio = phase_error(0.2, alpha, 0.0) / phase_error(0.1, alpha, 0.0);
-        assert!((3.8..=4.2).contains(&cd_ratio), "alpha {alpha}: CD ratio {cd_ratio}");
+        assert!(
+            (3.8..=4.2).contains(&cd_ratio),
+            "alpha {alpha}: CD ratio {cd_ratio}"
+        );
     }
 }
 
@@ -111,10 +159,16 @@ fn spectral_radius_is_at_most_one_up_to_alpha_one_and_above_one_just_beyond() {
             for i in 1..=200 {
                 let kh = PI * i as f64 / 200.0;
                 let (rho, _) = spectrum(step_matrix(kh, alpha, theta));
-                assert!(rho <= 1.0 + 1e-12, "theta {theta} alpha {alpha} kh {kh}: spectral radius {rho}");
+                assert!(
+                    rho <= 1.0 + 1e-12,
+                    "theta {theta} alpha {alpha} kh {kh}: spectral radius {rho}"
+                );
             }
         }
         let (rho, _) = spectrum(step_matrix(PI, 1.02, theta));
-        assert!(rho > 1.0 + 1e-3, "theta {theta}: alpha = 1.02 should be unstable at kh = pi, radius {rho}");
+        assert!(
+            rho > 1.0 + 1e-3,
+            "theta {theta}: alpha = 1.02 should be unstable at kh = pi, radius {rho}"
+        );
     }
 }

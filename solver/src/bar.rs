@@ -103,6 +103,29 @@ impl Bar {
         })
     }
 
+    /// The layered (Goupillaud) bar of an equal-transit-time mesh: density and area sampled at
+    /// element midpoints, and each element's modulus chosen so that it takes exactly `transit`
+    /// to cross, `E_e = rho_e (h_e/transit)^2` (methods.md §4). Lumped CD at Co = 1 on it is the
+    /// exact layered model.
+    pub fn equal_transit(
+        mesh: Mesh,
+        transit: f64,
+        density: &Field,
+        area: &Field,
+    ) -> Result<Self, InputError> {
+        crate::mesh::positive("element transit time", transit)?;
+        let rho = density.sample(&mesh);
+        let modulus: Vec<f64> = (0..mesh.element_count())
+            .map(|e| rho[e] * (mesh.element_length(e) / transit).powi(2))
+            .collect();
+        Self::new(
+            mesh,
+            &Field::PerElement(modulus),
+            &Field::PerElement(rho),
+            area,
+        )
+    }
+
     /// A homogeneous bar of constant modulus, density and area.
     pub fn homogeneous(
         mesh: Mesh,

@@ -80,6 +80,62 @@ impl Mesh {
         Self::from_nodes(nodes)
     }
 
+    /// Equal-transit-time mesh on `[0, length]`: nodes at equal travel times
+    /// `tau(x_i) = i T/N`, `tau(x) = int_0^x slowness`, so every element takes the same time
+    /// `T/N` for a wave to cross (methods.md §4). The travel time is integrated by composite
+    /// Simpson on 64 N panels (relative error ~1e-12 for smooth slowness) and inverted by
+    /// bisection. Returns the mesh and the common element transit time `T/N`.
+    pub fn equal_transit(
+        length: f64,
+        elements: usize,
+        slowness: &dyn Fn(f64) -> f64,
+    ) -> Result<(Self, f64), InputError> {
+        positive("length", length)?;
+        check_element_count(elements)?;
+        let panels = 64 * elements;
+        let dx = length / panels as f64;
+        // Cumulative travel time at panel boundaries (Simpson on each panel).
+        let mut tau = Vec::with_capacity(panels + 1);
+        tau.push(0.0);
+        for p in 0..panels {
+            let x0 = p as f64 * dx;
+            let s = (slowness(x0) + 4.0 * slowness(x0 + 0.5 * dx) + slowness(x0 + dx)) * dx / 6.0;
+            if !(s.is_finite() && s > 0.0) {
+                return Err(InputError::Parameter {
+                    field: "slowness",
+                    value: s,
+                    rule: "must be positive and finite along the bar",
+                });
+            }
+            tau.push(tau[p] + s);
+        }
+        let total = tau[panels];
+        let mut nodes = Vec::with_capacity(elements + 1);
+        nodes.push(0.0);
+        for i in 1..elements {
+            let target = total * i as f64 / elements as f64;
+            // Panel containing the target, then bisection on the panel's quadratic travel time.
+            let p = tau.partition_point(|&t| t < target).clamp(1, panels) - 1;
+            let (mut lo, mut hi) = (p as f64 * dx, (p + 1) as f64 * dx);
+            let partial = |x: f64| {
+                let x0 = p as f64 * dx;
+                let w = x - x0;
+                tau[p] + (slowness(x0) + 4.0 * slowness(x0 + 0.5 * w) + slowness(x)) * w / 6.0
+            };
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if partial(mid) < target {
+                    lo = mid
+                } else {
+                    hi = mid
+                }
+            }
+            nodes.push(0.5 * (lo + hi));
+        }
+        nodes.push(length);
+        Ok((Self::from_nodes(nodes)?, total / elements as f64))
+    }
+
     /// Mesh from arbitrary node positions; they must be finite and strictly increasing, and
     /// there must be at least two.
     pub fn from_nodes(nodes: Vec<f64>) -> Result<Self, InputError> {

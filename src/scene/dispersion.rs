@@ -37,10 +37,7 @@ pub(super) fn build(
             "a dispersion scene takes one element count",
         ));
     };
-    if !(geometry.grading == 1.0
-        && geometry.modulus.is_constant()
-        && geometry.density.is_constant())
-    {
+    if !(geometry.grading == 1.0 && !geometry.equal_transit && geometry.material.is_homogeneous()) {
         return Err(src.error(
             None,
             "mesh",

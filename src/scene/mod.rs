@@ -131,6 +131,11 @@ pub enum Metric {
     EnergyBalance,
     /// Whether the run diverged.
     Diverged,
+    /// Total variation of the profile over the exact one's (1 = no spurious oscillation).
+    TvRatio,
+    /// Energy the scheme dissipated by the end of the run, relative to the energy scale:
+    /// `-(T + U - W)_end / scale` (0 for CD up to round-off; Park dissipates a little).
+    EnergyLost,
     /// Spectrum scenes: largest relative deviation of the computed elastic frequencies from the
     /// closed-form discrete spectra (methods.md §5), over every mode and mass kind.
     ClosedFormDeviation,
@@ -170,6 +175,8 @@ impl Metric {
             Metric::L2 => "l2",
             Metric::Linf => "linf",
             Metric::Overshoot => "overshoot",
+            Metric::TvRatio => "tv_ratio",
+            Metric::EnergyLost => "energy_lost",
             Metric::EnergyBalance => "energy_balance",
             Metric::Diverged => "diverged",
             Metric::ClosedFormDeviation => "closed_form_deviation",
@@ -186,6 +193,8 @@ impl Metric {
             Metric::Overshoot,
             Metric::EnergyBalance,
             Metric::Diverged,
+            Metric::TvRatio,
+            Metric::EnergyLost,
             Metric::ClosedFormDeviation,
             Metric::DispersionDeviation,
             Metric::PhaseErrorOrder,
@@ -329,7 +338,7 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
         let model = model_of(src, &raw, &geometry, elements)?;
         let reference = match &raw.reference.kind {
             None => None,
-            Some(kind) => Reference::for_model(*kind.get_ref(), &model)
+            Some(kind) => Reference::for_model(*kind.get_ref(), &model, &geometry.material)
                 .map_err(|m| src.error(Some(kind.span()), "reference.kind", m))?,
         };
         let history_nodes = outputs.history_nodes(src, &model)?;
@@ -465,14 +474,66 @@ fn positive(src: &Source, v: &Spanned<f64>, key: &str) -> Result<f64, SceneError
     }
 }
 
+/// The material along the bar: fields of `x`, or homogeneous layers.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Material {
+    /// Modulus and density as constant or linear fields.
+    Fields {
+        /// Modulus field.
+        modulus: Field,
+        /// Density field.
+        density: Field,
+    },
+    /// Layers from the loaded end: (thickness, modulus, density).
+    Layers(Vec<(f64, f64, f64)>),
+}
+
+impl Material {
+    /// `(E(x), rho(x))` at `x` in `[0, length]` (a layer interface belongs to the layer on its
+    /// right).
+    pub fn at(&self, x: f64, length: f64) -> (f64, f64) {
+        let field = |f: &Field| match f {
+            Field::Constant(c) => *c,
+            Field::Linear { left, right } => left + (right - left) * x / length,
+            Field::PerElement(_) => f64::NAN,
+        };
+        match self {
+            Material::Fields { modulus, density } => (field(modulus), field(density)),
+            Material::Layers(layers) => {
+                let mut end = 0.0;
+                for &(thickness, e, rho) in layers {
+                    end += thickness;
+                    if x < end {
+                        return (e, rho);
+                    }
+                }
+                layers
+                    .last()
+                    .map_or((f64::NAN, f64::NAN), |&(_, e, rho)| (e, rho))
+            }
+        }
+    }
+
+    /// True for a homogeneous material.
+    pub fn is_homogeneous(&self) -> bool {
+        match self {
+            Material::Fields { modulus, density } => modulus.is_constant() && density.is_constant(),
+            Material::Layers(layers) => layers
+                .windows(2)
+                .all(|w| w[0].1 == w[1].1 && w[0].2 == w[1].2),
+        }
+    }
+}
+
 /// Bar geometry and material as the scene states them.
-struct Geometry<'r> {
+pub struct Geometry<'r> {
     length: f64,
     area: f64,
     element_counts: Vec<usize>,
     grading: f64,
-    modulus: Field,
-    density: Field,
+    equal_transit: bool,
+    /// The material.
+    pub material: Material,
     raw: &'r RawScene,
 }
 
@@ -497,50 +558,160 @@ impl<'r> Geometry<'r> {
                 format!("{bad} must be at least 1"),
             ));
         }
+        let material = match (&raw.material.layers, &raw.material.modulus) {
+            (Some(layers), None) if raw.material.density.is_none() => {
+                let mut list = Vec::new();
+                for l in layers.get_ref() {
+                    let density = l.density.unwrap_or(1.0);
+                    for (name, v) in [
+                        ("thickness", l.thickness),
+                        ("modulus", l.modulus),
+                        ("density", density),
+                    ] {
+                        if !(v.is_finite() && v > 0.0) {
+                            return Err(src.error(
+                                Some(layers.span()),
+                                "material.layers",
+                                format!("{name} = {v} must be positive and finite"),
+                            ));
+                        }
+                    }
+                    list.push((l.thickness, l.modulus, density));
+                }
+                if list.is_empty() {
+                    return Err(src.error(
+                        Some(layers.span()),
+                        "material.layers",
+                        "the list is empty",
+                    ));
+                }
+                Material::Layers(list)
+            }
+            (Some(layers), _) => {
+                return Err(src.error(
+                    Some(layers.span()),
+                    "material.layers",
+                    "give either `layers` or `modulus`/`density`, not both",
+                ));
+            }
+            (None, Some(modulus)) => Material::Fields {
+                modulus: field(modulus),
+                density: raw
+                    .material
+                    .density
+                    .as_ref()
+                    .map(field)
+                    .unwrap_or(Field::Constant(1.0)),
+            },
+            (None, None) => {
+                return Err(src.error(None, "material", "needs `modulus` (or `layers`)"));
+            }
+        };
+        let layered_length = match &material {
+            Material::Layers(l) => Some(l.iter().map(|x| x.0).sum::<f64>()),
+            Material::Fields { .. } => None,
+        };
+        let length = optional(&raw.bar.length, "bar.length")?
+            .or(layered_length)
+            .unwrap_or(1.0);
+        if let Some(total) = layered_length {
+            if (total - length).abs() > 1e-12 * length {
+                return Err(src.error(
+                    None,
+                    "material.layers",
+                    format!("the layers add up to {total}, not the bar length {length}"),
+                ));
+            }
+        }
+        let equal_transit = match raw
+            .mesh
+            .spacing
+            .as_ref()
+            .map(|s| (s.get_ref().as_str(), s.span()))
+        {
+            None | Some(("uniform", _)) => false,
+            Some(("equal-transit", span)) => {
+                if raw.mesh.grading.is_some() {
+                    return Err(src.error(
+                        Some(span),
+                        "mesh.spacing",
+                        "equal-transit spacing takes no `grading`",
+                    ));
+                }
+                true
+            }
+            Some((other, span)) => {
+                return Err(src.error(
+                    Some(span),
+                    "mesh.spacing",
+                    format!("\"{other}\" is not one of uniform, equal-transit"),
+                ));
+            }
+        };
         Ok(Self {
-            length: optional(&raw.bar.length, "bar.length")?.unwrap_or(1.0),
+            length,
             area: optional(&raw.bar.area, "bar.area")?.unwrap_or(1.0),
             element_counts: counts.iter().map(|&n| n as usize).collect(),
             grading: optional(&raw.mesh.grading, "mesh.grading")?.unwrap_or(1.0),
-            modulus: field(&raw.material.modulus),
-            density: raw
-                .material
-                .density
-                .as_ref()
-                .map(field)
-                .unwrap_or(Field::Constant(1.0)),
+            equal_transit,
+            material,
             raw,
         })
     }
 
-    /// Transit time of the continuum bar, `T = int_0^L dx / c(x)`: `L/c` for constant
-    /// properties, composite Simpson (20000 intervals, ~1e-15 relative for linear fields)
-    /// otherwise. Independent of the mesh, so times in transit units mean the same for every N.
+    /// Transit time of the continuum bar, `T = int_0^L dx / c(x)`: exact for constant
+    /// properties and layers, composite Simpson (20000 intervals, ~1e-15 relative for linear
+    /// fields) otherwise. Independent of the mesh, so times in transit units mean the same for
+    /// every N.
     fn transit_time(&self) -> f64 {
-        let at = |f: &Field, s: f64| match f {
-            Field::Constant(c) => *c,
-            Field::Linear { left, right } => left + (right - left) * s,
-            Field::PerElement(_) => f64::NAN,
+        let slowness = |x: f64| {
+            let (e, rho) = self.material.at(x, self.length);
+            (rho / e).sqrt()
         };
-        let slowness = |s: f64| (at(&self.density, s) / at(&self.modulus, s)).sqrt();
-        if self.modulus.is_constant() && self.density.is_constant() {
-            return self.length * slowness(0.0);
+        match &self.material {
+            Material::Layers(layers) => {
+                layers.iter().map(|&(t, e, rho)| t * (rho / e).sqrt()).sum()
+            }
+            Material::Fields { modulus, density }
+                if modulus.is_constant() && density.is_constant() =>
+            {
+                self.length * slowness(0.0)
+            }
+            Material::Fields { .. } => {
+                let n = 20_000;
+                let h = self.length / n as f64;
+                let sum: f64 = (0..=n)
+                    .map(|i| {
+                        let w = if i == 0 || i == n {
+                            1.0
+                        } else if i % 2 == 1 {
+                            4.0
+                        } else {
+                            2.0
+                        };
+                        w * slowness(i as f64 * h)
+                    })
+                    .sum();
+                sum * h / 3.0
+            }
         }
-        let n = 20_000;
-        let h = 1.0 / n as f64;
-        let sum: f64 = (0..=n)
-            .map(|i| {
-                let w = if i == 0 || i == n {
-                    1.0
-                } else if i % 2 == 1 {
-                    4.0
-                } else {
-                    2.0
-                };
-                w * slowness(i as f64 * h)
-            })
-            .sum();
-        self.length * sum * h / 3.0
+    }
+
+    /// Element fields of the material on `mesh`: fields keep their exact midpoint sampling,
+    /// layers are sampled at element midpoints.
+    fn element_fields(&self, mesh: &Mesh) -> (Field, Field) {
+        match &self.material {
+            Material::Fields { modulus, density } => (modulus.clone(), density.clone()),
+            Material::Layers(_) => {
+                let (e, rho): (Vec<f64>, Vec<f64>) = (0..mesh.element_count())
+                    .map(|k| {
+                        self.material
+                            .at(mesh.midpoint(k) - mesh.start(), self.length)
+                    })
+                    .unzip();
+                (Field::PerElement(e), Field::PerElement(rho))
+            }
+        }
     }
 }
 
@@ -550,37 +721,7 @@ fn model_of(
     g: &Geometry,
     elements: usize,
 ) -> Result<Model, SceneError> {
-    let mesh = Mesh::geometric(g.length, elements, g.grading).map_err(|e| {
-        match (&e, &raw.mesh.grading) {
-            (
-                InputError::Parameter {
-                    field: "grading ratio",
-                    ..
-                },
-                Some(s),
-            ) => src.error(Some(s.span()), "mesh.grading", e.to_string()),
-            _ => src.error(
-                Some(raw.mesh.elements.span()),
-                "mesh.elements",
-                e.to_string(),
-            ),
-        }
-    })?;
-    let bar = Bar::new(mesh, &g.modulus, &g.density, &Field::Constant(g.area)).map_err(|e| {
-        let (key, span) = match &e {
-            InputError::ElementProperty {
-                field: "density", ..
-            } => (
-                "material.density",
-                raw.material.density.as_ref().map(|d| d.span()),
-            ),
-            InputError::ElementProperty { field: "area", .. } => {
-                ("bar.area", raw.bar.area.as_ref().map(|d| d.span()))
-            }
-            _ => ("material.modulus", Some(raw.material.modulus.span())),
-        };
-        src.error(span, key, e.to_string())
-    })?;
+    let bar = bar_of(src, raw, g, elements)?;
     let supports = Supports {
         left: support(raw.supports.left),
         right: support(raw.supports.right),
@@ -631,6 +772,64 @@ fn model_of(
         };
         src.error(span, key, e.to_string())
     })
+}
+
+/// The bar of a scene with `elements` elements (mesh spacing and material as stated).
+pub(super) fn bar_of(
+    src: &Source,
+    raw: &RawScene,
+    g: &Geometry,
+    elements: usize,
+) -> Result<Bar, SceneError> {
+    let mesh_error = |e: InputError| match (&e, &raw.mesh.grading) {
+        (
+            InputError::Parameter {
+                field: "grading ratio",
+                ..
+            },
+            Some(s),
+        ) => src.error(Some(s.span()), "mesh.grading", e.to_string()),
+        _ => src.error(
+            Some(raw.mesh.elements.span()),
+            "mesh.elements",
+            e.to_string(),
+        ),
+    };
+    let material_span = raw.material.modulus.as_ref().map(|m| m.span()).or(raw
+        .material
+        .layers
+        .as_ref()
+        .map(|l| l.span()));
+    let bar_error = |e: InputError| {
+        let (key, span) = match &e {
+            InputError::ElementProperty {
+                field: "density", ..
+            } => (
+                "material.density",
+                raw.material.density.as_ref().map(|d| d.span()),
+            ),
+            InputError::ElementProperty { field: "area", .. } => {
+                ("bar.area", raw.bar.area.as_ref().map(|d| d.span()))
+            }
+            _ => ("material", material_span.clone()),
+        };
+        src.error(span, key, e.to_string())
+    };
+    let area = Field::Constant(g.area);
+    if g.equal_transit {
+        let slowness = |x: f64| {
+            let (e, rho) = g.material.at(x, g.length);
+            (rho / e).sqrt()
+        };
+        let (mesh, transit) =
+            Mesh::equal_transit(g.length, elements, &slowness).map_err(mesh_error)?;
+        let (_, density) = g.element_fields(&mesh);
+        Bar::equal_transit(mesh, transit, &density, &area).map_err(bar_error)
+    } else {
+        let mesh = Mesh::geometric(g.length, elements, g.grading).map_err(mesh_error)?;
+        let (modulus, density) = g.element_fields(&mesh);
+        Bar::new(mesh, &modulus, &density, &area).map_err(bar_error)
+    }
 }
 
 /// The integrator settings of a time-stepping scene.
@@ -1012,7 +1211,7 @@ fn expectation(
     let fail = |msg: String| src.error(Some(spanned.span()), "expect", msg);
     let metric = Metric::parse(&raw.metric).ok_or_else(|| {
         fail(format!(
-            "metric = \"{}\" is not one of l1, l2, linf, overshoot, energy_balance, diverged, closed_form_deviation, dispersion_deviation, phase_error_order",
+            "metric = \"{}\" is not one of l1, l2, linf, overshoot, energy_balance, energy_lost, tv_ratio, diverged, closed_form_deviation, dispersion_deviation, phase_error_order",
             raw.metric
         ))
     })?;

@@ -75,9 +75,22 @@ pub struct RawLinear {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawMaterial {
-    pub modulus: Spanned<RawField>,
+    /// Required unless `layers` is given.
+    pub modulus: Option<Spanned<RawField>>,
     /// Default 1.
     pub density: Option<Spanned<RawField>>,
+    /// Piecewise-constant layers from the loaded (left) end, instead of `modulus`/`density`.
+    pub layers: Option<Spanned<Vec<RawLayer>>>,
+}
+
+/// One homogeneous layer.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawLayer {
+    pub thickness: f64,
+    pub modulus: f64,
+    /// Default 1.
+    pub density: Option<f64>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -87,6 +100,9 @@ pub struct RawMesh {
     pub elements: Spanned<OneOrManyInts>,
     /// Ratio of consecutive element lengths, `h_{e+1}/h_e`. Default 1 (uniform).
     pub grading: Option<Spanned<f64>>,
+    /// `uniform` (default; with `grading`, geometric) or `equal-transit` (element lengths
+    /// proportional to the local wave speed, methods.md §4).
+    pub spacing: Option<Spanned<String>>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
@@ -303,7 +319,12 @@ pub struct RawOutput {
 pub enum RawReferenceKind {
     #[default]
     None,
+    /// Homogeneous free-fixed bar (methods.md §3).
     Dalembert,
+    /// Linearly graded modulus, constant density (methods.md §4).
+    Graded,
+    /// Piecewise-constant layers (exact wave tracking).
+    Layered,
 }
 
 #[derive(Debug, Default, Deserialize)]

@@ -4,7 +4,7 @@
 use super::schema::{RawScene, RawSpectrum};
 use super::{Geometry, SceneError, Source, parse_mass};
 use courant_references::spectra::{BarEnds, UniformBar};
-use courant_solver::{Bar, Field, MassKind, Mesh, Model, Support, Supports};
+use courant_solver::{MassKind, Model, Support, Supports};
 
 /// One spectrum case: an end condition and a mesh.
 #[derive(Debug, Clone)]
@@ -50,7 +50,7 @@ pub(super) fn build(
         ));
     }
     let uniform =
-        geometry.grading == 1.0 && geometry.modulus.is_constant() && geometry.density.is_constant();
+        geometry.grading == 1.0 && !geometry.equal_transit && geometry.material.is_homogeneous();
     let mut cases = Vec::new();
     for end in &ends {
         let (supports, closed_ends) = match end.as_str() {
@@ -84,15 +84,7 @@ pub(super) fn build(
             }
         };
         for &elements in &geometry.element_counts {
-            let mesh = Mesh::geometric(geometry.length, elements, geometry.grading)
-                .map_err(|e| fail(raw.mesh.elements.span(), "mesh.elements", e.to_string()))?;
-            let bar = Bar::new(
-                mesh,
-                &geometry.modulus,
-                &geometry.density,
-                &Field::Constant(geometry.area),
-            )
-            .map_err(|e| fail(raw.material.modulus.span(), "material", e.to_string()))?;
+            let bar = super::bar_of(src, raw, geometry, elements)?;
             if bar.node_count() > courant_solver::spectrum::MAX_DENSE_NODES {
                 return Err(fail(
                     raw.mesh.elements.span(),
