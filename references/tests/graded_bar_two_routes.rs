@@ -157,6 +157,28 @@ fn routes_a_and_b_agree_to_1e_9_over_several_reflections_and_next_to_fronts() {
 }
 
 #[test]
+fn routes_a_and_b_agree_to_1e_9_for_a_strong_grading_in_both_orientations() {
+    // E ratio 100: kappa_max T = 4.5, so route (b) refines its lattice and route (a) uses more
+    // abscissae; the default state() switches to route (b) once t - tau > 1.9 T.
+    for (e1, e2) in [(100.0, 1.0), (1.0, 100.0)] {
+        let bar = GradedBar::new(1.0, e1, e2, 1.0, 1.0, -1.0).unwrap();
+        let transit = bar.transit_time();
+        assert_eq!(bar.characteristic_cells(), 45);
+        for (x, t_over_t) in [(0.2, 0.6), (0.7, 0.9), (0.45, 1.5), (0.9, 1.7)] {
+            let t = t_over_t * transit;
+            assert!(front_clearance(&bar, x, t) > 1e-3 * transit);
+            let d = difference(
+                &bar,
+                x,
+                bar.state_laplace(x, t),
+                bar.state_characteristics(x, t),
+            );
+            assert!(d < 1e-9, "E1 = {e1}, x = {x}, t/T = {t_over_t}: {d:e}");
+        }
+    }
+}
+
+#[test]
 fn default_state_switches_routes_without_a_visible_seam() {
     let bar = GradedBar::seed_fig2();
     let transit = bar.transit_time();
@@ -429,6 +451,16 @@ fn invalid_data_is_rejected_by_name_and_invalid_points_give_nan() {
             .is_nan()
     );
     assert!(bar.stress_average(0.5, 0.4, 0.2).is_nan());
+    // Beyond their documented ranges the routes decline instead of running for ever.
+    let transit = bar.transit_time();
+    assert!(bar.state(0.5, 2000.0 * transit).stress.is_nan());
+    assert!(bar.state_laplace(0.5, 30.0 * transit).stress.is_nan());
+    let homogeneous = GradedBar::new(1.0, 1.0, 1.0, 1.0, 1.0, -1.0).unwrap();
+    let dalembert = DalembertBar::new(1.0, 1.0, 1.0, 1.0, -1.0).unwrap();
+    assert_eq!(
+        homogeneous.stress(0.3, 1e6 + 0.1),
+        dalembert.stress(0.3, 1e6 + 0.1)
+    );
     assert_eq!(
         bar.state(0.5, -1.0),
         FieldPoint {
