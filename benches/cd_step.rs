@@ -185,5 +185,49 @@ fn spectrum_dense(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, lumped_cd_step, mass_kind_step, spectrum_dense);
+/// One step of Park's scheme (theta = 1/2, with and without local stepping) against the lumped
+/// CD run step on the Fig. 2 graded bar, N = 1e5, Co = 0.5. Target (issue 4): within 3x of CD.
+fn park_step(c: &mut Criterion) {
+    use courant_solver::{ParkOptions, ParkScheme};
+    let n = 100_000;
+    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+    let dt = 0.5 * model.bar().stiffest_element().1;
+    let mut group = c.benchmark_group("park_step");
+    group
+        .warm_up_time(Duration::from_secs(1))
+        .sample_size(30)
+        .measurement_time(Duration::from_secs(3));
+    group.throughput(Throughput::Elements(n as u64));
+    let forces = [(0usize, 1.0f64)];
+    let mut cd = graded_kernel(n);
+    group.bench_function(BenchmarkId::new("cd", n), |b| {
+        b.iter(|| cd.step_with_energy(black_box(&forces)))
+    });
+    for local_stepping in [false, true] {
+        let options = ParkOptions {
+            local_stepping,
+            ..ParkOptions::default()
+        };
+        let mut park = ParkScheme::new(&model, dt, options).unwrap();
+        park.start(&model);
+        let mut t = 0.0;
+        group.bench_function(BenchmarkId::new(options.label(), n), |b| {
+            b.iter(|| {
+                let e = park.step(black_box(&model), t);
+                t += dt;
+                e
+            })
+        });
+        assert!(park.displacement().iter().all(|x| x.is_finite()));
+    }
+    group.finish();
+}
+
+criterion_group!(
+    benches,
+    lumped_cd_step,
+    mass_kind_step,
+    spectrum_dense,
+    park_step
+);
 criterion_main!(benches);

@@ -9,6 +9,11 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
     ("fig1", include_str!("../scenes/fig1.toml")),
     ("fig1_masses", include_str!("../scenes/fig1_masses.toml")),
     ("fig2", include_str!("../scenes/fig2.toml")),
+    (
+        "fig2_reversed",
+        include_str!("../scenes/fig2_reversed.toml"),
+    ),
+    ("layered", include_str!("../scenes/layered.toml")),
     ("fig6", include_str!("../scenes/fig6.toml")),
     ("dispersion", include_str!("../scenes/dispersion.toml")),
 ];

@@ -82,24 +82,51 @@ impl Mesh {
 
     /// Equal-transit-time mesh on `[0, length]`: nodes at equal travel times
     /// `tau(x_i) = i T/N`, `tau(x) = int_0^x slowness`, so every element takes the same time
-    /// `T/N` for a wave to cross (methods.md §4). The travel time is integrated by composite
-    /// Simpson on 64 N panels (relative error ~1e-12 for smooth slowness) and inverted by
-    /// bisection. Returns the mesh and the common element transit time `T/N`.
+    /// `T/N` for a wave to cross (methods.md §4). `breaks` are the positions where the slowness
+    /// jumps (layer interfaces): the travel time is integrated piece by piece between them with
+    /// 3-point Gauss-Legendre on 64 N panels (exact for piecewise-constant layers, ~1e-12 for
+    /// smooth ones) and inverted by bisection. Returns the mesh and the element transit `T/N`.
     pub fn equal_transit(
         length: f64,
         elements: usize,
         slowness: &dyn Fn(f64) -> f64,
+        breaks: &[f64],
     ) -> Result<(Self, f64), InputError> {
         positive("length", length)?;
         check_element_count(elements)?;
-        let panels = 64 * elements;
-        let dx = length / panels as f64;
-        // Cumulative travel time at panel boundaries (Simpson on each panel).
-        let mut tau = Vec::with_capacity(panels + 1);
-        tau.push(0.0);
-        for p in 0..panels {
-            let x0 = p as f64 * dx;
-            let s = (slowness(x0) + 4.0 * slowness(x0 + 0.5 * dx) + slowness(x0 + dx)) * dx / 6.0;
+        const GAUSS: [(f64, f64); 3] = [
+            (-0.774_596_669_241_483_4, 5.0 / 9.0),
+            (0.0, 8.0 / 9.0),
+            (0.774_596_669_241_483_4, 5.0 / 9.0),
+        ];
+        let integral = |a: f64, b: f64| -> f64 {
+            let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+            GAUSS
+                .iter()
+                .map(|&(x, w)| w * slowness(mid + half * x))
+                .sum::<f64>()
+                * half
+        };
+        // Panel edges: every piece between breaks split into panels of about L/(64 N).
+        let mut cuts: Vec<f64> = breaks
+            .iter()
+            .copied()
+            .filter(|&b| b > 0.0 && b < length)
+            .collect();
+        cuts.sort_by(f64::total_cmp);
+        cuts.insert(0, 0.0);
+        cuts.push(length);
+        let target_width = length / (64 * elements) as f64;
+        let mut edges = vec![0.0];
+        for piece in cuts.windows(2) {
+            let panels = ((piece[1] - piece[0]) / target_width).ceil().max(1.0) as usize;
+            edges.extend(
+                (1..=panels).map(|k| piece[0] + (piece[1] - piece[0]) * k as f64 / panels as f64),
+            );
+        }
+        let mut tau = vec![0.0];
+        for w in edges.windows(2) {
+            let s = integral(w[0], w[1]);
             if !(s.is_finite() && s > 0.0) {
                 return Err(InputError::Parameter {
                     field: "slowness",
@@ -107,24 +134,21 @@ impl Mesh {
                     rule: "must be positive and finite along the bar",
                 });
             }
-            tau.push(tau[p] + s);
+            tau.push(tau[tau.len() - 1] + s);
         }
-        let total = tau[panels];
+        let total = tau[tau.len() - 1];
         let mut nodes = Vec::with_capacity(elements + 1);
         nodes.push(0.0);
         for i in 1..elements {
             let target = total * i as f64 / elements as f64;
-            // Panel containing the target, then bisection on the panel's quadratic travel time.
-            let p = tau.partition_point(|&t| t < target).clamp(1, panels) - 1;
-            let (mut lo, mut hi) = (p as f64 * dx, (p + 1) as f64 * dx);
-            let partial = |x: f64| {
-                let x0 = p as f64 * dx;
-                let w = x - x0;
-                tau[p] + (slowness(x0) + 4.0 * slowness(x0 + 0.5 * w) + slowness(x)) * w / 6.0
-            };
-            for _ in 0..60 {
+            let p = tau
+                .partition_point(|&t| t < target)
+                .clamp(1, edges.len() - 1)
+                - 1;
+            let (mut lo, mut hi) = (edges[p], edges[p + 1]);
+            for _ in 0..64 {
                 let mid = 0.5 * (lo + hi);
-                if partial(mid) < target {
+                if tau[p] + integral(edges[p], mid) < target {
                     lo = mid
                 } else {
                     hi = mid

@@ -81,13 +81,18 @@ impl ParkOptions {
     }
 }
 
-/// Per-element constants of the push-forward and pull-back.
-#[derive(Debug, Clone)]
+/// Per-element constants of the push-forward and pull-back, premultiplied for the step.
+#[derive(Debug, Clone, Copy)]
 struct ElementStep {
     dt_e: f64,
-    beta1: f64,
-    beta2: f64,
-    stiffness: f64,
+    /// `dt_e^2 / 2`.
+    half_dt_e2: f64,
+    /// `dt_e^2 beta1`.
+    pull_a: f64,
+    /// `dt_e^2 beta2`.
+    pull_at: f64,
+    /// `k_e 2/m_e`: element acceleration per unit stretch.
+    stiffness_per_mass: f64,
     /// `2 / m_e`: the inverse of each node's share of the element LMM.
     inverse_half_mass: f64,
 }
@@ -106,14 +111,15 @@ pub struct ParkScheme {
     inverse_mass: Vec<f64>,
     mass: Vec<f64>,
     /// Nodes that carry a load (the others have zero external force at every time).
-    loaded: Vec<bool>,
+    loaded_nodes: Vec<usize>,
+    /// 1 at free nodes, 0 at fixed ones.
+    free: Vec<f64>,
     u: Vec<f64>,
     v: Vec<f64>,
     a: Vec<f64>,
     u_fs: Vec<f64>,
     u_next: Vec<f64>,
-    force_now: Vec<f64>,
-    force_push: Vec<f64>,
+    /// `F^{n+1}`, nonzero only at loaded nodes.
     force_next: Vec<f64>,
 }
 
@@ -147,11 +153,14 @@ impl ParkScheme {
                 )));
             }
             let alpha = alpha.min(1.0);
+            let beta1 = alpha * (1.0 + 3.0 * alpha - alpha * alpha) / 6.0;
+            let beta2 = alpha * (alpha * alpha - 1.0) / 6.0;
             elements.push(ElementStep {
                 dt_e,
-                beta1: alpha * (1.0 + 3.0 * alpha - alpha * alpha) / 6.0,
-                beta2: alpha * (alpha * alpha - 1.0) / 6.0,
-                stiffness: k,
+                half_dt_e2: 0.5 * dt_e * dt_e,
+                pull_a: dt_e * dt_e * beta1,
+                pull_at: dt_e * dt_e * beta2,
+                stiffness_per_mass: k * 2.0 / m,
                 inverse_half_mass: 2.0 / m,
             });
         }
@@ -186,16 +195,17 @@ impl ParkScheme {
             share_right,
             inverse_mass: model.inverse_mass().to_vec(),
             mass: nodal.to_vec(),
-            loaded: (0..n)
-                .map(|i| model.loads().iter().any(|l| l.node == i))
+            loaded_nodes: (0..n)
+                .filter(|&i| model.loads().iter().any(|l| l.node == i))
+                .collect(),
+            free: (0..n)
+                .map(|i| if model.is_fixed(i) { 0.0 } else { 1.0 })
                 .collect(),
             u: model.initial_displacement().to_vec(),
             v: model.initial_velocity().to_vec(),
             a: vec![0.0; n],
             u_fs: vec![0.0; n],
             u_next: vec![0.0; n],
-            force_now: vec![0.0; n],
-            force_push: vec![0.0; n],
             force_next: vec![0.0; n],
         })
     }
@@ -235,78 +245,76 @@ impl ParkScheme {
     /// Advance from `t^n = t` to `t + dt`. Energies at the new level: kinetic `1/2 v M v` (also
     /// reported as the staggered kinetic energy: Park's scheme has no staggered velocities) and
     /// strain `1/2 u K u`.
+    ///
+    /// Loads are sparse: the element loop runs load-free and the few loaded (element, node)
+    /// pairs are corrected afterwards (the loads enter the predictions linearly).
     pub fn step(&mut self, model: &Model, t: f64) -> StepEnergy {
         let (dt, theta) = (self.dt, self.options.theta);
         let n = self.u.len();
-        self.u_fs.iter_mut().for_each(|x| *x = 0.0);
-        // Loads are sparse: only loaded nodes are evaluated (the arrays stay 0 elsewhere).
-        for i in (0..n).filter(|&i| self.loaded[i]) {
-            self.force_now[i] = model.external_force_at(i, t);
-        }
+        let incremental = self.options.variant == ParkVariant::Incremental;
+        let (u, v, a) = (&self.u, &self.v, &self.a);
+        // 1. Push forward, element acceleration and pull back, element by element; each node's
+        //    two predictions are summed with a carry (no separate zeroing pass).
+        let mut carry = 0.0;
         for (e, el) in self.elements.iter().enumerate() {
-            let (i, j) = (e, e + 1);
+            let (ui, uj, vi, vj, ai, aj) = (u[e], u[e + 1], v[e], v[e + 1], a[e], a[e + 1]);
             let dte = el.dt_e;
-            for node in [i, j] {
-                if self.loaded[node] {
-                    self.force_push[node] = model.external_force_at(node, t + dte);
-                }
-            }
-            let ut_i = self.u[i] + dte * self.v[i] + 0.5 * dte * dte * self.a[i];
-            let ut_j = self.u[j] + dte * self.v[j] + 0.5 * dte * dte * self.a[j];
-            // Element loads: each node's load shared by mass.
-            let (fi, fj) = (self.share_right[i], self.share_left[j]);
-            let (at_i, at_j) = match self.options.variant {
-                ParkVariant::Free => {
-                    let tension = el.stiffness * (ut_j - ut_i);
-                    (
-                        el.inverse_half_mass * (fi * self.force_push[i] + tension),
-                        el.inverse_half_mass * (fj * self.force_push[j] - tension),
-                    )
-                }
-                ParkVariant::Incremental => {
-                    let d_tension = el.stiffness * ((ut_j - self.u[j]) - (ut_i - self.u[i]));
-                    (
-                        self.a[i]
-                            + el.inverse_half_mass
-                                * (fi * (self.force_push[i] - self.force_now[i]) + d_tension),
-                        self.a[j]
-                            + el.inverse_half_mass
-                                * (fj * (self.force_push[j] - self.force_now[j]) - d_tension),
-                    )
-                }
+            let ut_i = ui + dte * vi + el.half_dt_e2 * ai;
+            let ut_j = uj + dte * vj + el.half_dt_e2 * aj;
+            let (at_i, at_j) = if incremental {
+                let d = el.stiffness_per_mass * ((ut_j - uj) - (ut_i - ui));
+                (ai + d, aj - d)
+            } else {
+                let d = el.stiffness_per_mass * (ut_j - ut_i);
+                (d, -d)
             };
-            let pull = |u: f64, v: f64, a: f64, at: f64| {
-                u + dt * v + dte * dte * (el.beta1 * a + el.beta2 * at)
-            };
-            self.u_fs[i] += pull(self.u[i], self.v[i], self.a[i], at_i);
-            self.u_fs[j] += pull(self.u[j], self.v[j], self.a[j], at_j);
+            self.u_fs[e] = carry + ui + dt * vi + el.pull_a * ai + el.pull_at * at_i;
+            carry = uj + dt * vj + el.pull_a * aj + el.pull_at * at_j;
         }
+        self.u_fs[n - 1] = carry;
+        // 2. Loads on the element problems: a~ gains inverse_half_mass * share * F (free) or
+        //    * share * dF (incremental), and u_fs gains dt_e^2 beta2 times that.
+        for &node in &self.loaded_nodes {
+            let now = model.external_force_at(node, t);
+            for (e, share) in [
+                (node.checked_sub(1), self.share_left[node]),
+                (Some(node).filter(|&k| k + 1 < n), self.share_right[node]),
+            ] {
+                let Some(e) = e else { continue };
+                let el = &self.elements[e];
+                let push = model.external_force_at(node, t + el.dt_e);
+                let force = if incremental { push - now } else { push };
+                self.u_fs[node] += el.pull_at * el.inverse_half_mass * share * force;
+            }
+        }
+        // 3. Blend with the CD prediction; fixed nodes stay at 0.
         for i in 0..n {
             let u_cd = self.u[i] + dt * self.v[i] + 0.5 * dt * dt * self.a[i];
-            let u_fs = self.u_fs[i] * self.inverse_count[i];
-            self.u_next[i] = if self.inverse_mass[i] == 0.0 {
-                0.0
-            } else {
-                theta * u_fs + (1.0 - theta) * u_cd
-            };
+            self.u_next[i] = self.free[i]
+                * (theta * self.u_fs[i] * self.inverse_count[i] + (1.0 - theta) * u_cd);
         }
         std::mem::swap(&mut self.u, &mut self.u_next);
+        // 4. New accelerations (element forces carried node to node), trapezoidal velocities.
         let t_next = t + dt;
-        for i in (0..n).filter(|&i| self.loaded[i]) {
-            self.force_next[i] = model.external_force_at(i, t_next);
+        for &node in &self.loaded_nodes {
+            self.force_next[node] = model.external_force_at(node, t_next);
         }
-        let (mut kinetic, mut strain) = (0.0, 0.0);
-        for i in 0..n {
-            let a_next =
-                self.inverse_mass[i] * (self.force_next[i] + model.internal_force_at(&self.u, i));
-            self.v[i] += 0.5 * dt * (self.a[i] + a_next);
-            self.a[i] = a_next;
-            kinetic += self.mass[i] * self.v[i] * self.v[i];
-            if i + 1 < n {
-                let du = self.u[i + 1] - self.u[i];
-                strain += model.stiffness()[i] * du * du;
-            }
+        let k = model.stiffness();
+        let (mut kinetic, mut strain, mut left) = (0.0, 0.0, 0.0);
+        let mut node = |i: usize, right: f64, this: &mut Self| {
+            let a_next = this.inverse_mass[i] * (this.force_next[i] + right - left);
+            left = right;
+            this.v[i] += 0.5 * dt * (this.a[i] + a_next);
+            this.a[i] = a_next;
+            kinetic += this.mass[i] * this.v[i] * this.v[i];
+        };
+        for (i, &ki) in k.iter().enumerate() {
+            let du = self.u[i + 1] - self.u[i];
+            let right = ki * du;
+            strain += right * du;
+            node(i, right, self);
         }
+        node(n - 1, 0.0, self);
         StepEnergy {
             kinetic_staggered: 0.5 * kinetic,
             kinetic: 0.5 * kinetic,

@@ -614,14 +614,14 @@ impl<'r> Geometry<'r> {
         let length = optional(&raw.bar.length, "bar.length")?
             .or(layered_length)
             .unwrap_or(1.0);
-        if let Some(total) = layered_length {
-            if (total - length).abs() > 1e-12 * length {
-                return Err(src.error(
-                    None,
-                    "material.layers",
-                    format!("the layers add up to {total}, not the bar length {length}"),
-                ));
-            }
+        if let Some(total) = layered_length
+            && (total - length).abs() > 1e-12 * length
+        {
+            return Err(src.error(
+                None,
+                "material.layers",
+                format!("the layers add up to {total}, not the bar length {length}"),
+            ));
         }
         let equal_transit = match raw
             .mesh
@@ -821,8 +821,19 @@ pub(super) fn bar_of(
             let (e, rho) = g.material.at(x, g.length);
             (rho / e).sqrt()
         };
+        // Layer interfaces are where the slowness jumps: the travel-time quadrature splits there.
+        let breaks: Vec<f64> = match &g.material {
+            Material::Layers(layers) => layers
+                .iter()
+                .scan(0.0, |x, l| {
+                    *x += l.0;
+                    Some(*x)
+                })
+                .collect(),
+            Material::Fields { .. } => Vec::new(),
+        };
         let (mesh, transit) =
-            Mesh::equal_transit(g.length, elements, &slowness).map_err(mesh_error)?;
+            Mesh::equal_transit(g.length, elements, &slowness, &breaks).map_err(mesh_error)?;
         let (_, density) = g.element_fields(&mesh);
         Bar::equal_transit(mesh, transit, &density, &area).map_err(bar_error)
     } else {
