@@ -70,10 +70,14 @@ pub fn run_spectrum(case: &SpectrumCase) -> Result<SpectrumResult, InputError> {
                 .masses
                 .iter()
                 .map(|&k| {
-                    modes
+                    // Sorted: for RMM with beta > 5/2 Omega(kh) peaks inside the band, so mode
+                    // order and frequency order differ; the computed spectrum is sorted.
+                    let mut list: Vec<f64> = modes
                         .iter()
                         .map(|&n| bar.discrete_frequency(closed_form_kind(k), n))
-                        .collect()
+                        .collect();
+                    list.sort_by(f64::total_cmp);
+                    list
                 })
                 .collect();
             (modes, Some(continuum), Some(closed))

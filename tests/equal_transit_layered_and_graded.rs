@@ -70,6 +70,7 @@ fn equal_transit_cd_converges_at_first_order_to_the_graded_bar() {
                 "scheme = [\"cd\", \"park-global\", \"park-lts\"]",
                 "scheme = \"cd\"",
             ),
+            ("theta = 0.5\npark_variant = \"free\"\n", ""),
             ("courant = 0.5", "courant = 1.0"),
             ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
         ],

@@ -84,8 +84,8 @@ impl Mesh {
     /// `tau(x_i) = i T/N`, `tau(x) = int_0^x slowness`, so every element takes the same time
     /// `T/N` for a wave to cross (methods.md §4). `breaks` are the positions where the slowness
     /// jumps (layer interfaces): the travel time is integrated piece by piece between them with
-    /// 3-point Gauss-Legendre on 64 N panels (exact for piecewise-constant layers, ~1e-12 for
-    /// smooth ones) and inverted by bisection. Returns the mesh and the element transit `T/N`.
+    /// 3-point Gauss-Legendre on max(8192, 4N) panels (exact for piecewise-constant layers,
+    /// sixth order for smooth ones) and inverted by bisection. Returns the mesh and the element transit `T/N`.
     pub fn equal_transit(
         length: f64,
         elements: usize,
@@ -116,7 +116,9 @@ impl Mesh {
         cuts.sort_by(f64::total_cmp);
         cuts.insert(0, 0.0);
         cuts.push(length);
-        let target_width = length / (64 * elements) as f64;
+        // Panels independent of N for accuracy (at least 8192), growing with N only to resolve
+        // the node spacing: memory stays O(N).
+        let target_width = length / (8192.max(4 * elements)) as f64;
         let mut edges = vec![0.0];
         for piece in cuts.windows(2) {
             let panels = ((piece[1] - piece[0]) / target_width).ceil().max(1.0) as usize;

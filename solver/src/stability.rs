@@ -9,7 +9,7 @@
 //!   element estimate is too large. (Also reported: the closed-form infinite-mesh value.)
 //! - **Gershgorin** (nodal): LMM: row sums of `M^-1/2 K M^-1/2`; CMM/AMM: the pencil bound
 //!   `max_i sum_j |K_ij| / (M_ii - sum_{j != i} |M_ij|)` where `M` is diagonally dominant, else
-//!   `3/(1 + 2 beta)` times the lumped bound (since `M >= (1 + 2 beta)/3 LMM`); RMM: the row-sum
+//!   `1/min(1, (1 + 2 beta)/3)` times the lumped bound (since `M >= min(1, (1 + 2 beta)/3) LMM`); RMM: the row-sum
 //!   norm of `M^-1 K`. All conservative.
 //! - **exact**: the largest eigenvalue by bisection on the inertia of a shifted pencil (Sylvester;
 //!   Wilkinson, The Algebraic Eigenvalue Problem (1965), §5.37): the symmetric tridiagonal
@@ -60,7 +60,15 @@ impl CriticalStep {
         let gershgorin_bound = nodal_gershgorin(model, kind, operator);
         let (p, q) = operator.pencil(model);
         let n = p.order();
-        let mut hi = gershgorin_bound * (1.0 + 1e-12);
+        // Start from the Gershgorin bound and make sure it is above the spectrum (doubling),
+        // so the bisection never depends on the bound being right.
+        let mut hi = gershgorin_bound.max(f64::MIN_POSITIVE) * (1.0 + 1e-12);
+        for _ in 0..64 {
+            if p.negative_pivots_of_shifted(&q, hi) == n {
+                break;
+            }
+            hi *= 2.0;
+        }
         let mut lo = 0.0_f64;
         for _ in 0..200 {
             let mid = 0.5 * (lo + hi);
@@ -108,7 +116,13 @@ impl CriticalStep {
 fn nodal_gershgorin(model: &Model, kind: MassKind, operator: &MassOperator) -> f64 {
     let (diag, off) = scaled_stiffness(model);
     let lumped = gershgorin_upper_bound(&diag, &off);
-    let (k, _) = operator.pencil(model);
+    // The stiffness with fixed rows and columns deleted (the (K, M) pencil of the lumped mass;
+    // the RMM pencil is (M^-1 K M^-1, M^-1), not (K, .)).
+    let (k, _) = MassOperator::Diagonal {
+        inverse: model.inverse_mass().to_vec(),
+        mass: model.nodal_mass().to_vec(),
+    }
+    .pencil(model);
     let n = k.order();
     let row_sum = |i: usize| -> f64 {
         (i.saturating_sub(1)..=(i + 1).min(n - 1))
@@ -122,7 +136,9 @@ fn nodal_gershgorin(model: &Model, kind: MassKind, operator: &MassOperator) -> f
                 MassKind::Averaged { beta } => beta,
                 _ => 0.0,
             };
-            let fallback = 3.0 / (1.0 + 2.0 * beta) * lumped;
+            // M >= min(1, (1 + 2 beta)/3) LMM element by element (element eigenvalues m/2 and
+            // m(1 + 2 beta)/6 against m/2), so lambda_max <= lumped / min(1, (1 + 2 beta)/3).
+            let fallback = lumped / ((1.0 + 2.0 * beta) / 3.0).min(1.0);
             let mut bound = 0.0_f64;
             for i in (0..n).filter(|&i| !fixed[i]) {
                 let left = if i > 0 { matrix.off[i - 1].abs() } else { 0.0 };

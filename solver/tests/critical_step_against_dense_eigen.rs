@@ -2,7 +2,8 @@
 //! eq. 5), solved densely by nalgebra's symmetric eigen-decomposition of M^-1/2 K M^-1/2 — an
 //! independent route to omega_max.
 //!
-//! Proves: the Sturm-bisection omega_max equals the dense eigen solution to 1e-12 relative on
+//! Proves: the bisection omega_max equals the dense eigen solution (1e-12 lumped, 1e-9 every mass
+//! kind with beta from 0 to 3 and SI-scale data) on
 //! graded, geometric and random meshes with every support combination, and the element
 //! (Fried) and Gershgorin estimates are conservative on all of them.
 
@@ -111,6 +112,88 @@ fn sturm_bisection_equals_dense_eigen_and_estimates_are_conservative() {
                 c.element <= c.exact && c.gershgorin <= c.exact,
                 "{name} {left:?}-{right:?}: {c:?}"
             );
+        }
+    }
+}
+
+/// Every mass kind, beta well outside [0, 1], heavy and light densities, SI-like scales: the
+/// bisection's omega_max equals the dense eigen-solution (an independent route, `spectrum`), and
+/// Gershgorin (all kinds) and Fried (assembled masses) are conservative against the dense value.
+#[test]
+fn every_mass_kind_matches_dense_eigen_and_estimates_are_conservative() {
+    use courant_solver::spectrum::angular_frequencies;
+    use courant_solver::{MassKind, MassOperator};
+    let mut kinds = vec![MassKind::Lumped, MassKind::Consistent];
+    for beta in [0.0, 0.5, 1.0, 1.5, 3.0] {
+        kinds.push(MassKind::Averaged { beta });
+        kinds.push(MassKind::Reciprocal { beta });
+    }
+    let bars = [
+        Bar::new(
+            Mesh::uniform(10.0, 10).unwrap(),
+            &Field::Constant(2.1e11),
+            &Field::Constant(7850.0),
+            &Field::Constant(0.01),
+        )
+        .unwrap(),
+        Bar::new(
+            Mesh::uniform(1.0, 1).unwrap(),
+            &Field::Constant(1.0),
+            &Field::Constant(100.0),
+            &Field::Constant(1.0),
+        )
+        .unwrap(),
+        Bar::new(
+            Mesh::uniform(1.0, 2).unwrap(),
+            &Field::Constant(1.0),
+            &Field::Constant(1.0),
+            &Field::Constant(1.0),
+        )
+        .unwrap(),
+        Bar::new(
+            Mesh::geometric(1.0, 30, 1.1).unwrap(),
+            &Field::Linear {
+                left: 16.0,
+                right: 1.0,
+            },
+            &Field::Linear {
+                left: 1.0,
+                right: 30.0,
+            },
+            &Field::Constant(1.0),
+        )
+        .unwrap(),
+    ];
+    for (b, bar) in bars.iter().enumerate() {
+        for (left, right) in [
+            (Support::Free, Support::Fixed),
+            (Support::Free, Support::Free),
+            (Support::Fixed, Support::Free),
+        ] {
+            let model = Model::unloaded(bar.clone(), Supports { left, right });
+            for &kind in &kinds {
+                let op = MassOperator::new(&model, kind).unwrap();
+                let c = CriticalStep::of(&model, kind, &op);
+                let dense = *angular_frequencies(&model, kind).unwrap().last().unwrap();
+                assert!(
+                    (c.omega_max - dense).abs() <= 1e-9 * dense,
+                    "bar {b} {left:?}-{right:?} {kind:?}: bisection {} vs dense {dense}",
+                    c.omega_max
+                );
+                let dt_dense = 2.0 / dense;
+                assert!(
+                    c.gershgorin <= dt_dense * (1.0 + 1e-12),
+                    "bar {b} {kind:?}: Gershgorin {} > {dt_dense}",
+                    c.gershgorin
+                );
+                if kind.element_bound_holds() {
+                    assert!(
+                        c.element <= dt_dense * (1.0 + 1e-12),
+                        "bar {b} {kind:?}: element {} > {dt_dense}",
+                        c.element
+                    );
+                }
+            }
         }
     }
 }

@@ -70,9 +70,10 @@ pub(super) fn build(
         ));
     }
     let mut cases = Vec::new();
-    for label in study.masses.get_ref().values() {
+    for raw_label in study.masses.get_ref().values() {
+        let label = raw_label.trim();
         for &co in &courants {
-            let (mass, fourth_order) = match label.trim() {
+            let (mass, fourth_order) = match label {
                 "amm(4th)" | "rmm(4th)" => {
                     let beta = if label.starts_with("amm") {
                         closed::fourth_order_beta_averaged(co)

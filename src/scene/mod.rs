@@ -307,6 +307,10 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             .map(|c| c.name.clone())
             .chain(dispersion.iter().map(|c| c.name.clone()))
             .collect();
+        let mut seen = std::collections::HashSet::new();
+        if let Some(dup) = names.iter().find(|n| !seen.insert(*n)) {
+            return Err(src.error(None, kind, format!("case {dup} appears twice")));
+        }
         let expectations = raw
             .expectations
             .iter()
@@ -607,6 +611,27 @@ impl<'r> Geometry<'r> {
                 return Err(src.error(None, "material", "needs `modulus` (or `layers`)"));
             }
         };
+        if let Material::Fields { modulus, density } = &material {
+            for (key, f) in [("material.modulus", modulus), ("material.density", density)] {
+                let ends = match f {
+                    Field::Constant(c) => [*c, *c],
+                    Field::Linear { left, right } => [*left, *right],
+                    Field::PerElement(_) => [1.0, 1.0],
+                };
+                if let Some(bad) = ends.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
+                    let span = if key == "material.modulus" {
+                        raw.material.modulus.as_ref()
+                    } else {
+                        raw.material.density.as_ref()
+                    };
+                    return Err(src.error(
+                        span.map(|s| s.span()),
+                        key,
+                        format!("{bad} must be positive and finite (along the whole bar)"),
+                    ));
+                }
+            }
+        }
         let layered_length = match &material {
             Material::Layers(l) => Some(l.iter().map(|x| x.0).sum::<f64>()),
             Material::Fields { .. } => None,
@@ -811,7 +836,8 @@ pub(super) fn bar_of(
             InputError::ElementProperty { field: "area", .. } => {
                 ("bar.area", raw.bar.area.as_ref().map(|d| d.span()))
             }
-            _ => ("material", material_span.clone()),
+            _ if raw.material.modulus.is_some() => ("material.modulus", material_span.clone()),
+            _ => ("material.layers", material_span.clone()),
         };
         src.error(span, key, e.to_string())
     };
@@ -832,6 +858,24 @@ pub(super) fn bar_of(
                 .collect(),
             Material::Fields { .. } => Vec::new(),
         };
+        if let Material::Layers(layers) = &g.material {
+            // Exact layered models need every interface on a node: each layer must take a whole
+            // number of element transit times.
+            let total = g.transit_time();
+            for (k, &(thickness, e, rho)) in layers.iter().enumerate() {
+                let share = thickness * (rho / e).sqrt() / total * elements as f64;
+                if (share - share.round()).abs() > 1e-6 * share.max(1.0) || share.round() < 1.0 {
+                    return Err(src.error(
+                        raw.mesh.spacing.as_ref().map(|s| s.span()),
+                        "mesh.spacing",
+                        format!(
+                            "equal-transit spacing puts {share:.6} elements in layer {k} with N = {elements}: choose N so that \
+                             every layer holds a whole number of elements (layer transit fractions must times N be integers)"
+                        ),
+                    ));
+                }
+            }
+        }
         let (mesh, transit) =
             Mesh::equal_transit(g.length, elements, &slowness, &breaks).map_err(mesh_error)?;
         let (_, density) = g.element_fields(&mesh);
@@ -992,6 +1036,15 @@ impl Stepping {
                 )),
             })
             .collect::<Result<Vec<_>, _>>()?;
+        if !schemes.iter().any(|s| s.1.is_some())
+            && (raw.theta.is_some() || raw.park_variant.is_some())
+        {
+            return Err(src.error(
+                scheme_span,
+                "integrator",
+                "`theta` and `park_variant` apply only to the park-lts and park-global schemes",
+            ));
+        }
         if schemes.iter().any(|s| s.1.is_some()) && masses.iter().any(|m| *m != MassKind::Lumped) {
             return Err(src.error(
                 scheme_span,

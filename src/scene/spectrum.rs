@@ -102,6 +102,16 @@ pub(super) fn build(
                 }
                 _ => None,
             };
+            if bar.node_count() < 3
+                && supports.left == Support::Fixed
+                && supports.right == Support::Fixed
+            {
+                return Err(fail(
+                    raw.mesh.elements.span(),
+                    "mesh.elements",
+                    format!("{end} with {elements} element(s) has no free node"),
+                ));
+            }
             let model = Model::unloaded(bar, supports);
             cases.push(SpectrumCase {
                 name: format!("{end}-n{elements}"),
