@@ -13,6 +13,7 @@
 pub mod banded;
 pub mod bar;
 pub mod central_difference;
+pub mod contact;
 pub mod error;
 pub mod fixtures;
 pub mod kernel;

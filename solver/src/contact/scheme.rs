@@ -1,0 +1,190 @@
+//! The contact schemes and their O(1) level update (derivations in the module docs of
+//! [`crate::contact`]).
+
+use super::problem::ContactProblem;
+use crate::error::InputError;
+
+/// Nodal penalty parameters in physical units: stiffness `k_s = eps_s A` and mass
+/// `m_p = eps_m A` (methods.md §7).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Penalty {
+    /// `k_s` (force per length).
+    pub stiffness: f64,
+    /// `m_p` (mass); `M_p = m_p N N^T`.
+    pub mass: f64,
+}
+
+/// How the mass penalty is given when building a [`Penalty`] from `beta_s`
+/// ([`ContactProblem::penalty`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MassPenalty {
+    /// No mass penalty (`beta_m = 0`).
+    None,
+    /// Penalty ratio `r = beta_s/(4 beta_m)`; r = 1 is neutral (methods.md §7).
+    Ratio(f64),
+    /// `beta_m = m_p/(rho A h)` directly.
+    Dimensionless(f64),
+}
+
+/// A contact scheme. All run on the lumped central-difference bulk (half-step form).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ContactScheme {
+    /// (a) Central difference with the stiffness penalty `k_s` only.
+    Penalty {
+        /// `k_s`.
+        stiffness: f64,
+    },
+    /// (b) Central difference with bipenalty: `K_p` and `M_p`, the pair block of `M + M_p`
+    /// solved in closed form when active. r <= 1 keeps the contact-free step for every
+    /// `beta_s`; large `beta_s` makes the contact chatter (module docs, "Energy").
+    Bipenalty(Penalty),
+    /// (c) The seed's stabilized predictor-corrector scheme (bulk predicted with M only, contact
+    /// from the predicted state corrected with `(M + M_p)^-1`). Stable while
+    /// `k_s dt^2/(m_c + m_p) <= 1`.
+    PredictorCorrector(Penalty),
+    /// (d) Forward-increment Lagrange multiplier method (Carpenter, Taylor and Katona 1991): the
+    /// predicted gap at `t^{n+1}` is made exactly zero if it would be negative.
+    LagrangeMultiplier,
+}
+
+impl ContactScheme {
+    /// Short label: `cd-penalty`, `cd-bipenalty`, `predictor-corrector`, `lagrange-multiplier`.
+    pub fn label(&self) -> &'static str {
+        match self {
+            ContactScheme::Penalty { .. } => "cd-penalty",
+            ContactScheme::Bipenalty(_) => "cd-bipenalty",
+            ContactScheme::PredictorCorrector(_) => "predictor-corrector",
+            ContactScheme::LagrangeMultiplier => "lagrange-multiplier",
+        }
+    }
+
+    /// The penalties the scheme uses (zero for the Lagrange multiplier method, `m_p = 0` for
+    /// penalty only).
+    pub fn penalty(&self) -> Penalty {
+        match *self {
+            ContactScheme::Penalty { stiffness } => Penalty {
+                stiffness,
+                mass: 0.0,
+            },
+            ContactScheme::Bipenalty(p) | ContactScheme::PredictorCorrector(p) => p,
+            ContactScheme::LagrangeMultiplier => Penalty {
+                stiffness: 0.0,
+                mass: 0.0,
+            },
+        }
+    }
+
+    /// True for the central-difference penalty schemes (a) and (b), whose contact-active
+    /// system `(K + K_p, M + M_p)` limits the step.
+    pub fn is_central_difference(&self) -> bool {
+        matches!(
+            self,
+            ContactScheme::Penalty { .. } | ContactScheme::Bipenalty(_)
+        )
+    }
+
+    /// Check the parameters: `k_s` positive and finite, `m_p` finite and not negative.
+    ///
+    /// # Errors
+    /// [`InputError::Parameter`] naming the penalty and the rule.
+    pub fn validate(&self) -> Result<(), InputError> {
+        if matches!(self, ContactScheme::LagrangeMultiplier) {
+            return Ok(());
+        }
+        let p = self.penalty();
+        crate::mesh::positive("penalty stiffness k_s", p.stiffness)?;
+        if !(p.mass.is_finite() && p.mass >= 0.0) {
+            return Err(InputError::Parameter {
+                field: "penalty mass m_p",
+                value: p.mass,
+                rule: "must be finite and not negative",
+            });
+        }
+        Ok(())
+    }
+}
+
+/// What the contact did at one level.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct LevelUpdate {
+    /// `g^n = N^T u^n + g0`.
+    pub gap: f64,
+    /// Whether the scheme applied contact at this level.
+    pub active: bool,
+    /// Contact momentum `J^n` along N (compression positive).
+    pub impulse: f64,
+    /// `F^n = J^n/(w_n dt)`.
+    pub force: f64,
+}
+
+/// The level-n data at the contact node(s), in the order of N's entries.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct LevelInput {
+    /// `w_n`: 1/2 at the start level, 1 after.
+    pub weight: f64,
+    /// `u^n` at the contact nodes.
+    pub displacement: [f64; 2],
+    /// `v^{n-1/2}` (`v^0` at the start) at the contact nodes.
+    pub velocity: [f64; 2],
+    /// Bulk residual `F^n - (K u^n)` at the contact nodes.
+    pub residual: [f64; 2],
+}
+
+/// The contact update of one level (module docs of [`crate::contact`]).
+pub(crate) fn level_update(
+    scheme: &ContactScheme,
+    problem: &ContactProblem,
+    dt: f64,
+    input: &LevelInput,
+) -> LevelUpdate {
+    let nodes = problem.contact_nodes();
+    let (mut approach, mut n_a, mut n_v, mut s) = (0.0, 0.0, 0.0, 0.0);
+    for (i, c) in nodes.iter().enumerate() {
+        approach += c.sign * input.displacement[i];
+        n_a += c.sign * input.residual[i] / c.mass;
+        n_v += c.sign * input.velocity[i];
+        s += 1.0 / c.mass;
+    }
+    let gap = approach + problem.initial_gap();
+    let w = input.weight;
+    let (active, impulse) = match *scheme {
+        ContactScheme::Penalty { .. } | ContactScheme::Bipenalty(_) => {
+            if gap < 0.0 {
+                let Penalty {
+                    stiffness: ks,
+                    mass: mp,
+                } = scheme.penalty();
+                let n_a0 = n_a - ks * gap * s;
+                let lambda = -ks * gap - mp * n_a0 / (1.0 + mp * s);
+                (true, w * dt * lambda)
+            } else {
+                (false, 0.0)
+            }
+        }
+        ContactScheme::PredictorCorrector(Penalty {
+            stiffness: ks,
+            mass: mp,
+        }) => {
+            let predicted = gap + dt * (n_v + w * dt * n_a);
+            if predicted < 0.0 {
+                (true, -dt * ks * predicted / (1.0 + mp * s))
+            } else {
+                (false, 0.0)
+            }
+        }
+        ContactScheme::LagrangeMultiplier => {
+            let predicted = gap + dt * (n_v + w * dt * n_a);
+            if predicted < 0.0 {
+                (true, -predicted / (dt * s))
+            } else {
+                (false, 0.0)
+            }
+        }
+    };
+    LevelUpdate {
+        gap,
+        active,
+        impulse,
+        force: impulse / (w * dt),
+    }
+}
