@@ -14,7 +14,14 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         include_str!("../scenes/fig2_reversed.toml"),
     ),
     ("layered", include_str!("../scenes/layered.toml")),
+    ("fig3", include_str!("../scenes/fig3.toml")),
+    ("fig5", include_str!("../scenes/fig5.toml")),
     ("fig6", include_str!("../scenes/fig6.toml")),
+    ("contact_wall", include_str!("../scenes/contact_wall.toml")),
+    (
+        "contact_unequal",
+        include_str!("../scenes/contact_unequal.toml"),
+    ),
     ("dispersion", include_str!("../scenes/dispersion.toml")),
 ];
 

@@ -1,10 +1,8 @@
 //! Checking a scene's expectations against its results.
 
-use crate::dispersion::DispersionResult;
 use crate::run::{CaseResult, Status};
 use crate::scene::Study;
 use crate::scene::{Bound, Expectation, Metric, Scene};
-use crate::spectra::SpectrumResult;
 use crate::table::Cell;
 
 /// What was measured for an expectation.
@@ -84,16 +82,16 @@ impl Verdict {
 }
 
 /// Evaluate every expectation of `scene` on the matching results.
-pub fn evaluate(
-    scene: &Scene,
-    results: &[CaseResult],
-    spectra: &[SpectrumResult],
-    dispersion: &[DispersionResult],
-) -> Vec<Verdict> {
+pub fn evaluate(scene: &Scene, outcome: &crate::SceneOutcome) -> Vec<Verdict> {
+    let (results, spectra, dispersion) = (&outcome.results, &outcome.spectra, &outcome.dispersion);
     let mut verdicts = Vec::new();
     for expectation in &scene.expectations {
         let wanted = |case: &String| expectation.cases.contains(case);
-        let measured: Vec<(String, Measured)> = match expectation.metric.study() {
+        let study = match expectation.metric {
+            Metric::Diverged if !outcome.contact.is_empty() => Study::Contact,
+            m => m.study(),
+        };
+        let measured: Vec<(String, Measured)> = match study {
             Study::Spectrum => spectra
                 .iter()
                 .filter(|r| wanted(&r.case))
@@ -121,6 +119,26 @@ pub fn evaluate(
                     };
                     (r.case.name.clone(), value)
                 })
+                .collect(),
+            Study::Contact => outcome
+                .contact
+                .iter()
+                .filter(|r| wanted(&r.case))
+                .map(|r| {
+                    let value = match expectation.metric {
+                        Metric::PlateauDeviation => Measured::Value(r.plateau_deviation),
+                        Metric::ImpulseError => Measured::Value(r.impulse_error),
+                        Metric::DurationError => Measured::Value(r.duration_error),
+                        Metric::EnergyRatio => Measured::Value(r.energy_ratio),
+                        _ => Measured::Flag(r.diverged.is_some()),
+                    };
+                    (r.case.clone(), value)
+                })
+                .collect(),
+            Study::ContactStability => outcome
+                .sweeps
+                .iter()
+                .map(|s| ("stability".to_string(), Measured::Value(s.deviation())))
                 .collect(),
             Study::TimeStepping => results
                 .iter()
@@ -181,8 +199,13 @@ fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
         Metric::EnergyLost => Measured::Value(result.energy_lost()),
         Metric::EnergyBalance => Measured::Value(result.energy.relative_balance_error()),
         Metric::Diverged => Measured::Flag(matches!(result.status, Status::Diverged(_))),
-        Metric::ClosedFormDeviation | Metric::DispersionDeviation | Metric::PhaseErrorOrder => {
-            Measured::Missing("not a time-stepping metric".into())
-        }
+        Metric::ClosedFormDeviation
+        | Metric::DispersionDeviation
+        | Metric::PhaseErrorOrder
+        | Metric::PlateauDeviation
+        | Metric::ImpulseError
+        | Metric::DurationError
+        | Metric::EnergyRatio
+        | Metric::CourantDeviation => Measured::Missing("not a time-stepping metric".into()),
     }
 }

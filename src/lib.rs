@@ -7,6 +7,7 @@
 //! writes named CSV tables ([`results`], [`table`], [`write`]).
 
 pub mod builtin;
+pub mod contact_study;
 pub mod dispersion;
 pub mod expect;
 pub mod metrics;

@@ -138,6 +138,35 @@ fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
             );
         }
     }
+    if !outcome.contact.is_empty() {
+        println!(
+            "  {:<32} {:>8} {:>8} {:>10} {:>10} {:>10} {:>10}  status",
+            "case", "Co", "Co_crit", "plateau", "impulse", "duration", "energy"
+        );
+        for c in &outcome.contact {
+            let status = match &c.diverged {
+                None => "completed".to_string(),
+                Some(d) => format!("DIVERGED: {d}"),
+            };
+            println!(
+                "  {:<32} {:>8.4} {:>8.4} {:>10.3e} {:>10.3e} {:>10.3e} {:>10.4}  {status}",
+                c.case,
+                c.run.courant,
+                c.run.critical.critical_courant(),
+                c.plateau_deviation,
+                c.impulse_error,
+                c.duration_error,
+                c.energy_ratio
+            );
+        }
+    }
+    for s in &outcome.sweeps {
+        println!(
+            "  stability sweep: {} points, largest deviation from the closed form {:.3e}",
+            s.rows.len(),
+            s.deviation()
+        );
+    }
     print_cases(&outcome.results);
     for v in &outcome.verdicts {
         println!("  {}", v.describe());

@@ -239,6 +239,31 @@ pub fn scene_files(outcome: &crate::SceneOutcome) -> Vec<(String, String)> {
             crate::spectra::spectrum_table(s).to_csv(full),
         ));
     }
+    for c in &outcome.contact {
+        files.push((
+            format!("{}.csv", c.case),
+            crate::contact_study::force_table(c).to_csv(full),
+        ));
+    }
+    if !outcome.contact.is_empty() {
+        files.push((
+            "summary.csv".into(),
+            crate::contact_study::contact_summary_table(&outcome.contact).to_csv(full),
+        ));
+    }
+    for sweep in &outcome.sweeps {
+        files.push((
+            "stability.csv".into(),
+            crate::contact_study::sweep_table(sweep).to_csv(full),
+        ));
+    }
+    if !outcome.contact.is_empty() || !outcome.sweeps.is_empty() {
+        files.push((
+            "expectations.csv".into(),
+            expectations_table(verdicts).to_csv(full),
+        ));
+        return files;
+    }
     if !outcome.spectra.is_empty() {
         files.push((
             "summary.csv".into(),

@@ -198,6 +198,10 @@ pub struct SceneOutcome {
     pub spectra: Vec<crate::spectra::SpectrumResult>,
     /// Dispersion case results, in case order.
     pub dispersion: Vec<crate::dispersion::DispersionResult>,
+    /// Contact case results, in case order.
+    pub contact: Vec<crate::contact_study::ContactResult>,
+    /// Contact stability sweeps.
+    pub sweeps: Vec<crate::contact_study::SweepResult>,
     /// Verdicts of the scene's expectations.
     pub verdicts: Vec<crate::expect::Verdict>,
 }
@@ -226,11 +230,24 @@ pub fn run_scene(scene: &crate::Scene) -> Result<SceneOutcome, RunError> {
         .iter()
         .map(crate::dispersion::run_dispersion)
         .collect::<Result<Vec<_>, _>>()?;
-    let verdicts = crate::expect::evaluate(scene, &results, &spectra, &dispersion);
-    Ok(SceneOutcome {
+    let contact = scene
+        .contact
+        .iter()
+        .map(crate::contact_study::run_contact)
+        .collect::<Result<Vec<_>, _>>()?;
+    let sweeps = scene
+        .contact_sweeps
+        .iter()
+        .map(crate::contact_study::run_sweep)
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut outcome = SceneOutcome {
         results,
         spectra,
         dispersion,
-        verdicts,
-    })
+        contact,
+        sweeps,
+        verdicts: Vec::new(),
+    };
+    outcome.verdicts = crate::expect::evaluate(scene, &outcome);
+    Ok(outcome)
 }

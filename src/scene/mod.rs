@@ -4,6 +4,7 @@
 //! [`schema`]. A list of Courant numbers (or time steps) expands into one case each. Validation
 //! happens here, before anything runs: a scene that parses is a scene that can run.
 
+pub mod contact;
 pub mod dispersion;
 pub mod error;
 pub mod schema;
@@ -91,6 +92,10 @@ pub struct Scene {
     pub spectra: Vec<spectrum::SpectrumCase>,
     /// The dispersion cases (dispersion scenes only).
     pub dispersion: Vec<dispersion::DispersionCase>,
+    /// The contact cases (contact scenes only).
+    pub contact: Vec<contact::ContactCase>,
+    /// The contact stability sweeps (contact stability scenes only).
+    pub contact_sweeps: Vec<contact::StabilitySweep>,
     /// Expectations every run is checked against.
     pub expectations: Vec<Expectation>,
 }
@@ -143,6 +148,17 @@ pub enum Metric {
     DispersionDeviation,
     /// Dispersion scenes: smallest observed order of the phase error between modes `n` and `2n`.
     PhaseErrorOrder,
+    /// Contact: largest `|F - F1|/F1` inside the first plateau (10 % to 90 % of it).
+    PlateauDeviation,
+    /// Contact: `|impulse - exact| / exact`.
+    ImpulseError,
+    /// Contact: `|duration - exact| / exact` (duration from the half-plateau crossings).
+    DurationError,
+    /// Contact: energy of the real masses at the end over the initial energy.
+    EnergyRatio,
+    /// Contact stability: largest relative deviation of the solver's critical Courant number
+    /// from the closed form.
+    CourantDeviation,
 }
 
 /// The kind of study a scene is; each metric belongs to one.
@@ -154,6 +170,10 @@ pub enum Study {
     Spectrum,
     /// Single-mode dispersion runs.
     Dispersion,
+    /// Contact-impact runs.
+    Contact,
+    /// Contact stability sweep.
+    ContactStability,
 }
 
 impl Study {
@@ -163,6 +183,8 @@ impl Study {
             Study::TimeStepping => "time-stepping",
             Study::Spectrum => "spectrum",
             Study::Dispersion => "dispersion",
+            Study::Contact => "contact",
+            Study::ContactStability => "contact stability",
         }
     }
 }
@@ -182,6 +204,11 @@ impl Metric {
             Metric::ClosedFormDeviation => "closed_form_deviation",
             Metric::DispersionDeviation => "dispersion_deviation",
             Metric::PhaseErrorOrder => "phase_error_order",
+            Metric::PlateauDeviation => "plateau_deviation",
+            Metric::ImpulseError => "impulse_error",
+            Metric::DurationError => "duration_error",
+            Metric::EnergyRatio => "energy_ratio",
+            Metric::CourantDeviation => "courant_deviation",
         }
     }
 
@@ -198,6 +225,11 @@ impl Metric {
             Metric::ClosedFormDeviation,
             Metric::DispersionDeviation,
             Metric::PhaseErrorOrder,
+            Metric::PlateauDeviation,
+            Metric::ImpulseError,
+            Metric::DurationError,
+            Metric::EnergyRatio,
+            Metric::CourantDeviation,
         ]
         .into_iter()
         .find(|m| m.name() == s)
@@ -208,6 +240,11 @@ impl Metric {
         match self {
             Metric::ClosedFormDeviation => Study::Spectrum,
             Metric::DispersionDeviation | Metric::PhaseErrorOrder => Study::Dispersion,
+            Metric::PlateauDeviation
+            | Metric::ImpulseError
+            | Metric::DurationError
+            | Metric::EnergyRatio => Study::Contact,
+            Metric::CourantDeviation => Study::ContactStability,
             _ => Study::TimeStepping,
         }
     }
@@ -255,6 +292,11 @@ impl Scene {
     /// output directory.
     pub fn parse(name: &str, file: &str, text: &str) -> Result<Scene, SceneError> {
         let src = Source { file, text };
+        let table: toml::Table = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
+        if table.contains_key("contact") || table.contains_key("contact_stability") {
+            let raw: RawContactScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
+            return build_contact(name, &src, raw);
+        }
         let raw: RawScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
         build(name, &src, raw)
     }
@@ -323,6 +365,8 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             cases: Vec::new(),
             spectra,
             dispersion,
+            contact: Vec::new(),
+            contact_sweeps: Vec::new(),
             expectations,
         });
     }
@@ -461,6 +505,59 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
         cases,
         spectra: Vec::new(),
         dispersion: Vec::new(),
+        contact: Vec::new(),
+        contact_sweeps: Vec::new(),
+        expectations,
+    })
+}
+
+fn build_contact(name: &str, src: &Source, raw: RawContactScene) -> Result<Scene, SceneError> {
+    for (value, key) in [
+        (&raw.scene.description, "scene.description"),
+        (&raw.scene.source, "scene.source"),
+    ] {
+        if value.get_ref().trim().is_empty() {
+            return Err(src.error(Some(value.span()), key, "must not be empty"));
+        }
+    }
+    let (cases, sweeps, study) = match (&raw.contact, &raw.contact_stability) {
+        (Some(study), None) => (
+            contact::cases(src, &raw, study)?,
+            Vec::new(),
+            Study::Contact,
+        ),
+        (None, Some(study)) => (
+            Vec::new(),
+            vec![contact::sweep(src, study)?],
+            Study::ContactStability,
+        ),
+        _ => {
+            return Err(src.error(
+                None,
+                "contact",
+                "a contact scene has either [contact] or [contact_stability], not both",
+            ));
+        }
+    };
+    let names: Vec<String> = if study == Study::Contact {
+        cases.iter().map(|c| c.name.clone()).collect()
+    } else {
+        vec!["stability".into()]
+    };
+    let expectations = raw
+        .expectations
+        .iter()
+        .map(|e| expectation(src, e, &names, false, study, &[], 1.0))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Scene {
+        name: name.to_string(),
+        description: raw.scene.description.get_ref().clone(),
+        source: raw.scene.source.get_ref().clone(),
+        cases: Vec::new(),
+        spectra: Vec::new(),
+        dispersion: Vec::new(),
+        contact: cases,
+        contact_sweeps: sweeps,
         expectations,
     })
 }
@@ -1275,7 +1372,7 @@ fn expectation(
     let fail = |msg: String| src.error(Some(spanned.span()), "expect", msg);
     let metric = Metric::parse(&raw.metric).ok_or_else(|| {
         fail(format!(
-            "metric = \"{}\" is not one of l1, l2, linf, overshoot, energy_balance, energy_lost, tv_ratio, diverged, closed_form_deviation, dispersion_deviation, phase_error_order",
+            "metric = \"{}\" is not one of l1, l2, linf, overshoot, energy_balance, energy_lost, tv_ratio, diverged, closed_form_deviation, dispersion_deviation, phase_error_order, plateau_deviation, impulse_error, duration_error, energy_ratio, courant_deviation",
             raw.metric
         ))
     })?;
@@ -1285,7 +1382,9 @@ fn expectation(
             metric.name()
         )));
     }
-    if metric.study() != study {
+    let applies =
+        metric.study() == study || (metric == Metric::Diverged && study == Study::Contact);
+    if !applies {
         return Err(fail(format!(
             "metric \"{}\" does not apply to a {} scene",
             metric.name(),

@@ -375,3 +375,80 @@ pub struct RawDispersion {
     /// Mode numbers `n` of the free-free bar (`kh = n pi/N`).
     pub modes: Spanned<OneOrManyInts>,
 }
+
+/// One bar of a contact problem.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawContactBar {
+    pub length: f64,
+    pub elements: i64,
+    /// Default 1.
+    pub modulus: Option<f64>,
+    /// Default 1.
+    pub density: Option<f64>,
+}
+
+/// A contact-impact study: a striker at `velocity` onto a target bar or a rigid wall.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawContact {
+    /// `two-bars` (striker onto target, far ends free) or `wall` (striker onto a rigid wall).
+    pub problem: Spanned<String>,
+    /// The moving bar.
+    pub striker: Spanned<RawContactBar>,
+    /// The bar at rest (`two-bars` only).
+    pub target: Option<Spanned<RawContactBar>>,
+    /// Impact velocity, positive.
+    pub velocity: Spanned<f64>,
+    /// Initial gap, default 0 (touching at t = 0).
+    pub gap: Option<Spanned<f64>>,
+    /// Schemes, one case each (with every `beta_s` for the penalty schemes): `cd-penalty`,
+    /// `cd-bipenalty`, `predictor-corrector`, `lagrange-multiplier`.
+    pub schemes: Spanned<OneOrManyStrings>,
+    /// Dimensionless penalty stiffness(es) `beta_s = k_s h/(E A)`.
+    pub beta_s: Option<Spanned<OneOrMany>>,
+    /// Penalty ratio `r = beta_s/(4 beta_m)` (default 1, the neutral ratio).
+    pub ratio: Option<Spanned<f64>>,
+    /// Dimensionless penalty mass `beta_m = m_p/(rho A h)`, instead of `ratio`.
+    pub beta_m: Option<Spanned<f64>>,
+    /// Courant number relative to the stiffest element.
+    pub courant: Spanned<f64>,
+    /// End time in transit times of the striker, `2 L1/c1` is one contact of equal bars.
+    pub end_time: Spanned<f64>,
+    /// Run above the critical step (default false).
+    #[serde(default)]
+    pub allow_unstable: bool,
+    /// Keep a sample every this many steps (default 1).
+    pub history_every: Option<Spanned<i64>>,
+}
+
+/// A contact stability sweep: the critical Courant number of a bar against a rigid wall
+/// versus `beta_s`, from the solver's eigenvalues beside the closed form.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawContactStability {
+    /// Elements of the bar (unit bar, E = rho = A = 1).
+    pub elements: Spanned<i64>,
+    /// `[min, max]` of the log-spaced `beta_s` grid.
+    pub beta_s_range: Spanned<[f64; 2]>,
+    /// Grid points.
+    pub points: Spanned<i64>,
+    /// Penalty ratios `r` of the bipenalty curves.
+    pub ratios: Spanned<Vec<f64>>,
+    /// Also the penalty-only curve (default true).
+    pub penalty_only: Option<bool>,
+}
+
+/// A contact scene: its bars are given in `[contact]`, or it is a `[contact_stability]` sweep.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawContactScene {
+    pub scene: RawHeader,
+    /// Default: `area = 1` (`length` is not used: each bar has its own).
+    #[serde(default)]
+    pub bar: RawBar,
+    pub contact: Option<RawContact>,
+    pub contact_stability: Option<RawContactStability>,
+    #[serde(default, rename = "expect")]
+    pub expectations: Vec<Spanned<RawExpect>>,
+}

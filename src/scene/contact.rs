@@ -1,0 +1,311 @@
+//! Contact scenes (the seed's Figs. 3-5): a striker onto a target bar or a rigid wall with the
+//! penalty, bipenalty, predictor-corrector and Lagrange-multiplier schemes, and the stability
+//! sweep of the critical Courant number against the penalty stiffness.
+
+use super::schema::{RawContact, RawContactBar, RawContactScene, RawContactStability};
+use super::{SceneError, Source};
+use courant_references::contact::{ImpactBar, ImpactForce};
+use courant_solver::contact::{ContactIntegrator, ContactProblem, ContactScheme, MassPenalty};
+use courant_solver::{Bar, End, Mesh, StabilityPolicy};
+use toml::Spanned;
+
+/// A case name, its scheme and its dimensionless penalties.
+type Variant = (String, ContactScheme, Option<(f64, f64)>);
+
+/// One contact case: a scheme (with one `beta_s` for the penalty schemes).
+#[derive(Debug, Clone)]
+pub struct ContactCase {
+    /// Case name, e.g. `predictor-corrector-bs25`.
+    pub name: String,
+    /// The problem.
+    pub problem: ContactProblem,
+    /// Scheme, step and stability policy.
+    pub integrator: ContactIntegrator,
+    /// Steps to run.
+    pub steps: usize,
+    /// Keep a sample every this many steps.
+    pub history_every: usize,
+    /// `(beta_s, beta_m)`, when the scheme has penalties.
+    pub penalty: Option<(f64, f64)>,
+    /// The analytic contact force of 1D wave theory (methods.md §7).
+    pub reference: ImpactForce,
+}
+
+/// A stability sweep (seed Fig. 3).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StabilitySweep {
+    /// Elements of the unit bar against the wall.
+    pub elements: usize,
+    /// The `beta_s` grid.
+    pub beta_s: Vec<f64>,
+    /// Penalty ratios `r`; `None` is the penalty-only curve.
+    pub ratios: Vec<Option<f64>>,
+}
+
+fn bar(
+    src: &Source,
+    spanned: &Spanned<RawContactBar>,
+    key: &str,
+    area: f64,
+) -> Result<(Bar, ImpactBar), SceneError> {
+    let raw = spanned.get_ref();
+    let fail = |msg: String| src.error(Some(spanned.span()), key, msg);
+    let (e, rho) = (raw.modulus.unwrap_or(1.0), raw.density.unwrap_or(1.0));
+    for (name, v) in [("length", raw.length), ("modulus", e), ("density", rho)] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(fail(format!("{name} = {v} must be positive and finite")));
+        }
+    }
+    if raw.elements < 1 {
+        return Err(fail(format!(
+            "elements = {} must be at least 1",
+            raw.elements
+        )));
+    }
+    let mesh = Mesh::uniform(raw.length, raw.elements as usize).map_err(|e| fail(e.to_string()))?;
+    let bar = Bar::homogeneous(mesh, e, rho, area).map_err(|e| fail(e.to_string()))?;
+    let impact =
+        ImpactBar::from_material(e, rho, area, raw.length).map_err(|e| fail(e.to_string()))?;
+    Ok((bar, impact))
+}
+
+/// Build the cases of a `[contact]` study.
+pub(super) fn cases(
+    src: &Source,
+    raw: &RawContactScene,
+    study: &RawContact,
+) -> Result<Vec<ContactCase>, SceneError> {
+    let area = match &raw.bar.area {
+        Some(a) => super::positive(src, a, "bar.area")?,
+        None => 1.0,
+    };
+    let velocity = super::positive(src, &study.velocity, "contact.velocity")?;
+    let gap = match &study.gap {
+        None => 0.0,
+        Some(g) if g.get_ref().is_finite() && *g.get_ref() >= 0.0 => *g.get_ref(),
+        Some(g) => {
+            return Err(src.error(
+                Some(g.span()),
+                "contact.gap",
+                format!("{} must be finite and not negative", g.get_ref()),
+            ));
+        }
+    };
+    let (striker, striker_impact) = bar(src, &study.striker, "contact.striker", area)?;
+    let (problem, reference) = match (study.problem.get_ref().as_str(), &study.target) {
+        ("two-bars", Some(target)) => {
+            let (target, target_impact) = bar(src, target, "contact.target", area)?;
+            let problem = ContactProblem::bar_impact(striker, target, velocity, gap)
+                .map_err(|e| src.error(Some(study.problem.span()), "contact", e.to_string()))?;
+            (
+                problem,
+                ImpactForce::new(striker_impact, target_impact, velocity),
+            )
+        }
+        ("two-bars", None) => {
+            return Err(src.error(
+                Some(study.problem.span()),
+                "contact.target",
+                "problem = \"two-bars\" needs a `target`",
+            ));
+        }
+        ("wall", None) => {
+            let problem = ContactProblem::wall_impact(striker, End::Right, velocity, gap)
+                .map_err(|e| src.error(Some(study.problem.span()), "contact", e.to_string()))?;
+            (problem, ImpactForce::rigid_wall(striker_impact, velocity))
+        }
+        ("wall", Some(t)) => {
+            return Err(src.error(
+                Some(t.span()),
+                "contact.target",
+                "a wall problem has no target",
+            ));
+        }
+        (other, _) => {
+            return Err(src.error(
+                Some(study.problem.span()),
+                "contact.problem",
+                format!("\"{other}\" is not one of two-bars, wall"),
+            ));
+        }
+    };
+    let reference =
+        reference.map_err(|e| src.error(Some(study.problem.span()), "contact", e.to_string()))?;
+    let courant = super::positive(src, &study.courant, "contact.courant")?;
+    let end = super::positive(src, &study.end_time, "contact.end_time")?;
+    let dt = courant * problem.stiffest_transit();
+    let steps_f = (end * striker_impact.transit_time() / dt).ceil();
+    if steps_f > 1e8 {
+        return Err(src.error(
+            Some(study.end_time.span()),
+            "contact.end_time",
+            format!("needs {steps_f:.2e} steps; at most 1e8"),
+        ));
+    }
+    let history_every = match &study.history_every {
+        None => 1,
+        Some(h) if *h.get_ref() >= 1 => *h.get_ref() as usize,
+        Some(h) => {
+            return Err(src.error(
+                Some(h.span()),
+                "contact.history_every",
+                format!("{} must be at least 1", h.get_ref()),
+            ));
+        }
+    };
+    let mass_penalty = match (&study.ratio, &study.beta_m) {
+        (Some(_), Some(b)) => {
+            return Err(src.error(
+                Some(b.span()),
+                "contact.beta_m",
+                "give either `ratio` or `beta_m`, not both",
+            ));
+        }
+        (Some(r), None) => MassPenalty::Ratio(super::positive(src, r, "contact.ratio")?),
+        (None, Some(b)) => MassPenalty::Dimensionless(*b.get_ref()),
+        (None, None) => MassPenalty::Ratio(1.0),
+    };
+    let betas = study
+        .beta_s
+        .as_ref()
+        .map(|b| b.get_ref().values())
+        .unwrap_or_default();
+    let beta_span = study.beta_s.as_ref().map(|b| b.span());
+    let stability = StabilityPolicy {
+        allow_unstable: study.allow_unstable,
+        ..StabilityPolicy::default()
+    };
+    let mut cases = Vec::new();
+    for label in study.schemes.get_ref().values() {
+        let penalty_scheme =
+            |beta_s: f64, mass: MassPenalty| -> Result<(ContactScheme, (f64, f64)), String> {
+                let penalty = problem.penalty(beta_s, mass).map_err(|e| e.to_string())?;
+                let dimensionless = problem.dimensionless(penalty);
+                let scheme = match label.as_str() {
+                    "cd-penalty" => ContactScheme::Penalty {
+                        stiffness: penalty.stiffness,
+                    },
+                    "cd-bipenalty" => ContactScheme::Bipenalty(penalty),
+                    _ => ContactScheme::PredictorCorrector(penalty),
+                };
+                Ok((scheme, dimensionless))
+            };
+        let variants: Vec<Variant> = match label.as_str() {
+            "lagrange-multiplier" => vec![(label.clone(), ContactScheme::LagrangeMultiplier, None)],
+            "cd-penalty" | "cd-bipenalty" | "predictor-corrector" => {
+                if betas.is_empty() {
+                    return Err(src.error(
+                        Some(study.schemes.span()),
+                        "contact.beta_s",
+                        format!("scheme {label} needs `beta_s`"),
+                    ));
+                }
+                let mass = if label == "cd-penalty" {
+                    MassPenalty::None
+                } else {
+                    mass_penalty
+                };
+                betas
+                    .iter()
+                    .map(|&b| {
+                        let (scheme, dimensionless) = penalty_scheme(b, mass)
+                            .map_err(|m| src.error(beta_span.clone(), "contact.beta_s", m))?;
+                        Ok((format!("{label}-bs{b}"), scheme, Some(dimensionless)))
+                    })
+                    .collect::<Result<_, SceneError>>()?
+            }
+            other => {
+                return Err(src.error(
+                    Some(study.schemes.span()),
+                    "contact.schemes",
+                    format!("\"{other}\" is not one of cd-penalty, cd-bipenalty, predictor-corrector, lagrange-multiplier"),
+                ));
+            }
+        };
+        for (name, scheme, penalty) in variants {
+            let integrator = ContactIntegrator {
+                dt,
+                scheme,
+                stability,
+            };
+            integrator.check_stability(&problem).map_err(|e| {
+                src.error(
+                    Some(study.courant.span()),
+                    "contact.courant",
+                    format!("case {name}: {e}"),
+                )
+            })?;
+            cases.push(ContactCase {
+                name,
+                problem: problem.clone(),
+                integrator,
+                steps: steps_f as usize,
+                history_every,
+                penalty,
+                reference: reference.clone(),
+            });
+        }
+    }
+    let mut seen = std::collections::HashSet::new();
+    if let Some(dup) = cases.iter().find(|c| !seen.insert(c.name.clone())) {
+        return Err(src.error(
+            Some(study.schemes.span()),
+            "contact.schemes",
+            format!("case {} appears twice", dup.name),
+        ));
+    }
+    Ok(cases)
+}
+
+/// Build a `[contact_stability]` sweep.
+pub(super) fn sweep(
+    src: &Source,
+    study: &RawContactStability,
+) -> Result<StabilitySweep, SceneError> {
+    let elements = *study.elements.get_ref();
+    if !(2..=100_000).contains(&elements) {
+        return Err(src.error(
+            Some(study.elements.span()),
+            "contact_stability.elements",
+            format!("{elements} must lie in 2..=100000"),
+        ));
+    }
+    let [lo, hi] = *study.beta_s_range.get_ref();
+    if !(lo.is_finite() && hi.is_finite() && lo > 0.0 && hi >= lo) {
+        return Err(src.error(
+            Some(study.beta_s_range.span()),
+            "contact_stability.beta_s_range",
+            format!("[{lo}, {hi}] must be positive, finite and ordered"),
+        ));
+    }
+    let points = *study.points.get_ref();
+    if !(2..=1000).contains(&points) {
+        return Err(src.error(
+            Some(study.points.span()),
+            "contact_stability.points",
+            format!("{points} must lie in 2..=1000"),
+        ));
+    }
+    let beta_s = (0..points)
+        .map(|i| lo * (hi / lo).powf(i as f64 / (points - 1) as f64))
+        .collect();
+    let mut ratios: Vec<Option<f64>> = Vec::new();
+    if study.penalty_only.unwrap_or(true) {
+        ratios.push(None);
+    }
+    for &r in study.ratios.get_ref() {
+        if !(r.is_finite() && r > 0.0) {
+            return Err(src.error(
+                Some(study.ratios.span()),
+                "contact_stability.ratios",
+                format!("{r} must be positive and finite"),
+            ));
+        }
+        ratios.push(Some(r));
+    }
+    Ok(StabilitySweep {
+        elements: elements as usize,
+        beta_s,
+        ratios,
+    })
+}
