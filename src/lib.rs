@@ -3,13 +3,16 @@
 //! Verification benchmarks and reference solutions for explicit finite-element dynamics of bars.
 //! This crate reads declarative scene files ([`scene`]), runs their cases with
 //! `courant-solver` ([`run`]), compares them with the analytic references of
-//! `courant-references` ([`reference`], [`metrics`]), checks their expectations ([`expect`]) and
-//! writes named CSV tables ([`results`], [`table`], [`write`]).
+//! `courant-references` ([`reference`](mod@reference), [`metrics`]), checks their expectations ([`expect`]) and
+//! writes named CSV tables ([`results`], [`table`], [`write`](mod@write)).
 
+pub mod baseline;
 pub mod builtin;
+pub mod check;
 pub mod contact_study;
 pub mod dispersion;
 pub mod expect;
+pub mod junit;
 pub mod metrics;
 pub mod reference;
 pub mod results;

@@ -35,12 +35,100 @@ enum Command {
         #[arg(long, default_value = "results")]
         out: PathBuf,
     },
+    /// Check scenes for CI: run them and gate on their expectations (and on a baseline).
+    ///
+    /// Prints every expectation with case, metric, measured value, bound, verdict and source.
+    /// Exit status: 0 when every check holds, 1 when one fails (an expectation, or a file
+    /// beyond its baseline tolerance), 2 on bad input (nothing is written then).
+    Check {
+        /// Scene names or paths (all built-in scenes when none given).
+        scenes: Vec<String>,
+        /// Write a JUnit XML report here (one testsuite per scene, one testcase per check).
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
+        /// Compare the fresh CSVs with a previous `courant run --out DIR` (DIR/<scene>/*.csv).
+        #[arg(long, value_name = "DIR")]
+        baseline: Option<PathBuf>,
+        /// Also write the result directories, as `courant run --out DIR` does.
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+    },
 }
 
 fn main() -> ExitCode {
     match Cli::parse().command {
         Command::List => list(),
         Command::Run { scenes, out } => run(&scenes, &out),
+        Command::Check {
+            scenes,
+            junit,
+            baseline,
+            out,
+        } => check(
+            &scenes,
+            junit.as_deref(),
+            baseline.as_deref(),
+            out.as_deref(),
+        ),
+    }
+}
+
+fn check(
+    args: &[String],
+    junit: Option<&std::path::Path>,
+    baseline: Option<&std::path::Path>,
+    out: Option<&std::path::Path>,
+) -> ExitCode {
+    use courant::check::{CheckReport, resolve_scenes};
+    // Validate everything first: bad input writes nothing.
+    let scenes = match resolve_scenes(args) {
+        Ok(scenes) => scenes,
+        Err(errors) => {
+            for e in errors {
+                eprintln!("error: {e}");
+            }
+            return ExitCode::from(2);
+        }
+    };
+    if let Some(dir) = baseline.filter(|d| !d.is_dir()) {
+        eprintln!("error: --baseline {}: not a directory", dir.display());
+        return ExitCode::from(2);
+    }
+    if let Some(file) = junit.filter(|f| f.is_dir()) {
+        eprintln!("error: --junit {}: is a directory", file.display());
+        return ExitCode::from(2);
+    }
+    // Everything runs and is compared before anything is written (so --out may be the baseline).
+    let tolerances = courant::baseline::Tolerances::default();
+    let report = match CheckReport::run(&scenes, baseline, tolerances) {
+        Ok(report) => report,
+        Err((scene, e)) => {
+            eprintln!("error: {scene}: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    print!("{}", report.render());
+    if let Some(out) = out {
+        for scene in &report.scenes {
+            let dir = out.join(&scene.name);
+            if let Err(e) = write_dir_atomically(&dir, &scene.files) {
+                eprintln!("error: cannot write {}: {e}", dir.display());
+                return ExitCode::from(2);
+            }
+            println!("  -> {}", dir.display());
+        }
+    }
+    if let Some(file) = junit {
+        if let Err(e) = courant::junit::write_atomically(file, &report.junit()) {
+            eprintln!("error: cannot write {}: {e}", file.display());
+            return ExitCode::from(2);
+        }
+        println!("  -> {}", file.display());
+    }
+    if report.passed() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
     }
 }
 

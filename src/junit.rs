@@ -1,0 +1,216 @@
+//! JUnit XML for CI servers, written by hand: `<testsuites>` of `<testsuite>`s of `<testcase>`s,
+//! each with an optional `<failure>` and `<system-out>`. Every attribute value and text is
+//! XML-escaped; characters XML 1.0 forbids are replaced by U+FFFD.
+
+use std::fmt::Write as _;
+use std::io;
+use std::path::Path;
+
+/// A failed test case's failure.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Failure {
+    /// One-line message (the `message` attribute).
+    pub message: String,
+    /// Failure kind (the `type` attribute).
+    pub kind: String,
+    /// Details (the element's text).
+    pub details: String,
+}
+
+/// One test case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TestCase {
+    /// `classname` attribute.
+    pub classname: String,
+    /// `name` attribute.
+    pub name: String,
+    /// The failure, if it failed.
+    pub failure: Option<Failure>,
+    /// Text for `<system-out>`, if any.
+    pub output: Option<String>,
+}
+
+/// One test suite.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TestSuite {
+    /// `name` attribute.
+    pub name: String,
+    /// `<properties>` (name, value).
+    pub properties: Vec<(String, String)>,
+    /// Its test cases.
+    pub cases: Vec<TestCase>,
+}
+
+impl TestSuite {
+    /// Failed test cases.
+    pub fn failures(&self) -> usize {
+        self.cases.iter().filter(|c| c.failure.is_some()).count()
+    }
+}
+
+/// Escape text for an XML attribute value: `& < > " '` become entities, tab, newline and
+/// carriage return become character references (attribute-value normalisation would turn them
+/// into spaces otherwise), and characters XML 1.0 does not allow become U+FFFD.
+pub fn escape(text: &str) -> String {
+    escape_with(text, true)
+}
+
+/// Escape element content: as [`escape`], but tabs and newlines stay literal.
+pub fn escape_text(text: &str) -> String {
+    escape_with(text, false)
+}
+
+fn escape_with(text: &str, attribute: bool) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            '\t' | '\n' if !attribute => out.push(c),
+            '\t' => out.push_str("&#9;"),
+            '\n' => out.push_str("&#10;"),
+            '\r' => out.push_str("&#13;"),
+            c if allowed_in_xml(c) => out.push(c),
+            _ => out.push('\u{FFFD}'),
+        }
+    }
+    out
+}
+
+/// XML 1.0 `Char`: `#x9 | #xA | #xD | [#x20-#xD7FF] | [#xE000-#xFFFD] | [#x10000-#x10FFFF]`.
+fn allowed_in_xml(c: char) -> bool {
+    matches!(c, '\t' | '\n' | '\r' | '\u{20}'..='\u{D7FF}' | '\u{E000}'..='\u{FFFD}' | '\u{10000}'..)
+}
+
+/// Render the suites as a JUnit XML document.
+pub fn render(name: &str, suites: &[TestSuite]) -> String {
+    let tests: usize = suites.iter().map(|s| s.cases.len()).sum();
+    let failures: usize = suites.iter().map(TestSuite::failures).sum();
+    let mut xml = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    // Writing to a String cannot fail.
+    let _ = writeln!(
+        xml,
+        "<testsuites name=\"{}\" tests=\"{tests}\" failures=\"{failures}\" errors=\"0\">",
+        escape(name)
+    );
+    for suite in suites {
+        let _ = writeln!(
+            xml,
+            "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" skipped=\"0\">",
+            escape(&suite.name),
+            suite.cases.len(),
+            suite.failures()
+        );
+        if !suite.properties.is_empty() {
+            xml.push_str("    <properties>\n");
+            for (name, value) in &suite.properties {
+                let _ = writeln!(
+                    xml,
+                    "      <property name=\"{}\" value=\"{}\"/>",
+                    escape(name),
+                    escape(value)
+                );
+            }
+            xml.push_str("    </properties>\n");
+        }
+        for case in &suite.cases {
+            let _ = write!(
+                xml,
+                "    <testcase classname=\"{}\" name=\"{}\"",
+                escape(&case.classname),
+                escape(&case.name)
+            );
+            if case.failure.is_none() && case.output.is_none() {
+                xml.push_str("/>\n");
+                continue;
+            }
+            xml.push_str(">\n");
+            if let Some(f) = &case.failure {
+                let _ = writeln!(
+                    xml,
+                    "      <failure message=\"{}\" type=\"{}\">{}</failure>",
+                    escape(&f.message),
+                    escape(&f.kind),
+                    escape_text(&f.details)
+                );
+            }
+            if let Some(out) = &case.output {
+                let _ = writeln!(xml, "      <system-out>{}</system-out>", escape_text(out));
+            }
+            xml.push_str("    </testcase>\n");
+        }
+        xml.push_str("  </testsuite>\n");
+    }
+    xml.push_str("</testsuites>\n");
+    xml
+}
+
+/// Write `text` to `path` atomically: to a hidden temporary file beside it, then renamed over
+/// it, so a reader never sees a half-written report. Creates the parent directory.
+pub fn write_atomically(path: &Path, text: &str) -> io::Result<()> {
+    let parent = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    std::fs::create_dir_all(parent)?;
+    let name = path
+        .file_name()
+        .and_then(|n| n.to_str())
+        .unwrap_or("junit.xml");
+    let staging = parent.join(format!(".{name}.partial-{}", std::process::id()));
+    let written = std::fs::write(&staging, text).and_then(|()| std::fs::rename(&staging, path));
+    if written.is_err() {
+        let _ = std::fs::remove_file(&staging);
+    }
+    written
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn escapes_markup_quotes_whitespace_and_forbidden_characters() {
+        assert_eq!(
+            escape("a < b && c > \"d\" 'e'"),
+            "a &lt; b &amp;&amp; c &gt; &quot;d&quot; &apos;e&apos;"
+        );
+        assert_eq!(escape("x\ny\tz\u{1}§"), "x&#10;y&#9;z\u{FFFD}§");
+        assert_eq!(escape_text("x\ny\r<"), "x\ny&#13;&lt;");
+    }
+
+    #[test]
+    fn renders_counts_and_failures() {
+        let suite = TestSuite {
+            name: "s<1>".into(),
+            properties: vec![("source".into(), "a & b".into())],
+            cases: vec![
+                TestCase {
+                    classname: "s".into(),
+                    name: "ok".into(),
+                    failure: None,
+                    output: None,
+                },
+                TestCase {
+                    classname: "s".into(),
+                    name: "bad".into(),
+                    failure: Some(Failure {
+                        message: "1 > 0".into(),
+                        kind: "expectation".into(),
+                        details: "x".into(),
+                    }),
+                    output: None,
+                },
+            ],
+        };
+        let xml = render("all", &[suite]);
+        assert!(xml.contains("tests=\"2\" failures=\"1\""));
+        assert!(xml.contains("<testsuite name=\"s&lt;1&gt;\""));
+        assert!(xml.contains("<property name=\"source\" value=\"a &amp; b\"/>"));
+        assert!(xml.contains("<testcase classname=\"s\" name=\"ok\"/>"));
+        assert!(xml.contains("<failure message=\"1 &gt; 0\" type=\"expectation\">x</failure>"));
+    }
+}

@@ -1,0 +1,511 @@
+//! Source of truth: the README's CI-gating contract ("Gating CI") and the issue behind it:
+//! `courant check [SCENES...] [--junit FILE] [--baseline DIR] [--out DIR]` runs the scenes'
+//! expectations, prints each with its measured value, bound, verdict and source, and exits 0
+//! when all hold, 1 when any fails, 2 on bad input (nothing written); `--junit` writes JUnit XML
+//! (one testsuite per scene, one testcase per expectation, a `<failure>` for each failed one);
+//! `--baseline` compares the fresh CSVs with a previous `courant run --out DIR` under per-column
+//! tolerances (relative with an absolute floor, peak-relative for stress profiles, exact
+//! integers, ignored wall times) and fails naming the file and column that moved.
+//!
+//! Proves, with the built binary on the fig1 scene (milliseconds per run): the committed
+//! expectations pass; a deliberately broken expectation exits 1 and appears as a `<failure>` in
+//! a well-formed JUnit file (checked by a small XML parser below: balanced tags, quoted
+//! attributes, valid entities, `testsuites/testsuite/testcase/failure` nesting, consistent
+//! counts); a baseline from a fresh run passes, survives round-off-sized edits and wall-time
+//! changes, and fails on a stress change beyond tolerance or a missing file, naming them; a bad
+//! scene exits 2 and writes neither the JUnit file nor the output directories.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn courant(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_courant"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("courant-check-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn text(out: &Output) -> String {
+    format!(
+        "stdout:\n{}\nstderr:\n{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    )
+}
+
+fn s(path: &Path) -> &str {
+    path.to_str().unwrap()
+}
+
+// ---- a tiny XML well-formedness checker (no XML crate is available) ----
+
+#[derive(Debug)]
+struct Element {
+    name: String,
+    attrs: Vec<(String, String)>,
+    children: Vec<Element>,
+    text: String,
+}
+
+impl Element {
+    fn attr(&self, name: &str) -> &str {
+        self.attrs
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| v.as_str())
+            .unwrap_or_else(|| panic!("<{}> has no attribute {name}", self.name))
+    }
+
+    fn child(&self, name: &str) -> Option<&Element> {
+        self.children.iter().find(|c| c.name == name)
+    }
+}
+
+struct Parser<'a> {
+    s: &'a str,
+    i: usize,
+}
+
+impl<'a> Parser<'a> {
+    fn rest(&self) -> &'a str {
+        &self.s[self.i..]
+    }
+
+    fn skip_ws(&mut self) {
+        let trimmed = self.rest().trim_start_matches([' ', '\t', '\n', '\r']);
+        self.i = self.s.len() - trimmed.len();
+    }
+
+    fn eat(&mut self, token: &str) -> bool {
+        if self.rest().starts_with(token) {
+            self.i += token.len();
+            true
+        } else {
+            false
+        }
+    }
+
+    fn expect(&mut self, token: &str) -> Result<(), String> {
+        if self.eat(token) {
+            Ok(())
+        } else {
+            Err(format!("expected {token:?} at byte {}", self.i))
+        }
+    }
+
+    fn name(&mut self) -> Result<String, String> {
+        let len = self
+            .rest()
+            .find(|c: char| !(c.is_ascii_alphanumeric() || "_:.-".contains(c)))
+            .unwrap_or(self.rest().len());
+        let name = &self.rest()[..len];
+        if name.is_empty() || !name.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+            return Err(format!("bad name at byte {}", self.i));
+        }
+        self.i += len;
+        Ok(name.to_string())
+    }
+
+    /// Character data up to (not including) `stop`, with entities resolved.
+    fn chars_until(&mut self, stop: char) -> Result<String, String> {
+        let end = self
+            .rest()
+            .find(stop)
+            .ok_or_else(|| format!("unterminated text at byte {}", self.i))?;
+        let raw = &self.rest()[..end];
+        if stop == '"' && raw.contains('<') {
+            return Err(format!("raw '<' in an attribute at byte {}", self.i));
+        }
+        let value = unescape(raw).map_err(|e| format!("{e} at byte {}", self.i))?;
+        self.i += end;
+        Ok(value)
+    }
+
+    fn element(&mut self) -> Result<Element, String> {
+        self.expect("<")?;
+        let name = self.name()?;
+        let mut attrs: Vec<(String, String)> = Vec::new();
+        loop {
+            self.skip_ws();
+            if self.eat("/>") {
+                return Ok(Element {
+                    name,
+                    attrs,
+                    children: Vec::new(),
+                    text: String::new(),
+                });
+            }
+            if self.eat(">") {
+                break;
+            }
+            let attr = self.name()?;
+            self.skip_ws();
+            self.expect("=")?;
+            self.skip_ws();
+            self.expect("\"")?;
+            let value = self.chars_until('"')?;
+            self.expect("\"")?;
+            if attrs.iter().any(|(a, _)| *a == attr) {
+                return Err(format!("duplicate attribute {attr} on <{name}>"));
+            }
+            attrs.push((attr, value));
+        }
+        let (mut children, mut text) = (Vec::new(), String::new());
+        loop {
+            if self.rest().is_empty() {
+                return Err(format!("<{name}> is never closed"));
+            }
+            if self.eat("</") {
+                let closing = self.name()?;
+                if closing != name {
+                    return Err(format!("<{name}> closed by </{closing}>"));
+                }
+                self.skip_ws();
+                self.expect(">")?;
+                return Ok(Element {
+                    name,
+                    attrs,
+                    children,
+                    text,
+                });
+            }
+            if self.rest().starts_with('<') {
+                children.push(self.element()?);
+            } else {
+                text.push_str(&self.chars_until('<')?);
+            }
+        }
+    }
+}
+
+fn unescape(raw: &str) -> Result<String, String> {
+    let mut out = String::new();
+    let mut rest = raw;
+    while let Some(amp) = rest.find('&') {
+        out.push_str(&rest[..amp]);
+        let semi = rest[amp..]
+            .find(';')
+            .ok_or("'&' without ';'")?
+            .checked_add(amp)
+            .unwrap();
+        let entity = &rest[amp + 1..semi];
+        let c = match entity {
+            "amp" => '&',
+            "lt" => '<',
+            "gt" => '>',
+            "quot" => '"',
+            "apos" => '\'',
+            _ => {
+                let code = if let Some(hex) = entity.strip_prefix("#x") {
+                    u32::from_str_radix(hex, 16).map_err(|_| format!("bad entity &{entity};"))?
+                } else if let Some(dec) = entity.strip_prefix('#') {
+                    dec.parse().map_err(|_| format!("bad entity &{entity};"))?
+                } else {
+                    return Err(format!("unknown entity &{entity};"));
+                };
+                char::from_u32(code).ok_or(format!("bad character &{entity};"))?
+            }
+        };
+        out.push(c);
+        rest = &rest[semi + 1..];
+    }
+    out.push_str(rest);
+    Ok(out)
+}
+
+/// Parse a whole document (optional `<?xml ...?>` declaration, one root element).
+fn parse_xml(doc: &str) -> Result<Element, String> {
+    let mut p = Parser { s: doc, i: 0 };
+    if p.eat("<?xml") {
+        let end = p.rest().find("?>").ok_or("unterminated declaration")?;
+        p.i += end + 2;
+    }
+    p.skip_ws();
+    let root = p.element()?;
+    p.skip_ws();
+    if !p.rest().is_empty() {
+        return Err(format!("content after the root element at byte {}", p.i));
+    }
+    Ok(root)
+}
+
+/// Parse a JUnit file and check its nesting and counts; returns the root.
+fn junit(path: &Path) -> Element {
+    let doc = std::fs::read_to_string(path).unwrap();
+    let root = parse_xml(&doc).unwrap_or_else(|e| panic!("not well-formed XML: {e}\n{doc}"));
+    assert_eq!(root.name, "testsuites");
+    let (mut tests, mut failures) = (0, 0);
+    for suite in &root.children {
+        assert_eq!(suite.name, "testsuite");
+        let mut cases = 0;
+        let mut failed = 0;
+        for child in &suite.children {
+            match child.name.as_str() {
+                "properties" => assert!(child.children.iter().all(|p| p.name == "property")),
+                "testcase" => {
+                    cases += 1;
+                    assert_eq!(child.attr("classname"), suite.attr("name"));
+                    for grandchild in &child.children {
+                        assert!(
+                            ["failure", "system-out"].contains(&grandchild.name.as_str()),
+                            "unexpected <{}> in a testcase",
+                            grandchild.name
+                        );
+                        assert!(grandchild.children.is_empty());
+                    }
+                    failed += usize::from(child.child("failure").is_some());
+                }
+                other => panic!("unexpected <{other}> in a testsuite"),
+            }
+        }
+        assert_eq!(suite.attr("tests"), cases.to_string());
+        assert_eq!(suite.attr("failures"), failed.to_string());
+        tests += cases;
+        failures += failed;
+    }
+    assert_eq!(root.attr("tests"), tests.to_string());
+    assert_eq!(root.attr("failures"), failures.to_string());
+    root
+}
+
+fn testcases(root: &Element) -> Vec<&Element> {
+    root.children
+        .iter()
+        .flat_map(|s| &s.children)
+        .filter(|c| c.name == "testcase")
+        .collect()
+}
+
+#[test]
+fn xml_checker_rejects_malformed_documents() {
+    assert!(parse_xml("<a><b></a></b>").is_err());
+    assert!(parse_xml("<a x=\"1 < 2\"/>").is_err());
+    assert!(parse_xml("<a>&nope;</a>").is_err());
+    assert!(parse_xml("<a>").is_err());
+    assert!(parse_xml("<a/><b/>").is_err());
+    let ok = parse_xml("<?xml version=\"1.0\"?>\n<a x=\"&lt;&#10;\">t &amp; u<b/></a>").unwrap();
+    assert_eq!((ok.attr("x"), ok.text.as_str()), ("<\n", "t & u"));
+}
+
+#[test]
+fn check_fig1_passes_on_the_committed_expectations() {
+    let dir = scratch("pass");
+    let report = dir.join("junit").join("fig1.xml");
+    let out = courant(&["check", "fig1", "--junit", s(&report)]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    for column in ["verdict", "case", "metric", "measured", "bound", "source"] {
+        assert!(stdout.contains(column), "table lacks {column}: {stdout}");
+    }
+    assert!(!stdout.contains("FAIL"), "{stdout}");
+    let scene = courant::builtin::builtin_scene("fig1").unwrap().unwrap();
+    for e in &scene.expectations {
+        assert!(stdout.contains(&e.source), "source not shown: {}", e.source);
+    }
+    // One testcase per verdict, none failed, every one named "<case> <metric>".
+    let verdicts = courant::run_scene(&scene).unwrap().verdicts;
+    let root = junit(&report);
+    let cases = testcases(&root);
+    assert_eq!(cases.len(), verdicts.len());
+    assert_eq!(root.children[0].attr("name"), "fig1");
+    for v in &verdicts {
+        let name = format!("{} {}", v.case, v.metric.name());
+        assert!(
+            cases.iter().any(|c| c.attr("name") == name),
+            "no testcase {name}"
+        );
+    }
+    assert!(cases.iter().all(|c| c.child("failure").is_none()));
+    assert_eq!(
+        std::fs::read_dir(dir.join("junit")).unwrap().count(),
+        1,
+        "only the report, no temporary file, is left"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_broken_expectation_exits_1_with_a_junit_failure_for_that_testcase() {
+    let dir = scratch("strict");
+    let text_in = courant::builtin::builtin_text("fig1")
+        .unwrap()
+        .replace("max = 1e-10", "max = 1e-30");
+    let path = dir.join("strict.toml");
+    std::fs::write(&path, text_in).unwrap();
+    let report = dir.join("report.xml");
+    let results = dir.join("out");
+    let out = courant(&[
+        "check",
+        s(&path),
+        "--junit",
+        s(&report),
+        "--out",
+        s(&results),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let failed: Vec<&str> = stdout.lines().filter(|l| l.contains("FAIL")).collect();
+    assert_eq!(
+        failed.len(),
+        2,
+        "the co1 linf row and the summary: {stdout}"
+    );
+    assert!(failed[0].contains("co1") && failed[0].contains("linf"));
+    assert!(failed[0].contains("<= 1e-30") && failed[0].contains("methods.md §3"));
+
+    let root = junit(&report);
+    assert_eq!(root.attr("failures"), "1");
+    assert_eq!(root.children[0].attr("name"), "strict");
+    for case in testcases(&root) {
+        let failure = case.child("failure");
+        if case.attr("name") == "co1 linf" {
+            let message = failure.expect("co1 linf must fail").attr("message");
+            assert!(message.contains("1e-30") && message.contains("measured"));
+            assert!(message.contains("methods.md §3"), "names its source");
+        } else {
+            assert!(failure.is_none(), "{} must pass", case.attr("name"));
+        }
+    }
+    // Escaping round-trips: a source with '<' reads back intact.
+    assert!(
+        testcases(&root)
+            .iter()
+            .filter_map(|c| c.child("system-out"))
+            .any(|o| o.text.contains("Co < 1 cannot look exact"))
+    );
+    // --out writes the result directory like `run` does, failure recorded.
+    let expectations =
+        std::fs::read_to_string(results.join("strict").join("expectations.csv")).unwrap();
+    assert!(expectations.contains("FAIL"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Replace the `column`-th field of CSV line `line` (1-based, header = 1) by `edit(value)`.
+fn edit_cell(path: &Path, line: usize, column: usize, edit: impl Fn(f64) -> f64) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    let mut fields: Vec<String> = lines[line - 1].split(',').map(str::to_string).collect();
+    fields[column] = format!("{:?}", edit(fields[column].parse().unwrap()));
+    lines[line - 1] = fields.join(",");
+    std::fs::write(path, lines.join("\n") + "\n").unwrap();
+}
+
+#[test]
+fn baseline_of_a_fresh_run_passes_and_a_changed_number_fails_naming_file_and_column() {
+    let dir = scratch("baseline");
+    let base = dir.join("base");
+    let run = courant(&["run", "fig1", "--out", s(&base)]);
+    assert!(run.status.success(), "{}", text(&run));
+    let check = |report: &Path| {
+        courant(&[
+            "check",
+            "fig1",
+            "--baseline",
+            s(&base),
+            "--junit",
+            s(report),
+        ])
+    };
+
+    let out = check(&dir.join("same.xml"));
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("; baseline: 12 file(s), 0 failed"));
+    let root = junit(&dir.join("same.xml"));
+    assert!(
+        testcases(&root)
+            .iter()
+            .any(|c| c.attr("name") == "baseline co0.5.csv")
+    );
+
+    // Within tolerance: a 1e-10 relative change of a stress and a different wall time pass.
+    let profile = base.join("fig1").join("co0.5.csv");
+    assert_eq!(
+        std::fs::read_to_string(&profile).unwrap().lines().next(),
+        Some("t,element,x,stress,reference,error")
+    );
+    let original = std::fs::read_to_string(&profile).unwrap();
+    edit_cell(&profile, 52, 3, |x| x * (1.0 + 1e-10));
+    edit_cell(&base.join("fig1").join("summary.csv"), 2, 18, |_| 999.0);
+    let out = check(&dir.join("close.xml"));
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+
+    // Beyond tolerance: 1e-6 on a stress whose column peaks near 1 (allowed: 1e-9 of the peak).
+    std::fs::write(&profile, &original).unwrap();
+    edit_cell(&profile, 52, 3, |x| x + 1e-6);
+    let out = check(&dir.join("changed.xml"));
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let failed: Vec<&str> = stdout
+        .lines()
+        .filter(|l| l.trim_start().starts_with("FAIL"))
+        .collect();
+    assert_eq!(failed.len(), 1, "only the edited file fails: {stdout}");
+    assert!(failed[0].contains("co0.5.csv") && failed[0].contains("stress"));
+    assert!(stdout.contains("line 52"), "names the line: {stdout}");
+    let root = junit(&dir.join("changed.xml"));
+    let case = testcases(&root)
+        .into_iter()
+        .find(|c| c.attr("name") == "baseline co0.5.csv")
+        .unwrap();
+    let failure = case.child("failure").expect("the edited file fails");
+    assert!(failure.attr("message").contains("co0.5.csv"));
+    assert!(failure.attr("message").contains("stress"));
+    assert_eq!(root.attr("failures"), "1");
+
+    // A file missing from the baseline fails too.
+    std::fs::write(&profile, &original).unwrap();
+    std::fs::remove_file(base.join("fig1").join("norms.csv")).unwrap();
+    let out = check(&dir.join("missing.xml"));
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        stdout
+            .lines()
+            .any(|l| l.contains("FAIL") && l.contains("norms.csv") && l.contains("missing")),
+        "{stdout}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn bad_input_exits_2_and_writes_nothing() {
+    let dir = scratch("bad");
+    let bad = dir.join("bad.toml");
+    let text_in = courant::builtin::builtin_text("fig1")
+        .unwrap()
+        .replace("elements = 100", "elements = 100\nbogus = 1");
+    std::fs::write(&bad, text_in).unwrap();
+    let (report, results) = (dir.join("report.xml"), dir.join("out"));
+    let nowhere = dir.join("nowhere");
+    let attempts: [&[&str]; 3] = [
+        // a scene that does not parse, after a good one
+        &["check", "fig1", s(&bad)],
+        // no such scene
+        &["check", "no_such_scene"],
+        // a baseline that is not a directory
+        &["check", "fig1", "--baseline", s(&nowhere)],
+    ];
+    for args in attempts {
+        let mut args = args.to_vec();
+        args.extend(["--junit", s(&report), "--out", s(&results)]);
+        let out = courant(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", text(&out));
+        assert!(!String::from_utf8_lossy(&out.stderr).is_empty());
+        assert!(!report.exists(), "{args:?} wrote the JUnit file");
+        assert!(!results.exists(), "{args:?} wrote results");
+    }
+    let out = courant(&["check", s(&bad)]);
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        stderr.contains("bad.toml") && stderr.contains("bogus"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
