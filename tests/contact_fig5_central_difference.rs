@@ -33,12 +33,10 @@
 //!   goes from 2.25 to above 20 within 100 L/c (beta_s = 0.25 only dissipates).
 
 use courant_references::contact::{ImpactBar, ImpactForce, two_bar_critical_courant};
+use courant_solver::StabilityPolicy;
 use courant_solver::contact::{
     ContactError, ContactIntegrator, ContactProblem, ContactRequest, ContactRun, ContactScheme,
     MassPenalty, StepLimit,
-};
-use courant_solver::{
-    Bar, End, InitialConditions, Load, Mesh, Model, StabilityPolicy, Supports, TimeFunction,
 };
 
 const DT: f64 = 0.005;
@@ -120,7 +118,7 @@ fn allowed_cd_penalty_pumps_energy_and_the_guard_stops_it_keeping_the_history() 
         "{error}"
     );
     // Persistent contact under a load: the default guard trips.
-    let wall = loaded_wall();
+    let wall = courant_solver::fixtures::loaded_wall(100, 0.0).unwrap();
     let penalty = wall.penalty(25.0, MassPenalty::None).unwrap();
     let error = allowed(
         ContactScheme::Penalty {
@@ -207,28 +205,9 @@ fn cd_bipenalty_with_ratio_one_is_accepted_and_bounded_but_chatters_at_large_bet
     }
 }
 
-/// A unit bar of 100 elements at rest touching a wall on its right, pushed toward it by a
-/// constant force 1 on its left end.
-fn loaded_wall() -> ContactProblem {
-    let bar = Bar::homogeneous(Mesh::uniform(1.0, 100).unwrap(), 1.0, 1.0, 1.0).unwrap();
-    let load = Load::Force {
-        node: 0,
-        magnitude: 1.0,
-        time: TimeFunction::HEAVISIDE,
-    };
-    let model = Model::new(
-        bar,
-        Supports::default(),
-        &[load],
-        InitialConditions::default(),
-    )
-    .unwrap();
-    ContactProblem::wall(model, End::Right, 0.0).unwrap()
-}
-
 #[test]
 fn cd_bipenalty_gains_energy_on_a_chattering_persistent_contact_though_its_limit_holds() {
-    let problem = loaded_wall();
+    let problem = courant_solver::fixtures::loaded_wall(100, 0.0).unwrap();
     let peak = |beta_s: f64| {
         let scheme =
             ContactScheme::Bipenalty(problem.penalty(beta_s, MassPenalty::Ratio(1.0)).unwrap());

@@ -27,12 +27,10 @@
 //!   dissipates.
 
 use courant_references::contact::{ImpactBar, ImpactForce};
+use courant_solver::StabilityPolicy;
 use courant_solver::contact::{
     ContactError, ContactIntegrator, ContactProblem, ContactRequest, ContactRun, ContactScheme,
     MassPenalty, StepLimit,
-};
-use courant_solver::{
-    Bar, End, InitialConditions, Load, Mesh, Model, StabilityPolicy, Supports, TimeFunction,
 };
 
 const BETAS: [f64; 4] = [0.25, 0.25e2, 0.25e4, 0.25e8];
@@ -161,29 +159,9 @@ fn predictor_corrector_tends_to_the_lagrange_multiplier_reference_as_beta_s_grow
     assert!(previous < 1e-7);
 }
 
-/// A unit bar of 100 elements at rest, touching a wall on its right, pushed toward it by a
-/// constant force 1 on its left end: a persistent contact that keeps switching (the wall force
-/// returns to 0 every 4 L/c).
-fn loaded_wall() -> ContactProblem {
-    let bar = Bar::homogeneous(Mesh::uniform(1.0, 100).unwrap(), 1.0, 1.0, 1.0).unwrap();
-    let load = Load::Force {
-        node: 0,
-        magnitude: 1.0,
-        time: TimeFunction::HEAVISIDE,
-    };
-    let model = Model::new(
-        bar,
-        Supports::default(),
-        &[load],
-        InitialConditions::default(),
-    )
-    .unwrap();
-    ContactProblem::wall(model, End::Right, 0.0).unwrap()
-}
-
 #[test]
 fn predictor_corrector_is_refused_above_its_own_limit_and_then_gains_energy() {
-    let problem = loaded_wall();
+    let problem = courant_solver::fixtures::loaded_wall(100, 0.0).unwrap();
     let scheme = ContactScheme::PredictorCorrector(
         problem.penalty(0.25e4, MassPenalty::Ratio(1.0)).unwrap(),
     );

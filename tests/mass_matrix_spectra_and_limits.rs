@@ -239,16 +239,7 @@ fn runs_just_above_the_critical_step_blow_up_and_just_below_stay_bounded() {
 fn estimators_are_conservative_where_theory_says_and_fried_fails_for_rmm() {
     // Graded and geometric meshes, every support pair: Gershgorin is always conservative, the
     // element (Fried) estimate for the assembled masses.
-    let graded = Bar::new(
-        Mesh::uniform(1.0, 40).unwrap(),
-        &Field::Linear {
-            left: 16.0,
-            right: 1.0,
-        },
-        &Field::Constant(1.0),
-        &Field::Constant(1.0),
-    )
-    .unwrap();
+    let graded = courant_solver::fixtures::graded_bar(40).unwrap();
     let geometric = Bar::new(
         Mesh::geometric(1.0, 40, 1.1).unwrap(),
         &Field::Constant(3.0),

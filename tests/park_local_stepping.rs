@@ -150,16 +150,7 @@ fn static_state(bar: Bar) -> Model {
 
 #[test]
 fn incremental_variant_keeps_a_static_state_static_and_free_drifts() {
-    let graded = Bar::new(
-        Mesh::uniform(1.0, 50).unwrap(),
-        &Field::Linear {
-            left: 16.0,
-            right: 1.0,
-        },
-        &Field::Constant(1.0),
-        &Field::Constant(1.0),
-    )
-    .unwrap();
+    let graded = courant_solver::fixtures::graded_bar(50).unwrap();
     let layered_modulus: Vec<f64> = (0..50).map(|e| if e < 25 { 16.0 } else { 1.0 }).collect();
     let layered = Bar::new(
         Mesh::uniform(1.0, 50).unwrap(),

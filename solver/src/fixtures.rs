@@ -46,3 +46,39 @@ pub fn graded_seed_bar(elements: usize) -> Result<Model, InputError> {
         TimeFunction::HEAVISIDE,
     )
 }
+
+/// The bar of the seed's Fig. 2 alone: unit length, `elements` uniform elements, modulus linear
+/// from 16 to 1, unit density and area.
+pub fn graded_bar(elements: usize) -> Result<Bar, InputError> {
+    Bar::new(
+        Mesh::uniform(1.0, elements)?,
+        &Field::Linear {
+            left: 16.0,
+            right: 1.0,
+        },
+        &Field::Constant(1.0),
+        &Field::Constant(1.0),
+    )
+}
+
+/// A persistent, switching contact: a unit bar of `elements` elements (E = rho = A = 1) at rest,
+/// `gap` from a rigid wall on its right, pushed toward it by a constant force 1 on its left end
+/// (touching, the wall force returns to 0 every 4 L/c).
+pub fn loaded_wall(
+    elements: usize,
+    gap: f64,
+) -> Result<crate::contact::ContactProblem, InputError> {
+    let bar = Bar::homogeneous(Mesh::uniform(1.0, elements)?, 1.0, 1.0, 1.0)?;
+    let load = Load::Force {
+        node: 0,
+        magnitude: 1.0,
+        time: TimeFunction::HEAVISIDE,
+    };
+    let model = Model::new(
+        bar,
+        Supports::default(),
+        &[load],
+        InitialConditions::default(),
+    )?;
+    crate::contact::ContactProblem::wall(model, End::Right, gap)
+}

@@ -19,7 +19,7 @@
 use courant_solver::contact::{
     ContactProblem, ContactScheme, ContactStepper, MassPenalty, Penalty,
 };
-use courant_solver::{Bar, End, InitialConditions, Load, Mesh, Model, Supports, TimeFunction};
+use courant_solver::{Bar, Mesh};
 use nalgebra::{DMatrix, DVector};
 
 /// Dense global operators of a contact problem (bodies numbered one after the other).
@@ -182,23 +182,6 @@ fn dense_u_check(dense: &Dense, stepper: &ContactStepper, worst: &mut f64, scale
     }
 }
 
-fn loaded_wall() -> ContactProblem {
-    let bar = Bar::homogeneous(Mesh::uniform(1.0, 12).unwrap(), 1.0, 1.0, 1.0).unwrap();
-    let load = Load::Force {
-        node: 0,
-        magnitude: 1.0,
-        time: TimeFunction::HEAVISIDE,
-    };
-    let model = Model::new(
-        bar,
-        Supports::default(),
-        &[load],
-        InitialConditions::default(),
-    )
-    .unwrap();
-    ContactProblem::wall(model, End::Right, 0.01).unwrap()
-}
-
 #[test]
 fn every_scheme_is_the_dense_textbook_scheme_to_round_off() {
     let pair = ContactProblem::bar_impact(
@@ -208,7 +191,14 @@ fn every_scheme_is_the_dense_textbook_scheme_to_round_off() {
         0.02,
     )
     .unwrap();
-    for (name, problem, co) in [("pair", pair, 0.45), ("loaded wall", loaded_wall(), 0.5)] {
+    for (name, problem, co) in [
+        ("pair", pair, 0.45),
+        (
+            "loaded wall",
+            courant_solver::fixtures::loaded_wall(12, 0.01).unwrap(),
+            0.5,
+        ),
+    ] {
         let dt = co * problem.stiffest_transit();
         let bipenalty = problem.penalty(40.0, MassPenalty::Ratio(1.0)).unwrap();
         let soft = problem.penalty(0.3, MassPenalty::Ratio(2.0)).unwrap();
