@@ -135,8 +135,8 @@ fn check(
 fn list() -> ExitCode {
     for (name, _) in BUILTIN_SCENES {
         match builtin_scene(name) {
-            Some(Ok(scene)) => println!("{name:12} {}", scene.description),
-            Some(Err(e)) => println!("{name:12} (invalid: {e})"),
+            Some(Ok(scene)) => println!("{name:16} {}", scene.description),
+            Some(Err(e)) => println!("{name:16} (invalid: {e})"),
             None => {}
         }
     }
