@@ -15,6 +15,7 @@ pub mod expect;
 pub mod junit;
 pub mod metrics;
 pub mod reference;
+pub mod report;
 pub mod results;
 pub mod run;
 pub mod scene;

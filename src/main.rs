@@ -35,6 +35,15 @@ enum Command {
         #[arg(long, default_value = "results")]
         out: PathBuf,
     },
+    /// Regenerate the verification report: every built-in scene and the convergence studies,
+    /// run in parallel, written whole (staged, then renamed) to DIR: index.md, per-scene CSV
+    /// tables, convergence/*.csv, timing.md and timing.csv. Exit status 0 when every
+    /// expectation holds, 1 when one fails, 2 on errors (the previous report is then kept).
+    Report {
+        /// Output directory.
+        #[arg(long, default_value = "reports")]
+        out: PathBuf,
+    },
     /// Check scenes for CI: run them and gate on their expectations (and on a baseline).
     ///
     /// Prints every expectation with case, metric, measured value, bound, verdict and source.
@@ -59,6 +68,7 @@ fn main() -> ExitCode {
     match Cli::parse().command {
         Command::List => list(),
         Command::Run { scenes, out } => run(&scenes, &out),
+        Command::Report { out } => report(&out),
         Command::Check {
             scenes,
             junit,
@@ -186,6 +196,38 @@ fn run(args: &[String], out: &std::path::Path) -> ExitCode {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
+    }
+}
+
+fn report(out: &std::path::Path) -> ExitCode {
+    let generated = courant::report::builtin_scenes().and_then(|scenes| {
+        courant::report::generate(&scenes, courant::report::CONVERGENCE_STUDIES)
+    });
+    let report = match generated {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    if let Err(e) = write_dir_atomically(out, &report.files) {
+        eprintln!("error: cannot write {}: {e}", out.display());
+        return ExitCode::from(2);
+    }
+    println!(
+        "report written to {} ({} files){}",
+        out.display(),
+        report.files.len(),
+        if report.passed {
+            ""
+        } else {
+            "; some expectations FAILED (see index.md)"
+        }
+    );
+    if report.passed {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
     }
 }
 

@@ -163,6 +163,43 @@ impl Table {
     }
 }
 
+impl Table {
+    /// Render as a Markdown table (numbers at `precision`; empty cells as `-`).
+    pub fn to_markdown(&self, precision: Precision) -> String {
+        let mut out = String::new();
+        out += &format!("| {} |\n", self.columns.join(" | "));
+        out += &format!("|{}\n", "---|".repeat(self.columns.len()));
+        for row in &self.rows {
+            let cells: Vec<String> = row
+                .iter()
+                .map(|c| match c {
+                    Cell::Num(x) => precision.format(*x),
+                    Cell::Int(i) => i.to_string(),
+                    Cell::Text(s) => s.replace('|', "\\|"),
+                    Cell::Empty => "-".to_string(),
+                })
+                .collect();
+            out += &format!("| {} |\n", cells.join(" | "));
+        }
+        out
+    }
+
+    /// A copy without the named columns (e.g. timings, kept out of deterministic content).
+    pub fn without(&self, drop: &[&str]) -> Table {
+        let keep: Vec<usize> = (0..self.columns.len())
+            .filter(|&i| !drop.contains(&self.columns[i].as_str()))
+            .collect();
+        Table {
+            columns: keep.iter().map(|&i| self.columns[i].clone()).collect(),
+            rows: self
+                .rows
+                .iter()
+                .map(|r| keep.iter().map(|&i| r[i].clone()).collect())
+                .collect(),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -186,6 +223,19 @@ mod tests {
             assert_eq!(Precision::RoundTrip.format(x).parse::<f64>().unwrap(), x);
         }
         assert_eq!(Precision::RoundTrip.format(2.5e-14), "2.5e-14");
+    }
+
+    #[test]
+    fn markdown_has_a_header_rule_and_dashes_for_empty_cells() {
+        let mut t = Table::new(&["a", "b", "wall_time_s"]);
+        t.push(vec![Cell::Num(0.123456789), Cell::Empty, Cell::Num(1.0)]);
+        let md = t
+            .without(&["wall_time_s"])
+            .to_markdown(Precision::Significant {
+                digits: 4,
+                floor: 1e-14,
+            });
+        assert_eq!(md, "| a | b |\n|---|---|\n| 0.1235 | - |\n");
     }
 
     #[test]

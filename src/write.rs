@@ -7,7 +7,8 @@
 use std::io;
 use std::path::Path;
 
-/// Replace `dir` with a directory holding exactly `files` (name, contents).
+/// Replace `dir` with a directory holding exactly `files` (relative path, contents; parent
+/// directories are created).
 pub fn write_dir_atomically(dir: &Path, files: &[(String, String)]) -> io::Result<()> {
     let parent = dir
         .parent()
@@ -20,9 +21,13 @@ pub fn write_dir_atomically(dir: &Path, files: &[(String, String)]) -> io::Resul
     let retired = parent.join(format!(".{name}.old-{pid}"));
     let _ = std::fs::remove_dir_all(&staging);
     std::fs::create_dir_all(&staging)?;
-    let written = files
-        .iter()
-        .try_for_each(|(file, text)| std::fs::write(staging.join(file), text));
+    let written = files.iter().try_for_each(|(file, text)| {
+        let path = staging.join(file);
+        if let Some(dir) = path.parent() {
+            std::fs::create_dir_all(dir)?;
+        }
+        std::fs::write(path, text)
+    });
     if let Err(e) = written {
         let _ = std::fs::remove_dir_all(&staging);
         return Err(e);

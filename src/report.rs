@@ -1,0 +1,485 @@
+//! `courant report`: every built-in scene and the convergence studies in one Markdown report
+//! (`index.md`) with its CSV tables, written whole or not at all. Timings (wall times, machine)
+//! go to `timing.md` and `timing.csv` only, so the rest of the report changes only when results
+//! do (numbers in the Markdown are rounded to 4 significant digits, CSVs keep round-trip
+//! precision).
+
+use crate::builtin::{BUILTIN_SCENES, builtin_text};
+use crate::run::{SceneOutcome, run_scene};
+use crate::scene::Scene;
+use crate::table::{Cell, Precision, Table};
+use courant_solver::RunError;
+use rayon::prelude::*;
+use std::time::Instant;
+
+/// Display precision of the Markdown tables (values below 1e-12, round-off, shown as 0).
+const SHOWN: Precision = Precision::Significant {
+    digits: 4,
+    floor: 1e-12,
+};
+
+/// Precision of the report's CSV tables: 10 significant digits, round-off below 1e-12 as 0, so
+/// the committed report does not change with the last bits of a platform.
+const STORED: Precision = Precision::Significant {
+    digits: 10,
+    floor: 1e-12,
+};
+
+/// An h-refinement study: one scene re-run on a sequence of meshes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConvergenceStudy {
+    /// File-friendly name.
+    pub name: &'static str,
+    /// Heading.
+    pub title: &'static str,
+    /// What theory predicts (stated beside the observed orders).
+    pub expected: &'static str,
+    /// The built-in scene it starts from.
+    pub scene: &'static str,
+    /// Text substitutions applied to the scene (one case per element count must remain).
+    pub replacements: &'static [(&'static str, &'static str)],
+}
+
+/// The built-in convergence studies.
+pub const CONVERGENCE_STUDIES: &[ConvergenceStudy] = &[
+    ConvergenceStudy {
+        name: "fig1_co0.5",
+        title: "Fig. 1 bar, lumped CD at Co = 0.5, t = 0.5 T",
+        expected: "L1 ~ h^(1/2), L2 ~ h^(1/3), Linf does not converge (dispersive step front, methods.md §3)",
+        scene: "fig1",
+        replacements: &[
+            (
+                "elements = 100",
+                "elements = [50, 100, 200, 400, 800, 1600, 3200, 6400]",
+            ),
+            ("courant = [1.0, 0.5, 0.1]", "courant = 0.5"),
+            ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
+            ("history_points = [0.0, 0.5]", "history_points = []"),
+        ],
+    },
+    ConvergenceStudy {
+        name: "fig1_co1",
+        title: "Fig. 1 bar, lumped CD at Co = 1, t = 0.5 T",
+        expected: "exact to round-off on every mesh (methods.md §3)",
+        scene: "fig1",
+        replacements: &[
+            (
+                "elements = 100",
+                "elements = [50, 100, 200, 400, 800, 1600, 3200, 6400]",
+            ),
+            ("courant = [1.0, 0.5, 0.1]", "courant = 1.0"),
+            ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
+            ("history_points = [0.0, 0.5]", "history_points = []"),
+        ],
+    },
+    ConvergenceStudy {
+        name: "fig2_park_lts",
+        title: "Fig. 2 graded bar, Park with local stepping, Co = 0.5, t = 0.5 T",
+        expected: "no closed-form order; compare with CD below",
+        scene: "fig2",
+        replacements: &[
+            ("elements = 100", "elements = [50, 100, 200, 400]"),
+            (
+                "scheme = [\"cd\", \"park-global\", \"park-lts\"]",
+                "scheme = \"park-lts\"",
+            ),
+            ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
+        ],
+    },
+    ConvergenceStudy {
+        name: "fig2_cd",
+        title: "Fig. 2 graded bar, lumped CD, Co = 0.5, t = 0.5 T",
+        expected: "step front: L1 ~ h^(1/2) at best; the soft part runs far below its own Courant limit",
+        scene: "fig2",
+        replacements: &[
+            ("elements = 100", "elements = [50, 100, 200, 400]"),
+            (
+                "scheme = [\"cd\", \"park-global\", \"park-lts\"]",
+                "scheme = \"cd\"",
+            ),
+            ("theta = 0.5\npark_variant = \"free\"\n", ""),
+            ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
+        ],
+    },
+    ConvergenceStudy {
+        name: "fig2_equal_transit",
+        title: "Fig. 2 graded bar on equal-transit-time meshes, lumped CD at Co = 1, t = 0.5 T",
+        expected: "first order: the exact layered (Goupillaud) model of the graded bar (methods.md §4)",
+        scene: "fig2",
+        replacements: &[
+            (
+                "elements = 100",
+                "elements = [50, 100, 200, 400, 800]\nspacing = \"equal-transit\"",
+            ),
+            (
+                "scheme = [\"cd\", \"park-global\", \"park-lts\"]",
+                "scheme = \"cd\"",
+            ),
+            ("theta = 0.5\npark_variant = \"free\"\n", ""),
+            ("courant = 0.5", "courant = 1.0"),
+            ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
+        ],
+    },
+];
+
+/// One mesh of a convergence study.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Level {
+    /// Elements.
+    pub elements: usize,
+    /// Time step.
+    pub dt: f64,
+    /// Steps.
+    pub steps: usize,
+    /// Normalised L1, L2 and max errors.
+    pub l1: f64,
+    /// L2 error.
+    pub l2: f64,
+    /// Max error.
+    pub linf: f64,
+    /// Wall time of the run [s].
+    pub wall_time: f64,
+}
+
+/// Errors against the exact solution on each mesh of a study.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConvergenceResult {
+    /// The study.
+    pub study: ConvergenceStudy,
+    /// One entry per mesh, coarse to fine.
+    pub levels: Vec<Level>,
+}
+
+impl ConvergenceResult {
+    /// Observed order between level `i - 1` and `i` of the norm picked by `pick`.
+    fn order(&self, i: usize, pick: fn(&Level) -> f64) -> Option<f64> {
+        let (a, b) = (&self.levels[i - 1], &self.levels[i]);
+        let (ea, eb) = (pick(a), pick(b));
+        (ea > 1e-12 && eb > 1e-12)
+            .then(|| (ea / eb).ln() / (b.elements as f64 / a.elements as f64).ln())
+    }
+
+    /// `N, dt, steps, l1, order_l1, l2, order_l2, linf, order_linf` (orders between successive
+    /// meshes; empty where an error is at round-off level).
+    pub fn table(&self) -> Table {
+        let mut t = Table::new(&[
+            "N",
+            "dt",
+            "steps",
+            "l1",
+            "order_l1",
+            "l2",
+            "order_l2",
+            "linf",
+            "order_linf",
+        ]);
+        for (i, level) in self.levels.iter().enumerate() {
+            let order = |pick| {
+                if i == 0 {
+                    Cell::Empty
+                } else {
+                    self.order(i, pick).into()
+                }
+            };
+            t.push(vec![
+                level.elements.into(),
+                level.dt.into(),
+                level.steps.into(),
+                level.l1.into(),
+                order(|l| l.l1),
+                level.l2.into(),
+                order(|l| l.l2),
+                level.linf.into(),
+                order(|l| l.linf),
+            ]);
+        }
+        t
+    }
+}
+
+/// Parse a study's scene.
+fn study_scene(study: &ConvergenceStudy) -> Result<Scene, String> {
+    let mut text = builtin_text(study.scene)
+        .ok_or_else(|| format!("no built-in scene {}", study.scene))?
+        .to_string();
+    if let Some(i) = text.find("[[expect]]") {
+        text.truncate(i);
+    }
+    for (from, to) in study.replacements {
+        if !text.contains(from) {
+            return Err(format!(
+                "study {}: scene {} no longer contains {from:?}",
+                study.name, study.scene
+            ));
+        }
+        text = text.replacen(from, to, 1);
+    }
+    Scene::parse(study.name, &format!("study {}", study.name), &text).map_err(|e| e.to_string())
+}
+
+/// Run a convergence study.
+pub fn run_study(study: &ConvergenceStudy) -> Result<ConvergenceResult, String> {
+    let scene = study_scene(study)?;
+    let levels = scene
+        .cases
+        .par_iter()
+        .map(|case| {
+            let r = crate::run_case(case).map_err(|e| e.to_string())?;
+            let n = r
+                .profiles
+                .first()
+                .and_then(|p| p.norms)
+                .ok_or("no profile norms")?;
+            Ok(Level {
+                elements: r.elements,
+                dt: r.dt,
+                steps: r.steps,
+                l1: n.l1,
+                l2: n.l2,
+                linf: n.linf,
+                wall_time: r.wall_time.as_secs_f64(),
+            })
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+    Ok(ConvergenceResult {
+        study: study.clone(),
+        levels,
+    })
+}
+
+/// A generated report: files relative to the report directory.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Report {
+    /// `(relative path, contents)`.
+    pub files: Vec<(String, String)>,
+    /// True when every expectation held.
+    pub passed: bool,
+}
+
+/// Generate the report for `scenes` (all built-in ones from the CLI) and `studies`, running
+/// scenes and studies in parallel (the results do not depend on the thread count: every case is
+/// independent and results are collected in order).
+pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report, String> {
+    let started = Instant::now();
+    let outcomes: Vec<(SceneOutcome, f64)> = scenes
+        .par_iter()
+        .map(|scene| {
+            let t0 = Instant::now();
+            run_scene(scene)
+                .map(|o| (o, t0.elapsed().as_secs_f64()))
+                .map_err(|e: RunError| format!("{}: {e}", scene.name))
+        })
+        .collect::<Result<_, _>>()?;
+    let convergence: Vec<ConvergenceResult> = studies
+        .par_iter()
+        .map(run_study)
+        .collect::<Result<_, _>>()?;
+    let total = started.elapsed().as_secs_f64();
+
+    let mut files = Vec::new();
+    let mut md = String::from("# courant verification report\n\n");
+    md += "Every built-in scene of courant (Kolman et al.'s Figs. 1, 2, 3, 5, 6 and companions) against its \
+           analytic reference, with the verdict of every expectation, then h-refinement studies. \
+           Regenerate with `cargo run --release -- report`; timings are in [timing.md](timing.md), \
+           every table also as CSV beside it.\n\n";
+    let failed: Vec<String> = outcomes
+        .iter()
+        .zip(scenes)
+        .flat_map(|((o, _), s)| {
+            o.verdicts
+                .iter()
+                .filter(|v| !v.pass)
+                .map(move |v| format!("{}: {}", s.name, v.describe()))
+        })
+        .collect();
+    let count: usize = outcomes.iter().map(|(o, _)| o.verdicts.len()).sum();
+    md += &format!(
+        "**{} expectations, {} failed.**\n\n## Contents\n\n",
+        count,
+        failed.len()
+    );
+    for scene in scenes {
+        md += &format!(
+            "- [{}](#{}) — {}\n",
+            scene.name,
+            anchor(&scene.name),
+            scene.description
+        );
+    }
+    md += "- [Convergence studies](#convergence-studies)\n\n";
+    for ((outcome, _), scene) in outcomes.iter().zip(scenes) {
+        md += &format!(
+            "## {}\n\n{}\n\nSource of truth: {}\n\n",
+            scene.name, scene.description, scene.source
+        );
+        for (file, table) in scene_tables(outcome) {
+            md += &format!(
+                "[`{}/{file}`]({}/{file})\n\n{}\n",
+                scene.name,
+                scene.name,
+                table.to_markdown(SHOWN)
+            );
+            files.push((format!("{}/{file}", scene.name), table.to_csv(STORED)));
+        }
+        if !outcome.verdicts.is_empty() {
+            md += "Expectations:\n\n";
+            for v in &outcome.verdicts {
+                md += &format!("- {}\n", v.describe());
+            }
+            md += "\n";
+        }
+    }
+    md += "## Convergence studies\n\nErrors of element stresses against the exact element averages, \
+           normalised by |sigma0| and L; observed orders between successive meshes.\n\n";
+    for c in &convergence {
+        let table = c.table();
+        md += &format!(
+            "### {}\n\nExpected: {}\n\n[`convergence/{}.csv`](convergence/{}.csv)\n\n{}\n",
+            c.study.title,
+            c.study.expected,
+            c.study.name,
+            c.study.name,
+            table.to_markdown(SHOWN)
+        );
+        files.push((
+            format!("convergence/{}.csv", c.study.name),
+            table.to_csv(STORED),
+        ));
+    }
+    files.push(("index.md".into(), md));
+
+    // Timings: everything that changes from run to run.
+    let mut timing = Table::new(&["item", "wall_time_s"]);
+    for ((_, seconds), scene) in outcomes.iter().zip(scenes) {
+        timing.push(vec![
+            format!("scene {}", scene.name).into(),
+            (*seconds).into(),
+        ]);
+    }
+    for c in &convergence {
+        for level in &c.levels {
+            timing.push(vec![
+                format!("study {} N = {}", c.study.name, level.elements).into(),
+                level.wall_time.into(),
+            ]);
+        }
+    }
+    timing.push(vec!["total (parallel)".into(), total.into()]);
+    let mut tmd = String::from("# Timings\n\n");
+    tmd += &format!(
+        "Generated {} on {}; {} threads; `{}`.\n\n",
+        date(),
+        cpu(),
+        rayon::current_num_threads(),
+        rustc()
+    );
+    tmd += &timing.to_markdown(Precision::Significant {
+        digits: 3,
+        floor: 0.0,
+    });
+    files.push(("timing.md".into(), tmd));
+    files.push(("timing.csv".into(), timing.to_csv(Precision::RoundTrip)));
+    Ok(Report {
+        files,
+        passed: failed.is_empty(),
+    })
+}
+
+/// The deterministic tables of a scene (wall-time columns dropped), by file name.
+fn scene_tables(o: &SceneOutcome) -> Vec<(String, Table)> {
+    let drop = ["wall_time_s"];
+    let mut tables = Vec::new();
+    if !o.results.is_empty() {
+        tables.push((
+            "summary.csv".to_string(),
+            crate::results::summary_table(&o.results).without(&drop),
+        ));
+        tables.push((
+            "norms.csv".to_string(),
+            crate::results::norms_table(&o.results),
+        ));
+    }
+    if !o.spectra.is_empty() {
+        tables.push((
+            "summary.csv".to_string(),
+            crate::results::spectrum_summary_table(&o.spectra).without(&drop),
+        ));
+    }
+    if !o.dispersion.is_empty() {
+        tables.push((
+            "dispersion.csv".to_string(),
+            crate::dispersion::dispersion_table(&o.dispersion),
+        ));
+    }
+    if !o.contact.is_empty() {
+        tables.push((
+            "summary.csv".to_string(),
+            crate::contact_study::contact_summary_table(&o.contact).without(&drop),
+        ));
+    }
+    for s in &o.sweeps {
+        tables.push((
+            "stability.csv".to_string(),
+            crate::contact_study::sweep_table(s),
+        ));
+    }
+    tables
+}
+
+/// The built-in scenes, parsed.
+pub fn builtin_scenes() -> Result<Vec<Scene>, String> {
+    BUILTIN_SCENES
+        .iter()
+        .map(|(name, _)| {
+            crate::builtin::builtin_scene(name)
+                .unwrap_or_else(|| {
+                    Err(crate::scene::SceneError {
+                        file: name.to_string(),
+                        line: 0,
+                        column: 0,
+                        key: String::new(),
+                        message: "missing".into(),
+                    })
+                })
+                .map_err(|e| e.to_string())
+        })
+        .collect()
+}
+
+fn anchor(name: &str) -> String {
+    name.to_lowercase()
+        .replace(|c: char| !c.is_alphanumeric() && c != '-' && c != '_', "")
+}
+
+fn date() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    format!("{secs} s after the Unix epoch (UTC)")
+}
+
+fn cpu() -> String {
+    let model = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split(':').nth(1))
+                .map(|m| m.trim().to_string())
+        })
+        .unwrap_or_else(|| "an unknown CPU".into());
+    format!(
+        "{model} ({} logical cores)",
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    )
+}
+
+fn rustc() -> String {
+    std::process::Command::new("rustc")
+        .arg("--version")
+        .output()
+        .ok()
+        .and_then(|o| String::from_utf8(o.stdout).ok())
+        .map(|s| s.trim().to_string())
+        .unwrap_or_else(|| "rustc version unknown".into())
+}
