@@ -5,6 +5,7 @@
 //! precision).
 
 use crate::builtin::{BUILTIN_SCENES, builtin_text};
+use crate::document::{self, Block};
 use crate::run::{SceneOutcome, run_scene};
 use crate::scene::Scene;
 use crate::table::{Cell, Precision, Table};
@@ -277,11 +278,15 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
     let total = started.elapsed().as_secs_f64();
 
     let mut files = Vec::new();
-    let mut md = String::from("# courant verification report\n\n");
-    md += "Every built-in scene of courant (Kolman et al.'s Figs. 1, 2, 3, 5, 6 and companions) against its \
-           analytic reference, with the verdict of every expectation, then h-refinement studies. \
-           Regenerate with `cargo run --release -- report`; timings are in [timing.md](timing.md), \
-           every table also as CSV beside it.\n\n";
+    let mut doc = vec![
+        Block::Heading(1, "courant verification report".into()),
+        Block::Paragraph(
+            "Every built-in scene of courant (Kolman et al.'s Figs. 1, 2, 3, 5, 6 and companions) against its \
+             analytic reference, with the verdict of every expectation, then h-refinement studies. Regenerate \
+             with `cargo run --release -- report`; timings are in `timing.md`, every table also as CSV beside it."
+                .into(),
+        ),
+    ];
     let failed: Vec<String> = outcomes
         .iter()
         .zip(scenes)
@@ -293,60 +298,79 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
         })
         .collect();
     let count: usize = outcomes.iter().map(|(o, _)| o.verdicts.len()).sum();
-    md += &format!(
-        "**{} expectations, {} failed.**\n\n## Contents\n\n",
-        count,
+    doc.push(Block::Paragraph(format!(
+        "{count} expectations, {} failed.",
         failed.len()
-    );
-    for scene in scenes {
-        md += &format!(
-            "- [{}](#{}) — {}\n",
-            scene.name,
-            anchor(&scene.name),
-            scene.description
-        );
+    )));
+    if !failed.is_empty() {
+        doc.push(Block::List(failed.clone()));
     }
-    md += "- [Convergence studies](#convergence-studies)\n\n";
+    doc.push(Block::Heading(2, "Contents".into()));
+    let mut contents: Vec<String> = scenes
+        .iter()
+        .map(|s| format!("{} — {}", s.name, s.description))
+        .collect();
+    contents.push("Convergence studies".into());
+    doc.push(Block::List(contents));
     for ((outcome, _), scene) in outcomes.iter().zip(scenes) {
-        md += &format!(
-            "## {}\n\n{}\n\nSource of truth: {}\n\n",
-            scene.name, scene.description, scene.source
-        );
+        doc.push(Block::Heading(2, scene.name.clone()));
+        doc.push(Block::Paragraph(format!(
+            "{} Source of truth: {}.",
+            scene.description, scene.source
+        )));
+        for (svg_name, caption, svg) in crate::report_figures::scene_figures(scene, outcome) {
+            let file = format!("{}/{svg_name}", scene.name);
+            files.push((file.clone(), svg.clone()));
+            doc.push(Block::Figure { svg, file, caption });
+        }
         for (file, table) in scene_tables(outcome) {
-            md += &format!(
-                "[`{}/{file}`]({}/{file})\n\n{}\n",
-                scene.name,
-                scene.name,
-                table.to_markdown(SHOWN)
-            );
-            files.push((format!("{}/{file}", scene.name), table.to_csv(STORED)));
+            let csv = format!("{}/{file}", scene.name);
+            files.push((csv.clone(), table.to_csv(STORED)));
+            doc.push(Block::Table {
+                table,
+                precision: SHOWN,
+                csv: Some(csv),
+            });
         }
         if !outcome.verdicts.is_empty() {
-            md += "Expectations:\n\n";
-            for v in &outcome.verdicts {
-                md += &format!("- {}\n", v.describe());
-            }
-            md += "\n";
+            doc.push(Block::Paragraph("Expectations:".into()));
+            doc.push(Block::List(
+                outcome.verdicts.iter().map(|v| v.describe()).collect(),
+            ));
         }
     }
-    md += "## Convergence studies\n\nErrors of element stresses against the exact element averages, \
-           normalised by |sigma0| and L; observed orders between successive meshes.\n\n";
+    doc.push(Block::Heading(2, "Convergence studies".into()));
+    doc.push(Block::Paragraph(
+        "Errors of element stresses against the exact element averages, normalised by |sigma0| and L; \
+         observed orders between successive meshes."
+            .into(),
+    ));
     for c in &convergence {
         let table = c.table();
-        md += &format!(
-            "### {}\n\nExpected: {}\n\n[`convergence/{}.csv`](convergence/{}.csv)\n\n{}\n",
-            c.study.title,
-            c.study.expected,
-            c.study.name,
-            c.study.name,
-            table.to_markdown(SHOWN)
-        );
-        files.push((
-            format!("convergence/{}.csv", c.study.name),
-            table.to_csv(STORED),
-        ));
+        doc.push(Block::Heading(3, c.study.title.into()));
+        doc.push(Block::Paragraph(format!("Expected: {}", c.study.expected)));
+        if let Some(svg) = crate::report_figures::convergence_figure(c) {
+            let file = format!("convergence/{}.svg", c.study.name);
+            files.push((file.clone(), svg.clone()));
+            doc.push(Block::Figure {
+                svg,
+                file,
+                caption: format!("Errors against N: {}", c.study.title),
+            });
+        }
+        let csv = format!("convergence/{}.csv", c.study.name);
+        files.push((csv.clone(), table.to_csv(STORED)));
+        doc.push(Block::Table {
+            table,
+            precision: SHOWN,
+            csv: Some(csv),
+        });
     }
-    files.push(("index.md".into(), md));
+    files.push(("index.md".into(), document::markdown(&doc)));
+    files.push((
+        "index.html".into(),
+        document::html("courant verification report", &doc),
+    ));
 
     // Timings: everything that changes from run to run.
     let mut timing = Table::new(&["item", "wall_time_s"]);
@@ -444,11 +468,6 @@ pub fn builtin_scenes() -> Result<Vec<Scene>, String> {
                 .map_err(|e| e.to_string())
         })
         .collect()
-}
-
-fn anchor(name: &str) -> String {
-    name.to_lowercase()
-        .replace(|c: char| !c.is_alphanumeric() && c != '-' && c != '_', "")
 }
 
 fn date() -> String {

@@ -50,6 +50,23 @@ fn report_has_sections_tables_and_deterministic_content() {
     );
     assert!(index.contains("pass  co1 linf"), "verdicts listed");
     assert!(!index.contains("wall_time"), "timings stay out of index.md");
+    let html = &a.files.iter().find(|f| f.0 == "index.html").unwrap().1;
+    assert!(html.starts_with("<!DOCTYPE html>") && html.trim_end().ends_with("</html>"));
+    for tag in ["table", "tr", "ul", "p", "h2", "figure", "svg"] {
+        let (open, close) = (
+            html.matches(&format!("<{tag}>")).count() + html.matches(&format!("<{tag} ")).count(),
+            html.matches(&format!("</{tag}>")).count(),
+        );
+        assert_eq!(
+            open, close,
+            "<{tag}> opened {open} times, closed {close} times"
+        );
+    }
+    assert!(
+        !html.contains("src=\"http") && !html.contains("href=\"http"),
+        "no network resources are loaded"
+    );
+    assert!(!html.contains("<script"), "no scripts");
     for (name, text) in &a.files {
         if name.ends_with(".csv") {
             let mut reader = csv::Reader::from_reader(text.as_bytes());
