@@ -23,6 +23,10 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         include_str!("../scenes/contact_unequal.toml"),
     ),
     ("dispersion", include_str!("../scenes/dispersion.toml")),
+    (
+        "courant_sweep",
+        include_str!("../scenes/courant_sweep.toml"),
+    ),
 ];
 
 /// The text of a built-in scene.
