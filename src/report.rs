@@ -262,19 +262,34 @@ pub struct Report {
 /// independent and results are collected in order).
 pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report, String> {
     let started = Instant::now();
+    // Progress on a terminal only (indicatif draws to stderr and hides itself otherwise).
+    let progress = indicatif::ProgressBar::new((scenes.len() + studies.len()) as u64);
+    progress.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
     let outcomes: Vec<(SceneOutcome, f64)> = scenes
         .par_iter()
         .map(|scene| {
             let t0 = Instant::now();
-            run_scene(scene)
+            let outcome = run_scene(scene)
                 .map(|o| (o, t0.elapsed().as_secs_f64()))
-                .map_err(|e: RunError| format!("{}: {e}", scene.name))
+                .map_err(|e: RunError| format!("{}: {e}", scene.name));
+            progress.set_message(scene.name.clone());
+            progress.inc(1);
+            outcome
         })
         .collect::<Result<_, _>>()?;
     let convergence: Vec<ConvergenceResult> = studies
         .par_iter()
-        .map(run_study)
+        .map(|study| {
+            let result = run_study(study);
+            progress.set_message(study.name);
+            progress.inc(1);
+            result
+        })
         .collect::<Result<_, _>>()?;
+    progress.finish_and_clear();
     let total = started.elapsed().as_secs_f64();
 
     let mut files = Vec::new();
