@@ -27,6 +27,13 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         "courant_sweep",
         include_str!("../scenes/courant_sweep.toml"),
     ),
+    (
+        "stability_extremes",
+        include_str!("../scenes/stability_extremes.toml"),
+    ),
+    ("fig1_si", include_str!("../scenes/fig1_si.toml")),
+    ("long_run", include_str!("../scenes/long_run.toml")),
+    ("graded_1e4", include_str!("../scenes/graded_1e4.toml")),
 ];
 
 /// The text of a built-in scene.
