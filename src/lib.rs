@@ -24,6 +24,7 @@ pub mod run;
 pub mod scene;
 pub mod spectra;
 pub mod table;
+pub mod work_precision;
 pub mod write;
 
 pub use run::{CaseResult, SceneOutcome, Status, run_case, run_scene};

@@ -290,6 +290,11 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
         })
         .collect::<Result<_, _>>()?;
     progress.finish_and_clear();
+    let work: Vec<Vec<crate::work_precision::WorkPoint>> =
+        crate::work_precision::WORK_PRECISION_STUDIES
+            .par_iter()
+            .map(crate::work_precision::run)
+            .collect::<Result<_, _>>()?;
     let total = started.elapsed().as_secs_f64();
 
     let mut files = Vec::new();
@@ -326,6 +331,7 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
         .map(|s| format!("{} — {}", s.name, s.description))
         .collect();
     contents.push("Convergence studies".into());
+    contents.push("Work and precision".into());
     doc.push(Block::List(contents));
     for ((outcome, _), scene) in outcomes.iter().zip(scenes) {
         doc.push(Block::Heading(2, scene.name.clone()));
@@ -381,6 +387,22 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
             csv: Some(csv),
         });
     }
+    doc.push(Block::Heading(2, "Work and precision".into()));
+    doc.push(Block::Paragraph(
+        "Error against work (elements x steps, machine-independent) per scheme or mass kind over a sequence \
+         of meshes: the cheapest way to a given accuracy is the lowest curve. A node-step does not cost the \
+         same in every scheme: per node-step Park's step costs about 5x, CMM/AMM about 4.5x and RMM about \
+         1.6x a lumped CD step (`cargo bench --bench cd_step`); CPU times of these runs are in `timing.md`."
+            .into(),
+    ));
+    for (study, points) in crate::work_precision::WORK_PRECISION_STUDIES
+        .iter()
+        .zip(&work)
+    {
+        let (blocks, more) = crate::work_precision::blocks(study, points, SHOWN, STORED);
+        doc.extend(blocks);
+        files.extend(more);
+    }
     files.push(("index.md".into(), document::markdown(&doc)));
     files.push((
         "index.html".into(),
@@ -400,6 +422,21 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
             timing.push(vec![
                 format!("study {} N = {}", c.study.name, level.elements).into(),
                 level.wall_time.into(),
+            ]);
+        }
+    }
+    for (study, points) in crate::work_precision::WORK_PRECISION_STUDIES
+        .iter()
+        .zip(&work)
+    {
+        for p in points {
+            timing.push(vec![
+                format!(
+                    "work-precision {} {} N = {}",
+                    study.name, p.method, p.elements
+                )
+                .into(),
+                p.wall_time.into(),
             ]);
         }
     }
