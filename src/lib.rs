@@ -7,6 +7,7 @@
 //! writes named CSV tables ([`results`], [`table`], [`write`](mod@write)).
 
 pub mod baseline;
+pub mod bench_table;
 pub mod builtin;
 pub mod check;
 pub mod contact_study;

@@ -453,6 +453,25 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
         digits: 3,
         floor: 0.0,
     });
+    tmd += "\n## Benchmarks\n\n";
+    match crate::bench_table::bench_table(std::path::Path::new("target/criterion")) {
+        Some(bench) => {
+            tmd += "Criterion medians from `target/criterion` (run `cargo bench` to refresh), per node-step, beside a \
+                    bandwidth model: the bytes of arrays each node-step touches and the rate that implies. Up to \
+                    N = 1e5 the arrays stay in cache; at 1e6 the model rate approaches the memory bandwidth.\n\n";
+            tmd += &bench.to_markdown(Precision::Significant {
+                digits: 3,
+                floor: 0.0,
+            });
+            files.push((
+                "timing.benchmarks.csv".into(),
+                bench.to_csv(Precision::RoundTrip),
+            ));
+        }
+        None => {
+            tmd += "No criterion results found in `target/criterion`: run `cargo bench` first.\n"
+        }
+    }
     files.push(("timing.md".into(), tmd));
     files.push(("timing.csv".into(), timing.to_csv(Precision::RoundTrip)));
     Ok(Report {

@@ -1,0 +1,112 @@
+//! The benchmark table of the report's timing section: criterion's medians read from
+//! `target/criterion/<group>/<function>/<N>/new/estimates.json` (written by `cargo bench`),
+//! in ns per node-step, beside a bandwidth model (bytes of arrays each node-step touches).
+
+use crate::table::Table;
+use std::path::Path;
+
+/// Bytes each node-step reads or writes in the model (8-byte values, every array touched once):
+/// the lumped step reads and writes u and v and reads k and dt/m (48 B); with energies it also
+/// reads m (56 B); the matrix-mass step adds r, r_prev, a and the factor or M^-1 entries (~120 B);
+/// Park reads u, v, a and six element constants and writes u, v, a (~150 B).
+fn bytes_per_node_step(group: &str, function: &str) -> Option<u64> {
+    match (group, function) {
+        ("lumped_cd_step", "step") => Some(48),
+        ("lumped_cd_step", "step_with_energy")
+        | ("mass_kind_step", "lmm")
+        | ("park_step", "cd") => Some(56),
+        ("mass_kind_step", _) => Some(120),
+        ("park_step", _) => Some(150),
+        _ => None,
+    }
+}
+
+/// `benchmark, N, median_ns_per_iteration, ns_per_node_step, model_bytes_per_node_step,
+/// model_GB_per_s` for every criterion result found under `criterion_dir`; `None` when there
+/// are none (run `cargo bench` first).
+pub fn bench_table(criterion_dir: &Path) -> Option<Table> {
+    let mut rows: Vec<(String, String, u64, f64)> = Vec::new();
+    for group in std::fs::read_dir(criterion_dir).ok()?.flatten() {
+        let group_name = group.file_name().to_string_lossy().to_string();
+        for function in std::fs::read_dir(group.path())
+            .ok()
+            .into_iter()
+            .flatten()
+            .flatten()
+        {
+            let function_name = function.file_name().to_string_lossy().to_string();
+            for size in std::fs::read_dir(function.path())
+                .ok()
+                .into_iter()
+                .flatten()
+                .flatten()
+            {
+                let Ok(n) = size.file_name().to_string_lossy().parse::<u64>() else {
+                    continue;
+                };
+                let Ok(text) = std::fs::read_to_string(size.path().join("new/estimates.json"))
+                else {
+                    continue;
+                };
+                let Ok(json) = serde_json::from_str::<serde_json::Value>(&text) else {
+                    continue;
+                };
+                if let Some(median) = json["median"]["point_estimate"].as_f64() {
+                    rows.push((group_name.clone(), function_name.clone(), n, median));
+                }
+            }
+        }
+    }
+    if rows.is_empty() {
+        return None;
+    }
+    rows.sort_by(|a, b| (&a.0, &a.1, a.2).cmp(&(&b.0, &b.1, b.2)));
+    let mut table = Table::new(&[
+        "benchmark",
+        "N",
+        "median_ns_per_iteration",
+        "ns_per_node_step",
+        "model_bytes_per_node_step",
+        "model_GB_per_s",
+    ]);
+    for (group, function, n, median) in rows {
+        // A dense spectrum benchmark iterates one eigen-solve, not a time step.
+        let is_step = group != "spectrum_dense";
+        let per_node = is_step.then(|| median / (n as f64 + 1.0));
+        let bytes = bytes_per_node_step(&group, &function);
+        table.push(vec![
+            format!("{group}/{function}").into(),
+            (n as usize).into(),
+            median.into(),
+            per_node.into(),
+            bytes.map(|b| b as usize).into(),
+            bytes.zip(per_node).map(|(b, t)| b as f64 / t).into(),
+        ]);
+    }
+    Some(table)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A synthetic criterion tree: 48 B per node-step at 0.5 ns per node-step must read 96 GB/s;
+    /// an empty or missing directory gives no table.
+    #[test]
+    fn reads_criterion_median_and_applies_bandwidth_model() {
+        let dir = std::env::temp_dir().join(format!("courant-bench-table-{}", std::process::id()));
+        let leaf = dir.join("lumped_cd_step/step/999/new");
+        std::fs::create_dir_all(&leaf).unwrap();
+        std::fs::write(
+            leaf.join("estimates.json"),
+            r#"{"median":{"point_estimate":500.0}}"#,
+        )
+        .unwrap();
+        let table = bench_table(&dir).expect("one result");
+        let csv = table.to_csv(crate::table::Precision::RoundTrip);
+        std::fs::remove_dir_all(&dir).unwrap();
+        let row = csv.lines().nth(1).unwrap();
+        assert_eq!(row, "lumped_cd_step/step,999,500,0.5,48,96");
+        assert!(bench_table(&dir).is_none());
+    }
+}
