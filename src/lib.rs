@@ -24,6 +24,7 @@ pub mod results;
 pub mod run;
 pub mod scene;
 pub mod spectra;
+pub mod stability_table;
 pub mod table;
 pub mod work_precision;
 pub mod write;
