@@ -97,59 +97,60 @@ fn lumped_cd_step(c: &mut Criterion) {
     group.finish();
 }
 
-/// One run step (with energies, as runs take it) per mass kind on the graded bar, N = 1e5, at half
+/// One run step (with energies, as runs take it) per mass kind on the graded bar, N = 1e3, 1e5, 1e6, at half
 /// of each kind's critical Courant number. Targets (issue 3): RMM within 2x of LMM, CMM and AMM
 /// within 3x.
 fn mass_kind_step(c: &mut Criterion) {
     use courant_solver::matrix_kernel::MatrixCentralDifference;
     use courant_solver::{MassKind, MassOperator};
-    let n = 100_000;
     let forces = [(0usize, 1.0f64)];
-    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
     let mut group = c.benchmark_group("mass_kind_step");
     group
         .warm_up_time(Duration::from_secs(1))
-        .sample_size(30)
+        .sample_size(20)
         .measurement_time(Duration::from_secs(3));
-    group.throughput(Throughput::Elements(n as u64));
-    let mut lumped = graded_kernel(n);
-    group.bench_function(BenchmarkId::new("lmm", n), |b| {
-        b.iter(|| lumped.step_with_energy(black_box(&forces)))
-    });
-    assert_finite(&lumped);
-    for kind in [
-        MassKind::Consistent,
-        MassKind::Averaged { beta: 0.5 },
-        MassKind::Reciprocal { beta: 0.5 },
-    ] {
-        let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
-        let operator = MassOperator::new(&model, kind).unwrap();
-        let v_half: Vec<f64> = (0..=n)
-            .map(|i| {
-                if i == n {
-                    0.0
-                } else {
-                    1e-3 * (FRAC_PI_2 * i as f64 / n as f64).cos()
-                }
-            })
-            .collect();
-        let zeros = vec![0.0; n + 1];
-        let start = courant_solver::matrix_kernel::StartState {
-            displacement: &zeros,
-            half_step_velocity: &v_half,
-            acceleration: &zeros,
-            residual: &zeros,
-            kinetic_staggered: 0.0,
-        };
-        let mut kernel = MatrixCentralDifference::new(dt, model.stiffness(), operator, &start);
-        let name = kind.label().replace(['(', ')'], "");
-        group.bench_function(BenchmarkId::new(name, n), |b| {
-            b.iter(|| kernel.step_with_energy(black_box(&forces)))
+    for n in SIZES {
+        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        group.throughput(Throughput::Elements(n as u64));
+        let mut lumped = graded_kernel(n);
+        group.bench_function(BenchmarkId::new("lmm", n), |b| {
+            b.iter(|| lumped.step_with_energy(black_box(&forces)))
         });
-        assert!(
-            kernel.displacement().iter().all(|x| x.is_finite()),
-            "{kind:?} blew up"
-        );
+        assert_finite(&lumped);
+        for kind in [
+            MassKind::Consistent,
+            MassKind::Averaged { beta: 0.5 },
+            MassKind::Reciprocal { beta: 0.5 },
+        ] {
+            let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
+            let operator = MassOperator::new(&model, kind).unwrap();
+            let v_half: Vec<f64> = (0..=n)
+                .map(|i| {
+                    if i == n {
+                        0.0
+                    } else {
+                        1e-3 * (FRAC_PI_2 * i as f64 / n as f64).cos()
+                    }
+                })
+                .collect();
+            let zeros = vec![0.0; n + 1];
+            let start = courant_solver::matrix_kernel::StartState {
+                displacement: &zeros,
+                half_step_velocity: &v_half,
+                acceleration: &zeros,
+                residual: &zeros,
+                kinetic_staggered: 0.0,
+            };
+            let mut kernel = MatrixCentralDifference::new(dt, model.stiffness(), operator, &start);
+            let name = kind.label().replace(['(', ')'], "");
+            group.bench_function(BenchmarkId::new(name, n), |b| {
+                b.iter(|| kernel.step_with_energy(black_box(&forces)))
+            });
+            assert!(
+                kernel.displacement().iter().all(|x| x.is_finite()),
+                "{kind:?} blew up"
+            );
+        }
     }
     group.finish();
 }
@@ -186,39 +187,40 @@ fn spectrum_dense(c: &mut Criterion) {
 }
 
 /// One step of Park's scheme (theta = 1/2, with and without local stepping) against the lumped
-/// CD run step on the Fig. 2 graded bar, N = 1e5, Co = 0.5. Target (issue 4): within 3x of CD.
+/// CD run step on the Fig. 2 graded bar, N = 1e3, 1e5, 1e6, Co = 0.5. Target (issue 4): within 3x of CD.
 fn park_step(c: &mut Criterion) {
     use courant_solver::{ParkOptions, ParkScheme};
-    let n = 100_000;
-    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
-    let dt = 0.5 * model.bar().stiffest_element().1;
     let mut group = c.benchmark_group("park_step");
     group
         .warm_up_time(Duration::from_secs(1))
-        .sample_size(30)
+        .sample_size(20)
         .measurement_time(Duration::from_secs(3));
-    group.throughput(Throughput::Elements(n as u64));
-    let forces = [(0usize, 1.0f64)];
-    let mut cd = graded_kernel(n);
-    group.bench_function(BenchmarkId::new("cd", n), |b| {
-        b.iter(|| cd.step_with_energy(black_box(&forces)))
-    });
-    for local_stepping in [false, true] {
-        let options = ParkOptions {
-            local_stepping,
-            ..ParkOptions::default()
-        };
-        let mut park = ParkScheme::new(&model, dt, options).unwrap();
-        park.start(&model);
-        let mut t = 0.0;
-        group.bench_function(BenchmarkId::new(options.label(), n), |b| {
-            b.iter(|| {
-                let e = park.step(black_box(&model), t);
-                t += dt;
-                e
-            })
+    for n in SIZES {
+        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let dt = 0.5 * model.bar().stiffest_element().1;
+        group.throughput(Throughput::Elements(n as u64));
+        let forces = [(0usize, 1.0f64)];
+        let mut cd = graded_kernel(n);
+        group.bench_function(BenchmarkId::new("cd", n), |b| {
+            b.iter(|| cd.step_with_energy(black_box(&forces)))
         });
-        assert!(park.displacement().iter().all(|x| x.is_finite()));
+        for local_stepping in [false, true] {
+            let options = ParkOptions {
+                local_stepping,
+                ..ParkOptions::default()
+            };
+            let mut park = ParkScheme::new(&model, dt, options).unwrap();
+            park.start(&model);
+            let mut t = 0.0;
+            group.bench_function(BenchmarkId::new(options.label(), n), |b| {
+                b.iter(|| {
+                    let e = park.step(black_box(&model), t);
+                    t += dt;
+                    e
+                })
+            });
+            assert!(park.displacement().iter().all(|x| x.is_finite()));
+        }
     }
     group.finish();
 }

@@ -472,8 +472,9 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
     timing.push(vec!["total (parallel)".into(), total.into()]);
     let mut tmd = String::from("# Timings\n\n");
     tmd += &format!(
-        "Generated {} on {}; {} threads; `{}`.\n\n",
+        "Generated {} from commit `{}` on {}; {} threads; `{}`.\n\n",
         date(),
+        commit(),
         cpu(),
         rayon::current_num_threads(),
         rustc()
@@ -591,6 +592,18 @@ fn cpu() -> String {
         "{model} ({} logical cores)",
         std::thread::available_parallelism().map_or(1, |n| n.get())
     )
+}
+
+/// The commit the report was made from (`git describe --always --dirty`), or "unknown".
+fn commit() -> String {
+    std::process::Command::new("git")
+        .args(["describe", "--always", "--dirty"])
+        .output()
+        .ok()
+        .filter(|o| o.status.success())
+        .and_then(|o| String::from_utf8(o.stdout).ok())
+        .map(|s| s.trim().to_string())
+        .unwrap_or_else(|| "unknown".into())
 }
 
 fn rustc() -> String {
