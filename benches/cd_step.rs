@@ -37,13 +37,10 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 /// Element counts.
 const SIZES: [usize; 3] = [1_000, 100_000, 1_000_000];
 
-/// The graded, loaded, free-fixed bar of `n` elements and its kernel at Courant number 0.5.
-fn graded_kernel(n: usize) -> LumpedCentralDifference {
-    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
-    let dt = 0.5 * model.bar().stiffest_element().1;
-    let u0 = vec![0.0; n + 1];
-    // Smooth and bounded, zero at the fixed right end (node n).
-    let v_half: Vec<f64> = (0..=n)
+/// A smooth, bounded half-step velocity `1e-3 cos(pi x / 2L)`, zero at the fixed right end
+/// (node `n`), so every nodal value stays a normal float.
+fn smooth_half_velocity(n: usize) -> Vec<f64> {
+    (0..=n)
         .map(|i| {
             if i == n {
                 0.0
@@ -51,7 +48,15 @@ fn graded_kernel(n: usize) -> LumpedCentralDifference {
                 1e-3 * (FRAC_PI_2 * i as f64 / n as f64).cos()
             }
         })
-        .collect();
+        .collect()
+}
+
+/// The graded, loaded, free-fixed bar of `n` elements and its kernel at Courant number 0.5.
+fn graded_kernel(n: usize) -> LumpedCentralDifference {
+    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+    let dt = 0.5 * model.bar().stiffest_element().1;
+    let u0 = vec![0.0; n + 1];
+    let v_half = smooth_half_velocity(n);
     LumpedCentralDifference::new(&model, dt, &u0, &v_half)
 }
 
@@ -124,15 +129,7 @@ fn mass_kind_step(c: &mut Criterion) {
         ] {
             let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
             let operator = MassOperator::new(&model, kind).unwrap();
-            let v_half: Vec<f64> = (0..=n)
-                .map(|i| {
-                    if i == n {
-                        0.0
-                    } else {
-                        1e-3 * (FRAC_PI_2 * i as f64 / n as f64).cos()
-                    }
-                })
-                .collect();
+            let v_half = smooth_half_velocity(n);
             let zeros = vec![0.0; n + 1];
             let start = courant_solver::matrix_kernel::StartState {
                 displacement: &zeros,

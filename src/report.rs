@@ -200,22 +200,32 @@ impl ConvergenceResult {
 
 /// Parse a study's scene.
 fn study_scene(study: &ConvergenceStudy) -> Result<Scene, String> {
-    let mut text = builtin_text(study.scene)
-        .ok_or_else(|| format!("no built-in scene {}", study.scene))?
+    derived_scene(study.name, study.scene, study.replacements)
+}
+
+/// A study's scene: the built-in scene `scene` without its expectations, with each
+/// `(from, to)` substitution applied once; an error names the study when a substitution no
+/// longer matches (the built-in scene changed under the study).
+pub fn derived_scene(
+    name: &str,
+    scene: &str,
+    replacements: &[(&str, &str)],
+) -> Result<Scene, String> {
+    let mut text = builtin_text(scene)
+        .ok_or_else(|| format!("no built-in scene {scene}"))?
         .to_string();
     if let Some(i) = text.find("[[expect]]") {
         text.truncate(i);
     }
-    for (from, to) in study.replacements {
+    for (from, to) in replacements {
         if !text.contains(from) {
             return Err(format!(
-                "study {}: scene {} no longer contains {from:?}",
-                study.name, study.scene
+                "study {name}: scene {scene} no longer contains {from:?}"
             ));
         }
         text = text.replacen(from, to, 1);
     }
-    Scene::parse(study.name, &format!("study {}", study.name), &text).map_err(|e| e.to_string())
+    Scene::parse(name, &format!("study {name}"), &text).map_err(|e| e.to_string())
 }
 
 /// Run a convergence study.

@@ -2,10 +2,8 @@
 //! node-steps, deterministic; CPU time in the report's timing section), over a sequence of
 //! meshes — "which scheme gives me this accuracy cheapest".
 
-use crate::builtin::builtin_text;
 use crate::document::Block;
 use crate::plot::{Axes, Series, SeriesStyle, line_chart};
-use crate::scene::Scene;
 use crate::table::{Precision, Table};
 use rayon::prelude::*;
 
@@ -66,23 +64,7 @@ pub struct WorkPoint {
 
 /// Run a study.
 pub fn run(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
-    let mut text = builtin_text(study.scene)
-        .ok_or_else(|| format!("no built-in scene {}", study.scene))?
-        .to_string();
-    if let Some(i) = text.find("[[expect]]") {
-        text.truncate(i);
-    }
-    for (from, to) in study.replacements {
-        if !text.contains(from) {
-            return Err(format!(
-                "study {}: scene {} no longer contains {from:?}",
-                study.name, study.scene
-            ));
-        }
-        text = text.replacen(from, to, 1);
-    }
-    let scene = Scene::parse(study.name, &format!("study {}", study.name), &text)
-        .map_err(|e| e.to_string())?;
+    let scene = crate::report::derived_scene(study.name, study.scene, study.replacements)?;
     scene
         .cases
         .par_iter()
