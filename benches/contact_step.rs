@@ -1,6 +1,6 @@
 //! Benchmark: the cost contact adds to a step. Fig. 5 problem (seed section 3.2; striker
-//! L1 = 1 onto a bar L2 = 2 at rest, E = rho = A = 1), **1e5 elements per bar** (striker
-//! h = 1e-5, target h = 2e-5), Co = 0.5 relative to the striker, r = 1 bipenalty with
+//! L1 = 1 onto a bar L2 = 2 at rest, E = rho = A = 1), **N = 1e3, 1e5, 1e6 elements per bar**
+//! (striker h = 1/N, target h = 2/N), Co = 0.5 relative to the striker, r = 1 bipenalty with
 //! beta_s = 0.25e4.
 //!
 //! What it measures (wall time of one step, both bars):
@@ -12,36 +12,61 @@
 //!   reads, one scalar update, the contact momentum handed to the kernels as a nodal force) and
 //!   the sample it returns.
 //!
-//! The striker starts in contact (the steppers begin at the impact and the contact lasts 2 L1/c
-//! = 4e5 steps, far more than criterion runs), so the contact branch is the one timed.
+//! The striker starts in contact (the steppers begin at the impact and the contact lasts
+//! 2 L1/c = 4 N steps). Every timed stretch restarts from a clone of the start state after at
+//! most min(N, 2000) steps (the clone is not timed), so the contact branch is the one timed at every N.
 //! Target (issue 5): contact adds at most 5 % to the step; compare the medians.
 //!
 //! Run:      cargo bench --bench contact_step
-//! Numbers:  target/criterion/contact_step/<name>/100000/new/estimates.json
-//!           (`median.point_estimate`, ns per step).
-//! Duration: about 20 s (warm-up 1 s, 3 s of measurement per function).
+//! Numbers:  target/criterion/contact_step/<name>/<N>/new/estimates.json
+//!           (`median.point_estimate`, ns per step of both bars, 2 (N + 1) nodes).
+//! Duration: about 1 min (warm-up 1 s, 3 s of measurement per function and size).
 
 use std::f64::consts::PI;
 use std::hint::black_box;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use courant_solver::contact::{ContactProblem, ContactScheme, ContactStepper, MassPenalty};
 use courant_solver::kernel::LumpedCentralDifference;
 use courant_solver::{Bar, InitialConditions, Mesh, Model, Supports};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
-const ELEMENTS: usize = 100_000;
+/// Elements per bar.
+const SIZES: [usize; 3] = [1_000, 100_000, 1_000_000];
+
+/// Time `iters` calls of `step` on clones of `start`, restarting from a fresh clone (untimed)
+/// every `restart` calls so that the state stays in contact.
+fn timed_from<S: Clone>(
+    start: &S,
+    iters: u64,
+    restart: u64,
+    mut step: impl FnMut(&mut S),
+) -> Duration {
+    let mut total = Duration::ZERO;
+    let mut left = iters;
+    while left > 0 {
+        let chunk = left.min(restart);
+        let mut state = start.clone();
+        let began = Instant::now();
+        for _ in 0..chunk {
+            step(&mut state);
+        }
+        total += began.elapsed();
+        left -= chunk;
+    }
+    total
+}
 
 /// The Fig. 5 bars with a smooth background velocity `1e-3 cos(pi x/L)` added to both (the
 /// striker's v0 = 1 on top), so that every nodal value stays a normal float: a body at rest
 /// ahead of a Co = 0.5 wavefront otherwise carries a band of subnormal values in its dispersive
 /// precursor, whose slow arithmetic would be charged to the contact.
-fn problem() -> ContactProblem {
+fn problem(elements: usize) -> ContactProblem {
     let body = |length: f64, v0: f64| {
         let bar =
-            Bar::homogeneous(Mesh::uniform(length, ELEMENTS).unwrap(), 1.0, 1.0, 1.0).unwrap();
-        let velocity = (0..=ELEMENTS)
-            .map(|i| v0 + 1e-3 * (PI * i as f64 / ELEMENTS as f64).cos())
+            Bar::homogeneous(Mesh::uniform(length, elements).unwrap(), 1.0, 1.0, 1.0).unwrap();
+        let velocity = (0..=elements)
+            .map(|i| v0 + 1e-3 * (PI * i as f64 / elements as f64).cos())
             .collect();
         let initial = InitialConditions {
             displacement: None,
@@ -53,61 +78,74 @@ fn problem() -> ContactProblem {
 }
 
 fn contact_step(c: &mut Criterion) {
-    let problem = problem();
-    let dt = 0.5 * problem.stiffest_transit();
     let mut group = c.benchmark_group("contact_step");
     group
         .warm_up_time(Duration::from_secs(1))
         .measurement_time(Duration::from_secs(3))
-        .sample_size(30)
-        .throughput(Throughput::Elements(2 * ELEMENTS as u64));
+        .sample_size(30);
+    for elements in SIZES {
+        let problem = problem(elements);
+        let dt = 0.5 * problem.stiffest_transit();
+        let restart = elements.min(2_000) as u64;
+        group.throughput(Throughput::Elements(2 * elements as u64));
 
-    // Baseline: the same two kernels without contact, from the contact stepper's start state.
-    let start = ContactStepper::new(&problem, dt, ContactScheme::LagrangeMultiplier).unwrap();
-    let mut kernels: Vec<LumpedCentralDifference> = problem
-        .bodies()
-        .iter()
-        .enumerate()
-        .map(|(b, model)| {
-            LumpedCentralDifference::new(
-                model,
-                dt,
-                start.displacement(b),
-                start.half_step_velocity(b),
-            )
-        })
-        .collect();
-    drop(start);
-    // One zero nodal force per body, at the contact node, as the contact steps pass.
-    let forces = [[(ELEMENTS, 0.0)], [(0, 0.0)]];
-    group.bench_function(BenchmarkId::new("baseline", ELEMENTS), |b| {
-        b.iter(|| {
-            let mut energy = 0.0;
-            for (kernel, f) in kernels.iter_mut().zip(&forces) {
-                energy += kernel.step_with_energy(black_box(f)).kinetic;
-            }
-            energy
-        })
-    });
-
-    let penalty = problem.penalty(0.25e4, MassPenalty::Ratio(1.0)).unwrap();
-    for (name, scheme) in [
-        (
-            "predictor_corrector",
-            ContactScheme::PredictorCorrector(penalty),
-        ),
-        ("cd_bipenalty", ContactScheme::Bipenalty(penalty)),
-        ("lagrange_multiplier", ContactScheme::LagrangeMultiplier),
-    ] {
-        let mut stepper = ContactStepper::new(&problem, dt, scheme).unwrap();
-        group.bench_function(BenchmarkId::new(name, ELEMENTS), |b| {
-            b.iter(|| black_box(stepper.step()))
+        // Baseline: the same two kernels without contact, from the contact stepper's start state.
+        let start = ContactStepper::new(&problem, dt, ContactScheme::LagrangeMultiplier).unwrap();
+        let kernels: Vec<LumpedCentralDifference> = problem
+            .bodies()
+            .iter()
+            .enumerate()
+            .map(|(b, model)| {
+                LumpedCentralDifference::new(
+                    model,
+                    dt,
+                    start.displacement(b),
+                    start.half_step_velocity(b),
+                )
+            })
+            .collect();
+        drop(start);
+        // One zero nodal force per body, at the contact node, as the contact steps pass.
+        let forces = [[(elements, 0.0)], [(0, 0.0)]];
+        group.bench_function(BenchmarkId::new("baseline", elements), |b| {
+            b.iter_custom(|iters| {
+                timed_from(&kernels, iters, restart, |kernels| {
+                    let mut energy = 0.0;
+                    for (kernel, f) in kernels.iter_mut().zip(&forces) {
+                        energy += kernel.step_with_energy(black_box(f)).kinetic;
+                    }
+                    black_box(energy);
+                })
+            })
         });
-        let sample = stepper.sample();
-        assert!(
-            sample.total.is_finite() && sample.impulse > 0.0,
-            "{name}: the benchmark state left the contact or blew up: {sample:?}"
-        );
+
+        let penalty = problem.penalty(0.25e4, MassPenalty::Ratio(1.0)).unwrap();
+        for (name, scheme) in [
+            (
+                "predictor_corrector",
+                ContactScheme::PredictorCorrector(penalty),
+            ),
+            ("cd_bipenalty", ContactScheme::Bipenalty(penalty)),
+            ("lagrange_multiplier", ContactScheme::LagrangeMultiplier),
+        ] {
+            let start = ContactStepper::new(&problem, dt, scheme).unwrap();
+            let mut probe = start.clone();
+            for _ in 0..restart {
+                probe.step();
+            }
+            let sample = probe.sample();
+            assert!(
+                sample.total.is_finite() && sample.active,
+                "{name}: after {restart} steps the benchmark state left the contact or blew up: {sample:?}"
+            );
+            group.bench_function(BenchmarkId::new(name, elements), |b| {
+                b.iter_custom(|iters| {
+                    timed_from(&start, iters, restart, |stepper| {
+                        black_box(stepper.step());
+                    })
+                })
+            });
+        }
     }
     group.finish();
 }

@@ -8,13 +8,15 @@ use std::path::Path;
 /// Bytes each node-step reads or writes in the model (8-byte values, every array touched once):
 /// the lumped step reads and writes u and v and reads k and dt/m (48 B); with energies it also
 /// reads m (56 B); the matrix-mass step adds r, r_prev, a and the factor or M^-1 entries (~120 B);
-/// Park reads u, v, a and six element constants and writes u, v, a (~150 B).
+/// Park reads u, v, a and six element constants and writes u, v, a (~150 B); a contact step is
+/// two lumped steps with energies plus O(1) contact work (56 B per node).
 fn bytes_per_node_step(group: &str, function: &str) -> Option<u64> {
     match (group, function) {
         ("lumped_cd_step", "step") => Some(48),
         ("lumped_cd_step", "step_with_energy")
         | ("mass_kind_step", "lmm")
-        | ("park_step", "cd") => Some(56),
+        | ("park_step", "cd")
+        | ("contact_step", _) => Some(56),
         ("mass_kind_step", _) => Some(120),
         ("park_step", _) => Some(150),
         _ => None,
@@ -70,9 +72,11 @@ pub fn bench_table(criterion_dir: &Path) -> Option<Table> {
         "model_GB_per_s",
     ]);
     for (group, function, n, median) in rows {
-        // A dense spectrum benchmark iterates one eigen-solve, not a time step.
+        // A dense spectrum benchmark iterates one eigen-solve, not a time step; a contact step
+        // advances two bars of N elements each.
         let is_step = group != "spectrum_dense";
-        let per_node = is_step.then(|| median / (n as f64 + 1.0));
+        let nodes = if group == "contact_step" { 2 } else { 1 } as f64 * (n as f64 + 1.0);
+        let per_node = is_step.then(|| median / nodes);
         let bytes = bytes_per_node_step(&group, &function);
         table.push(vec![
             format!("{group}/{function}").into(),

@@ -28,12 +28,24 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         include_str!("../scenes/courant_sweep.toml"),
     ),
     (
+        "courant_sweep_schemes",
+        include_str!("../scenes/courant_sweep_schemes.toml"),
+    ),
+    (
         "stability_extremes",
         include_str!("../scenes/stability_extremes.toml"),
     ),
     ("fig1_si", include_str!("../scenes/fig1_si.toml")),
     ("long_run", include_str!("../scenes/long_run.toml")),
     ("graded_1e4", include_str!("../scenes/graded_1e4.toml")),
+    (
+        "contact_courant_sweep",
+        include_str!("../scenes/contact_courant_sweep.toml"),
+    ),
+    (
+        "contact_extremes",
+        include_str!("../scenes/contact_extremes.toml"),
+    ),
 ];
 
 /// The text of a built-in scene.

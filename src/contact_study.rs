@@ -33,6 +33,10 @@ pub struct ContactResult {
     /// `|duration - exact|/exact`, the duration between the first and last crossings of half the
     /// smallest plateau force of the reference (NaN when the force never reached it).
     pub duration_error: f64,
+    /// `sum_k |F(t_k) - F_exact(t_k)| (t_k - t_{k-1}) / impulse_exact` over the recorded
+    /// samples: the L1 norm in time of the force error, relative to the exact impulse (a
+    /// discrete L1 error of the force history, seed Figs. 4-5 against 1D wave theory).
+    pub force_l1_error: f64,
     /// Energy of the real masses (kinetic + strain) at the end over the initial energy.
     pub energy_ratio: f64,
     /// Wall time of the run.
@@ -96,6 +100,13 @@ pub fn run_contact(case: &ContactCase) -> Result<ContactResult, InputError> {
         }
         _ => f64::NAN,
     };
+    let force_l1_error = run
+        .history
+        .windows(2)
+        .zip(reference.iter().skip(1))
+        .map(|(pair, exact)| (pair[1].force - exact).abs() * (pair[1].time - pair[0].time))
+        .sum::<f64>()
+        / case.reference.impulse();
     let energy = |s: &courant_solver::contact::ContactSample| s.kinetic + s.strain;
     let energy_ratio = match (run.history.first(), run.history.last()) {
         (Some(a), Some(b)) if energy(a) > 0.0 => energy(b) / energy(a),
@@ -111,6 +122,7 @@ pub fn run_contact(case: &ContactCase) -> Result<ContactResult, InputError> {
         plateau_deviation,
         impulse_error,
         duration_error,
+        force_l1_error,
         energy_ratio,
         wall_time,
     })
@@ -168,6 +180,7 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
         "plateau_deviation",
         "impulse_error",
         "duration_error",
+        "force_l1_error",
         "energy_ratio",
         "max_force",
         "status",
@@ -192,6 +205,7 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
             r.plateau_deviation.into(),
             r.impulse_error.into(),
             r.duration_error.into(),
+            r.force_l1_error.into(),
             r.energy_ratio.into(),
             r.run.max_force.into(),
             status.into(),

@@ -129,6 +129,7 @@ pub fn evaluate(scene: &Scene, outcome: &crate::SceneOutcome) -> Vec<Verdict> {
                         Metric::PlateauDeviation => Measured::Value(r.plateau_deviation),
                         Metric::ImpulseError => Measured::Value(r.impulse_error),
                         Metric::DurationError => Measured::Value(r.duration_error),
+                        Metric::ForceL1Error => Measured::Value(r.force_l1_error),
                         Metric::EnergyRatio => Measured::Value(r.energy_ratio),
                         _ => Measured::Flag(r.diverged.is_some()),
                     };
@@ -205,6 +206,7 @@ fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
         | Metric::PlateauDeviation
         | Metric::ImpulseError
         | Metric::DurationError
+        | Metric::ForceL1Error
         | Metric::EnergyRatio
         | Metric::CourantDeviation => Measured::Missing("not a time-stepping metric".into()),
     }

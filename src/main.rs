@@ -270,8 +270,8 @@ fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
     }
     if !outcome.contact.is_empty() {
         println!(
-            "  {:<32} {:>8} {:>8} {:>10} {:>10} {:>10} {:>10}  status",
-            "case", "Co", "Co_crit", "plateau", "impulse", "duration", "energy"
+            "  {:<32} {:>8} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}  status",
+            "case", "Co", "Co_crit", "plateau", "impulse", "duration", "force_l1", "energy"
         );
         for c in &outcome.contact {
             let status = match &c.diverged {
@@ -279,13 +279,14 @@ fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
                 Some(d) => format!("DIVERGED: {d}"),
             };
             println!(
-                "  {:<32} {:>8.4} {:>8.4} {:>10.3e} {:>10.3e} {:>10.3e} {:>10.4}  {status}",
+                "  {:<32} {:>8.4} {:>8.4} {:>10.3e} {:>10.3e} {:>10.3e} {:>10.3e} {:>10.4}  {status}",
                 c.case,
                 c.run.courant,
                 c.run.critical.critical_courant(),
                 c.plateau_deviation,
                 c.impulse_error,
                 c.duration_error,
+                c.force_l1_error,
                 c.energy_ratio
             );
         }

@@ -4,7 +4,9 @@ use crate::metrics::ErrorNorms;
 use crate::reference::Reference;
 use crate::scene::Case;
 use courant_references::Energies;
+use courant_solver::Mesh;
 use courant_solver::{CriticalStep, DivergenceError, EnergyLog, NodeHistory, RunError, RunOutput};
+use std::collections::HashMap;
 use std::time::{Duration, Instant};
 
 /// A stress profile beside its reference.
@@ -96,9 +98,40 @@ impl CaseResult {
     }
 }
 
+/// Exact profiles already evaluated, keyed by the reference's name and stress scale, the mesh's
+/// node coordinates and the time (bit patterns): the cases of a scene share their reference, so a
+/// Courant or scheme sweep evaluates each exact profile (element averages and extreme) once. The
+/// values are those a fresh evaluation gives, bit for bit.
+#[derive(Debug, Default)]
+pub struct ProfileCache {
+    entries: HashMap<ProfileKey, (Vec<f64>, f64)>,
+}
+
+type ProfileKey = (&'static str, u64, Vec<u64>, u64);
+
+impl ProfileCache {
+    fn exact(&mut self, reference: &Reference, mesh: &Mesh, t: f64) -> (Vec<f64>, f64) {
+        let key = (
+            reference.name(),
+            reference.stress_scale().to_bits(),
+            mesh.nodes().iter().map(|x| x.to_bits()).collect(),
+            t.to_bits(),
+        );
+        self.entries
+            .entry(key)
+            .or_insert_with(|| (reference.element_averages(mesh, t), reference.extreme(t)))
+            .clone()
+    }
+}
+
 /// Run a case and compare it with its reference. A divergence (allowed unstable runs only) is a
 /// status, not an error: its partial outputs are kept.
 pub fn run_case(case: &Case) -> Result<CaseResult, RunError> {
+    run_case_with(case, &mut ProfileCache::default())
+}
+
+/// [`run_case`] with exact profiles taken from (and added to) `cache`.
+pub fn run_case_with(case: &Case, cache: &mut ProfileCache) -> Result<CaseResult, RunError> {
     let started = Instant::now();
     let outcome = case
         .integrator
@@ -109,10 +142,16 @@ pub fn run_case(case: &Case) -> Result<CaseResult, RunError> {
         Err(RunError::Diverged { error, partial }) => (*partial, Status::Diverged(error)),
         Err(other) => return Err(other),
     };
-    Ok(compare(case, output, status, wall_time))
+    Ok(compare(case, output, status, wall_time, cache))
 }
 
-fn compare(case: &Case, output: RunOutput, status: Status, wall_time: Duration) -> CaseResult {
+fn compare(
+    case: &Case,
+    output: RunOutput,
+    status: Status,
+    wall_time: Duration,
+    cache: &mut ProfileCache,
+) -> CaseResult {
     let mesh = case.model.bar().mesh();
     let reference = case.reference.as_ref();
     let x: Vec<f64> = (0..mesh.element_count())
@@ -122,7 +161,7 @@ fn compare(case: &Case, output: RunOutput, status: Status, wall_time: Duration) 
         .profiles
         .into_iter()
         .map(|p| {
-            let exact = reference.map(|r| (r.element_averages(mesh, p.time), r.extreme(p.time)));
+            let exact = reference.map(|r| cache.exact(r, mesh, p.time));
             let norms = reference.zip(exact.as_ref()).map(|(r, (avg, env))| {
                 ErrorNorms::of(mesh, &p.stress, avg, *env, r.stress_scale(), r.load_sign())
             });
@@ -215,10 +254,11 @@ impl SceneOutcome {
 
 /// Run every case of a scene and check its expectations.
 pub fn run_scene(scene: &crate::Scene) -> Result<SceneOutcome, RunError> {
+    let mut cache = ProfileCache::default();
     let results = scene
         .cases
         .iter()
-        .map(run_case)
+        .map(|case| run_case_with(case, &mut cache))
         .collect::<Result<Vec<_>, _>>()?;
     let spectra = scene
         .spectra

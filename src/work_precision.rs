@@ -1,6 +1,8 @@
 //! Work-precision studies: for each scheme, the error against the work it cost (steps and
 //! node-steps, deterministic; CPU time in the report's timing section), over a sequence of
-//! meshes — "which scheme gives me this accuracy cheapest".
+//! meshes — "which scheme gives me this accuracy cheapest". Time-stepping studies measure the
+//! normalised L1 error of a stress profile; contact studies the L1-in-time error of the contact
+//! force over the exact impulse (1D wave theory, methods.md §7).
 
 use crate::document::Block;
 use crate::plot::{Axes, Series, SeriesStyle, line_chart};
@@ -16,9 +18,18 @@ pub struct WorkPrecisionStudy {
     pub title: &'static str,
     /// The built-in scene it starts from.
     pub scene: &'static str,
-    /// Text substitutions making the mesh a list (cases `n<N>-<scheme>-...`).
+    /// Text substitutions making the mesh a list (cases `n<N>-<scheme>-...`); in a contact
+    /// study `{n}` and `{2n}` take each of `contact_meshes` in turn.
     pub replacements: &'static [(&'static str, &'static str)],
+    /// Contact studies: the striker's element counts, one derived scene each (a contact scene
+    /// has one mesh). Empty for time-stepping studies.
+    pub contact_meshes: &'static [usize],
+    /// What the error column measures.
+    pub error: &'static str,
 }
+
+/// Error label of time-stepping studies.
+const STRESS_L1: &str = "L1 error / |sigma0|";
 
 /// The built-in work-precision studies.
 pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
@@ -35,6 +46,8 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
             ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
             ("history_points = [0.0, 0.5]", "history_points = []"),
         ],
+        contact_meshes: &[],
+        error: STRESS_L1,
     },
     WorkPrecisionStudy {
         name: "fig2_schemes",
@@ -44,6 +57,30 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
             ("elements = 100", "elements = [50, 100, 200, 400]"),
             ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
         ],
+        contact_meshes: &[],
+        error: STRESS_L1,
+    },
+    WorkPrecisionStudy {
+        name: "fig5_contact",
+        title: "Fig. 5 impact, contact schemes (beta_s = 2500, r = 1, Co = 0.5)",
+        scene: "fig5",
+        replacements: &[
+            (
+                "striker = { length = 1.0, elements = 100 }",
+                "striker = { length = 1.0, elements = {n} }",
+            ),
+            (
+                "target = { length = 2.0, elements = 200 }",
+                "target = { length = 2.0, elements = {2n} }",
+            ),
+            (
+                "schemes = [\"cd-penalty\", \"cd-bipenalty\", \"predictor-corrector\", \"lagrange-multiplier\"]",
+                "schemes = [\"cd-bipenalty\", \"predictor-corrector\", \"lagrange-multiplier\"]",
+            ),
+            ("beta_s = [0.25, 25.0, 2500.0, 2.5e7]", "beta_s = 2500.0"),
+        ],
+        contact_meshes: &[25, 50, 100, 200, 400, 800],
+        error: "L1 force error / impulse",
     },
 ];
 
@@ -64,6 +101,9 @@ pub struct WorkPoint {
 
 /// Run a study.
 pub fn run(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
+    if !study.contact_meshes.is_empty() {
+        return run_contact(study);
+    }
     let scene = crate::report::derived_scene(study.name, study.scene, study.replacements)?;
     scene
         .cases
@@ -89,6 +129,52 @@ pub fn run(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
                 elements: r.elements,
                 steps: r.steps,
                 l1,
+                wall_time: r.wall_time.as_secs_f64(),
+            })
+        })
+        .collect()
+}
+
+/// A contact study: one derived scene per striker mesh, every case of each; `elements` counts
+/// the elements of all bodies, the error is [`crate::contact_study::ContactResult::force_l1_error`].
+fn run_contact(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
+    let scenes = study
+        .contact_meshes
+        .iter()
+        .map(|n| {
+            let (n, n2) = (n.to_string(), (2 * n).to_string());
+            let replacements: Vec<(&str, String)> = study
+                .replacements
+                .iter()
+                .map(|(from, to)| (*from, to.replace("{2n}", &n2).replace("{n}", &n)))
+                .collect();
+            let borrowed: Vec<(&str, &str)> =
+                replacements.iter().map(|(f, t)| (*f, t.as_str())).collect();
+            crate::report::derived_scene(study.name, study.scene, &borrowed)
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let cases: Vec<&crate::scene::contact::ContactCase> =
+        scenes.iter().flat_map(|s| &s.contact).collect();
+    cases
+        .par_iter()
+        .map(|case| {
+            let r = crate::contact_study::run_contact(case).map_err(|e| e.to_string())?;
+            if let Some(d) = &r.diverged {
+                return Err(format!(
+                    "study {}: case {} diverged: {d}",
+                    study.name, case.name
+                ));
+            }
+            Ok(WorkPoint {
+                method: case.name.clone(),
+                elements: case
+                    .problem
+                    .bodies()
+                    .iter()
+                    .map(|b| b.bar().element_count())
+                    .sum(),
+                steps: r.run.steps,
+                l1: r.force_l1_error,
                 wall_time: r.wall_time.as_secs_f64(),
             })
         })
@@ -137,7 +223,7 @@ pub fn blocks(
     let mut blocks = vec![Block::Heading(3, study.title.into())];
     let mut files = Vec::new();
     if let Ok(svg) = line_chart(
-        &Axes::log_log(study.title, "work: elements x steps", "L1 error / |sigma0|"),
+        &Axes::log_log(study.title, "work: elements x steps", study.error),
         &series,
     ) {
         let file = format!("work_precision/{}.svg", study.name);

@@ -53,3 +53,64 @@ fn stability_extremes_rows_agree_with_the_critical_step() {
     let csv = stability_table(&rows).to_csv(courant::table::Precision::RoundTrip);
     assert_eq!(csv.lines().filter(|l| l.ends_with(",yes")).count(), 12);
 }
+
+/// Source of truth: the exact critical step of each contact scheme (methods.md §7; seed Fig. 3)
+/// and the unilateral nature of contact, for the `contact_extremes` scene (wall impact, CD with
+/// penalty, bipenalty r = 4, predictor-corrector; beta_s = 1, 1e4, 1e8).
+///
+/// ```text
+///   dt / dt_crit:  0.99     1.00      1.01 (< dt_free)     1.5 (> dt_free at beta_s = 1)
+///                  stable   marginal  contact-unstable     unstable -> guard
+///                                     (contact opens: bounded)
+/// ```
+///
+/// Proves: the 36 contact rows agree with the prediction: the 9 runs below the limit and the 15
+/// runs between the contact and contact-free limits complete every step, the 3 runs above the
+/// contact-free limit are stopped by the guard within a few steps; the penalty runs at 1.5 pump
+/// energy (ratio > 10), the predictor-corrector does not.
+#[test]
+fn contact_extremes_rows_agree_with_the_critical_steps() {
+    let scene = builtin_scenes()
+        .unwrap()
+        .into_iter()
+        .find(|s| s.name == "contact_extremes")
+        .expect("built-in scene");
+    let outcome = run_scene(&scene).unwrap();
+    let rows: Vec<StabilityRow> = outcome
+        .contact
+        .iter()
+        .map(|r| StabilityRow::from_contact(&scene.name, r))
+        .collect();
+    assert_eq!(rows.len(), 36);
+    let count = |verdict: &str| rows.iter().filter(|r| r.predicted == verdict).count();
+    assert_eq!(
+        (
+            count("stable"),
+            count("marginal"),
+            count("contact-unstable"),
+            count("unstable")
+        ),
+        (9, 9, 15, 3)
+    );
+    for (row, r) in rows.iter().zip(&outcome.contact) {
+        assert!(row.agrees(), "{row:?}");
+        if row.predicted == "unstable" {
+            assert!(row.case.ends_with("-bs1-co1.5"), "{}", row.case);
+            assert!(
+                r.run.steps < 20,
+                "{}: caught at step {}",
+                row.case,
+                r.run.steps
+            );
+        }
+        let ratio = row
+            .energy_ratio
+            .expect("contact rows carry the energy ratio");
+        if row.case.starts_with("predictor-corrector") && row.predicted != "unstable" {
+            assert!(ratio < 1.2, "{}: energy ratio {ratio}", row.case);
+        }
+        if row.case.starts_with("cd-") && row.case.ends_with("bs100000000-co1.5") {
+            assert!(ratio > 10.0, "{}: energy ratio {ratio}", row.case);
+        }
+    }
+}

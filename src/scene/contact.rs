@@ -2,10 +2,14 @@
 //! penalty, bipenalty, predictor-corrector and Lagrange-multiplier schemes, and the stability
 //! sweep of the critical Courant number against the penalty stiffness.
 
-use super::schema::{RawContact, RawContactBar, RawContactScene, RawContactStability};
+use super::schema::{
+    RawContact, RawContactBar, RawContactCourantUnit, RawContactScene, RawContactStability,
+};
 use super::{SceneError, Source};
 use courant_references::contact::{ImpactBar, ImpactForce};
-use courant_solver::contact::{ContactIntegrator, ContactProblem, ContactScheme, MassPenalty};
+use courant_solver::contact::{
+    ContactCriticalStep, ContactIntegrator, ContactProblem, ContactScheme, MassPenalty,
+};
 use courant_solver::{Bar, End, Mesh, StabilityPolicy};
 use toml::Spanned;
 
@@ -131,17 +135,23 @@ pub(super) fn cases(
     };
     let reference =
         reference.map_err(|e| src.error(Some(study.problem.span()), "contact", e.to_string()))?;
-    let courant = super::positive(src, &study.courant, "contact.courant")?;
-    let end = super::positive(src, &study.end_time, "contact.end_time")?;
-    let dt = courant * problem.stiffest_transit();
-    let steps_f = (end * striker_impact.transit_time() / dt).ceil();
-    if steps_f > 1e8 {
+    let courants = study.courant.get_ref().values();
+    if courants.is_empty() {
         return Err(src.error(
-            Some(study.end_time.span()),
-            "contact.end_time",
-            format!("needs {steps_f:.2e} steps; at most 1e8"),
+            Some(study.courant.span()),
+            "contact.courant",
+            "give at least one Courant number",
         ));
     }
+    if let Some(bad) = courants.iter().find(|c| !(c.is_finite() && **c > 0.0)) {
+        return Err(src.error(
+            Some(study.courant.span()),
+            "contact.courant",
+            format!("{bad} must be positive and finite"),
+        ));
+    }
+    let end = super::positive(src, &study.end_time, "contact.end_time")?;
+    let end_time = end * striker_impact.transit_time();
     let history_every = match &study.history_every {
         None => 1,
         Some(h) if *h.get_ref() >= 1 => *h.get_ref() as usize,
@@ -223,27 +233,54 @@ pub(super) fn cases(
             }
         };
         for (name, scheme, penalty) in variants {
-            let integrator = ContactIntegrator {
-                dt,
-                scheme,
-                stability,
-            };
-            integrator.check_stability(&problem).map_err(|e| {
-                src.error(
-                    Some(study.courant.span()),
-                    "contact.courant",
-                    format!("case {name}: {e}"),
-                )
-            })?;
-            cases.push(ContactCase {
-                name,
-                problem: problem.clone(),
-                integrator,
-                steps: steps_f as usize,
-                history_every,
-                penalty,
-                reference: reference.clone(),
-            });
+            for &courant in &courants {
+                let case_name = if courants.len() > 1 {
+                    format!("{name}-co{courant}")
+                } else {
+                    name.clone()
+                };
+                let fail = |key: &str, msg: String| {
+                    src.error(
+                        Some(study.courant.span()),
+                        key,
+                        format!("case {case_name}: {msg}"),
+                    )
+                };
+                let dt = match study.courant_unit {
+                    RawContactCourantUnit::StiffestElement => courant * problem.stiffest_transit(),
+                    RawContactCourantUnit::Critical => {
+                        scheme
+                            .validate()
+                            .map_err(|e| fail("contact.beta_s", e.to_string()))?;
+                        courant * ContactCriticalStep::of(&problem, &scheme).applicable
+                    }
+                };
+                let steps_f = (end_time / dt).ceil();
+                if steps_f > 1e8 {
+                    return Err(src.error(
+                        Some(study.end_time.span()),
+                        "contact.end_time",
+                        format!("case {case_name}: needs {steps_f:.2e} steps; at most 1e8"),
+                    ));
+                }
+                let integrator = ContactIntegrator {
+                    dt,
+                    scheme,
+                    stability,
+                };
+                integrator
+                    .check_stability(&problem)
+                    .map_err(|e| fail("contact.courant", e.to_string()))?;
+                cases.push(ContactCase {
+                    name: case_name,
+                    problem: problem.clone(),
+                    integrator,
+                    steps: steps_f as usize,
+                    history_every,
+                    penalty,
+                    reference: reference.clone(),
+                });
+            }
         }
     }
     let mut seen = std::collections::HashSet::new();

@@ -154,6 +154,8 @@ pub enum Metric {
     ImpulseError,
     /// Contact: `|duration - exact| / exact` (duration from the half-plateau crossings).
     DurationError,
+    /// Contact: L1 norm in time of the force error over the exact impulse.
+    ForceL1Error,
     /// Contact: energy of the real masses at the end over the initial energy.
     EnergyRatio,
     /// Contact stability: largest relative deviation of the solver's critical Courant number
@@ -207,6 +209,7 @@ impl Metric {
             Metric::PlateauDeviation => "plateau_deviation",
             Metric::ImpulseError => "impulse_error",
             Metric::DurationError => "duration_error",
+            Metric::ForceL1Error => "force_l1_error",
             Metric::EnergyRatio => "energy_ratio",
             Metric::CourantDeviation => "courant_deviation",
         }
@@ -228,6 +231,7 @@ impl Metric {
             Metric::PlateauDeviation,
             Metric::ImpulseError,
             Metric::DurationError,
+            Metric::ForceL1Error,
             Metric::EnergyRatio,
             Metric::CourantDeviation,
         ]
@@ -243,6 +247,7 @@ impl Metric {
             Metric::PlateauDeviation
             | Metric::ImpulseError
             | Metric::DurationError
+            | Metric::ForceL1Error
             | Metric::EnergyRatio => Study::Contact,
             Metric::CourantDeviation => Study::ContactStability,
             _ => Study::TimeStepping,
@@ -1372,7 +1377,7 @@ fn expectation(
     let fail = |msg: String| src.error(Some(spanned.span()), "expect", msg);
     let metric = Metric::parse(&raw.metric).ok_or_else(|| {
         fail(format!(
-            "metric = \"{}\" is not one of l1, l2, linf, overshoot, energy_balance, energy_lost, tv_ratio, diverged, closed_form_deviation, dispersion_deviation, phase_error_order, plateau_deviation, impulse_error, duration_error, energy_ratio, courant_deviation",
+            "metric = \"{}\" is not one of l1, l2, linf, overshoot, energy_balance, energy_lost, tv_ratio, diverged, closed_form_deviation, dispersion_deviation, phase_error_order, plateau_deviation, impulse_error, duration_error, force_l1_error, energy_ratio, courant_deviation",
             raw.metric
         ))
     })?;

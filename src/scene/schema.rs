@@ -411,8 +411,14 @@ pub struct RawContact {
     pub ratio: Option<Spanned<f64>>,
     /// Dimensionless penalty mass `beta_m = m_p/(rho A h)`, instead of `ratio`.
     pub beta_m: Option<Spanned<f64>>,
-    /// Courant number relative to the stiffest element.
-    pub courant: Spanned<f64>,
+    /// Courant number(s), one case each (named `-co<Co>` when there are several): relative to
+    /// the stiffest element by default, or multiples of each case's exact critical step with
+    /// `courant_unit = "critical"`.
+    pub courant: Spanned<OneOrMany>,
+    /// `stiffest-element` (default, `c dt/h_min`) or `critical`: multiples of the exact
+    /// critical step of each case's scheme (`ContactCriticalStep::applicable`).
+    #[serde(default)]
+    pub courant_unit: RawContactCourantUnit,
     /// End time in transit times of the striker, `2 L1/c1` is one contact of equal bars.
     pub end_time: Spanned<f64>,
     /// Run above the critical step (default false).
@@ -420,6 +426,19 @@ pub struct RawContact {
     pub allow_unstable: bool,
     /// Keep a sample every this many steps (default 1).
     pub history_every: Option<Spanned<i64>>,
+}
+
+/// The unit of a contact scene's Courant numbers.
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum RawContactCourantUnit {
+    /// `c dt / h` of the stiffest element (methods.md §1).
+    #[default]
+    StiffestElement,
+    /// Multiples of the exact critical step of the case's scheme: `2/omega_max` of the
+    /// contact-active pencil for CD with (bi)penalty, `min(dt_free, sqrt((m_c + m_p)/k_s))` for
+    /// the predictor-corrector, the contact-free step for the Lagrange multiplier (methods.md §7).
+    Critical,
 }
 
 /// A contact stability sweep: the critical Courant number of a bar against a rigid wall
