@@ -475,21 +475,6 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
             ]);
         }
     }
-    for (study, points) in crate::work_precision::WORK_PRECISION_STUDIES
-        .iter()
-        .zip(&work)
-    {
-        for p in points {
-            timing.push(vec![
-                format!(
-                    "work-precision {} {} N = {}",
-                    study.name, p.method, p.elements
-                )
-                .into(),
-                p.wall_time.into(),
-            ]);
-        }
-    }
     timing.push(vec!["total (parallel)".into(), total.into()]);
     let mut tmd = String::from("# Timings\n\n");
     tmd += &format!(
@@ -504,6 +489,30 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
         digits: 3,
         floor: 0.0,
     });
+    tmd += "\n## Error against CPU time\n\n\
+            The work-precision runs of the report against the wall time of their integration (one thread \
+            each, on this machine; short runs are noisy). The same points against elements x steps are in \
+            `index.md`.\n\n";
+    for (study, points) in crate::work_precision::WORK_PRECISION_STUDIES
+        .iter()
+        .zip(&work)
+    {
+        if let Some(svg) = crate::work_precision::cpu_chart(study, points) {
+            let file = format!("timing.work_precision_{}.svg", study.name);
+            tmd += &format!("![{}: error against CPU time]({file})\n\n", study.title);
+            files.push((file, svg));
+        }
+    }
+    let cpu =
+        crate::work_precision::cpu_table(crate::work_precision::WORK_PRECISION_STUDIES, &work);
+    tmd += &cpu.to_markdown(Precision::Significant {
+        digits: 3,
+        floor: 0.0,
+    });
+    files.push((
+        "timing.work_precision.csv".into(),
+        cpu.to_csv(Precision::RoundTrip),
+    ));
     tmd += "\n## Benchmarks\n\n";
     match crate::bench_table::bench_table(std::path::Path::new("target/criterion")) {
         Some(bench) => {

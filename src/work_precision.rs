@@ -244,3 +244,50 @@ pub fn blocks(
     });
     (blocks, files)
 }
+
+/// Machine-dependent companion of [`blocks`]: the error against the CPU time of each run (wall
+/// time of the integration, one thread), as a log-log SVG per study; `None` when no point has a
+/// positive time.
+pub fn cpu_chart(study: &WorkPrecisionStudy, points: &[WorkPoint]) -> Option<String> {
+    let mut methods: Vec<&str> = Vec::new();
+    for p in points {
+        if !methods.contains(&p.method.as_str()) {
+            methods.push(&p.method);
+        }
+    }
+    let series: Vec<Series> = methods
+        .iter()
+        .map(|m| {
+            let pts = points
+                .iter()
+                .filter(|p| p.method == *m && p.wall_time > 0.0)
+                .map(|p| (p.wall_time, p.l1))
+                .collect();
+            // Points, not a line: timings of short runs are noisy and need not grow with N.
+            Series::new(m.to_string(), pts, SeriesStyle::Points)
+        })
+        .collect();
+    line_chart(
+        &Axes::log_log(study.title, "CPU time of the run [s]", study.error),
+        &series,
+    )
+    .ok()
+}
+
+/// `study, method, N, steps, l1, wall_time_s` of every study's runs (machine-dependent).
+pub fn cpu_table(studies: &[WorkPrecisionStudy], work: &[Vec<WorkPoint>]) -> Table {
+    let mut t = Table::new(&["study", "method", "N", "steps", "l1", "wall_time_s"]);
+    for (study, points) in studies.iter().zip(work) {
+        for p in points {
+            t.push(vec![
+                study.name.into(),
+                p.method.as_str().into(),
+                p.elements.into(),
+                p.steps.into(),
+                p.l1.into(),
+                p.wall_time.into(),
+            ]);
+        }
+    }
+    t
+}

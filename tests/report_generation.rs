@@ -36,6 +36,8 @@ fn report_has_sections_tables_and_deterministic_content() {
         "fig1/norms.csv",
         "fig6/summary.csv",
         "convergence/fig1_co1.csv",
+        "work_precision/fig5_contact.csv",
+        "timing.work_precision.csv",
     ] {
         assert!(
             names.contains(&expected),
@@ -50,6 +52,14 @@ fn report_has_sections_tables_and_deterministic_content() {
     );
     assert!(index.contains("pass  co1 linf"), "verdicts listed");
     assert!(!index.contains("wall_time"), "timings stay out of index.md");
+    let cpu = &a
+        .files
+        .iter()
+        .find(|f| f.0 == "timing.work_precision.csv")
+        .unwrap()
+        .1;
+    assert!(cpu.starts_with("study,method,N,steps,l1,wall_time_s\n"));
+    assert!(cpu.contains("fig5_contact,lagrange-multiplier,"), "contact schemes timed");
     let html = &a.files.iter().find(|f| f.0 == "index.html").unwrap().1;
     assert!(html.starts_with("<!DOCTYPE html>") && html.trim_end().ends_with("</html>"));
     for tag in ["table", "tr", "ul", "p", "h2", "figure", "svg"] {
