@@ -46,7 +46,13 @@
 //! contributes nothing.) Nodal loads are added afterwards at the loaded nodes only: element `e`
 //! of loaded node `i` adds `free_i theta c_i dt_e^2 beta2 (2/m_e) share_e F` to `u^{n+1}_i`, with
 //! `F = F_i(t^n + dt_e)` (free) or `F_i(t^n + dt_e) - F_i(t^n)` (incremental). The acceleration,
-//! velocity and energies of step 4 follow in a second pass over the nodes. As in the CD kernel
+//! velocity and energies of step 4 are unchanged.
+//!
+//! The step is one sweep over blocks of `BLOCK` = 256 elements (L1-resident): the block's
+//! `q_e D_e` (each computed once), its nodes' `u^{n+1}`, the load corrections among them, then
+//! step 4 for the nodes whose three `u^{n+1}` are final, one node behind the prediction (no
+//! later element reads their `v^n`, `a^n`). The energies are summed in `LANES` = 8 independent
+//! partial sums, so they agree with a sequential sum to round-off. As in the CD kernel
 //! (kernel.rs), the step runs an AVX2-compiled copy of the same code where the CPU has AVX2
 //! (bit-identical results).
 
@@ -107,9 +113,10 @@ impl ParkOptions {
     }
 }
 
-/// Elements per block of the predictor: the block's element terms `w_e` live in a stack buffer
-/// (L1-resident) between the element and the node loop.
-const BLOCK: usize = 512;
+/// Elements per block of the fused sweep: the block's element terms `w_e = q_e D_e` live in a
+/// stack buffer, and the block's slices of every array stay in L1 between its loops (256 was
+/// fastest of 128/256/512 at N = 1e5 and 1e6 on the 2-core machines).
+const BLOCK: usize = 256;
 
 /// Independent partial sums per energy (kept in vector registers; fixed order, deterministic).
 const LANES: usize = 8;
@@ -155,6 +162,9 @@ pub struct ParkScheme {
     mass: Vec<f64>,
     /// Nodes that carry a load (the others have zero external force at every time), ascending.
     loaded_nodes: Vec<usize>,
+    /// Per loaded node: its `u^{n+1}` correction and `F^{n+1}` (filled at each step).
+    load_change: Vec<f64>,
+    load_next: Vec<f64>,
     /// 1 at free nodes, 0 at fixed ones (only the two end nodes can be fixed).
     free: Vec<f64>,
     u: Vec<f64>,
@@ -231,6 +241,9 @@ impl ParkScheme {
                 free[i] * (theta * inverse_count[i] * node_pull[i] + (1.0 - theta) * 0.5 * dt * dt)
             })
             .collect();
+        let loaded_nodes: Vec<usize> = (0..n)
+            .filter(|&i| model.loads().iter().any(|l| l.node == i))
+            .collect();
         let nodal = model.nodal_mass();
         let share_left: Vec<f64> = (0..n)
             .map(|i| {
@@ -263,9 +276,9 @@ impl ParkScheme {
             stiffness: model.stiffness().to_vec(),
             inverse_mass: model.inverse_mass().to_vec(),
             mass: nodal.to_vec(),
-            loaded_nodes: (0..n)
-                .filter(|&i| model.loads().iter().any(|l| l.node == i))
-                .collect(),
+            load_change: vec![0.0; loaded_nodes.len()],
+            load_next: vec![0.0; loaded_nodes.len()],
+            loaded_nodes,
             free,
             u: model.initial_displacement().to_vec(),
             v: model.initial_velocity().to_vec(),
@@ -330,135 +343,12 @@ impl ParkScheme {
 
     #[inline(always)]
     fn advance(&mut self, model: &Model, t: f64) -> StepEnergy {
-        match self.options.variant {
-            ParkVariant::Free => self.predict::<false>(),
-            ParkVariant::Incremental => self.predict::<true>(),
-        }
-        self.correct_for_loads(model, t);
+        self.prepare_loads(model, t);
+        let lanes = match self.options.variant {
+            ParkVariant::Free => self.fused::<false>(),
+            ParkVariant::Incremental => self.fused::<true>(),
+        };
         std::mem::swap(&mut self.u, &mut self.u_next);
-        self.accelerate(model, t + self.dt)
-    }
-
-    /// `u^{n+1}` without loads into `u_next`, in the folded form of the module doc.
-    #[inline(always)]
-    fn predict<const INCREMENTAL: bool>(&mut self) {
-        let n = self.u.len();
-        let elements = n - 1;
-        let (dt, theta) = (self.dt, self.options.theta);
-        let half_theta = 0.5 * theta;
-        let (u, v, a) = (&self.u[..], &self.v[..], &self.a[..]);
-        let (dte, q, pull) = (
-            &self.dt_e[..],
-            &self.pull_stiffness[..],
-            &self.pull_acceleration[..],
-        );
-        let out = &mut self.u_next[..];
-        // w[0] holds w_{e0-1}, w[1..=len] hold w_{e0..e1}.
-        let mut w = [0.0f64; BLOCK + 1];
-        let (mut first, mut last) = (0.0, 0.0);
-        let mut e0 = 0;
-        while e0 < elements {
-            let len = BLOCK.min(elements - e0);
-            {
-                let (uu, vv, aa) = (&u[e0..=e0 + len], &v[e0..=e0 + len], &a[e0..=e0 + len]);
-                let (dd, qq) = (&dte[e0..e0 + len], &q[e0..e0 + len]);
-                let ww = &mut w[1..=len];
-                for k in 0..len {
-                    let d = dd[k];
-                    let stretch = d * (vv[k + 1] - vv[k]) + 0.5 * d * d * (aa[k + 1] - aa[k]);
-                    let stretch = if INCREMENTAL {
-                        stretch
-                    } else {
-                        (uu[k + 1] - uu[k]) + stretch
-                    };
-                    ww[k] = qq[k] * stretch;
-                }
-            }
-            if e0 == 0 {
-                first = w[1];
-            }
-            // Interior nodes i in max(e0, 1)..e0+len: w_{i-1} = w[i-e0], w_i = w[i-e0+1].
-            let from = e0.max(1);
-            let to = e0 + len;
-            if from < to {
-                let skip = from - e0;
-                let m = to - from;
-                let (uu, vv, aa, pp) = (&u[from..to], &v[from..to], &a[from..to], &pull[from..to]);
-                let ww = &w[skip..=skip + m];
-                let oo = &mut out[from..to];
-                for k in 0..m {
-                    oo[k] = (uu[k] + dt * vv[k]) + pp[k] * aa[k] + half_theta * (ww[k + 1] - ww[k]);
-                }
-            }
-            last = w[len];
-            w[0] = w[len];
-            e0 += len;
-        }
-        // End nodes: one element each, inverse count 1, possibly fixed.
-        let end = |i: usize, jump: f64| {
-            self.free[i] * ((u[i] + dt * v[i]) + theta * jump) + pull[i] * a[i]
-        };
-        out[0] = end(0, first);
-        out[n - 1] = end(n - 1, -last);
-    }
-
-    /// Loads on the element problems: a~ gains `2/m_e share F` (free, `F` at `t + dt_e`) or
-    /// `2/m_e share dF` (incremental, `dF = F(t + dt_e) - F(t)`), so u_fs gains `dt_e^2 beta2`
-    /// times that and `u^{n+1}` `free theta/count` times the u_fs change.
-    fn correct_for_loads(&mut self, model: &Model, t: f64) {
-        let n = self.u.len();
-        let incremental = self.options.variant == ParkVariant::Incremental;
-        for &node in &self.loaded_nodes {
-            let now = model.external_force_at(node, t);
-            let mut change = 0.0;
-            for (e, share) in [
-                (node.checked_sub(1), self.share_left[node]),
-                (Some(node).filter(|&k| k + 1 < n), self.share_right[node]),
-            ] {
-                let Some(e) = e else { continue };
-                let el = &self.element_loads[e];
-                let push = model.external_force_at(node, t + el.dt_e);
-                let force = if incremental { push - now } else { push };
-                change += el.pull_at * el.inverse_half_mass * share * force;
-            }
-            self.u_next[node] +=
-                self.free[node] * self.options.theta * self.inverse_count[node] * change;
-        }
-    }
-
-    /// New accelerations `a^{n+1} = M^-1 (F^{n+1} - K u^{n+1})`, trapezoidal velocities and the
-    /// energies; interior load-free nodes in vectorisable sweeps.
-    #[inline(always)]
-    fn accelerate(&mut self, model: &Model, t_next: f64) -> StepEnergy {
-        let n = self.u.len();
-        let mut lanes = Lanes::default();
-        // Nodes 0 and n-1 and loaded nodes one by one; the rest in sweeps.
-        let mut next = 1;
-        for index in 0..self.loaded_nodes.len() {
-            let node = self.loaded_nodes[index];
-            if node == 0 || node == n - 1 {
-                continue;
-            }
-            self.sweep(next, node, &mut lanes);
-            let force = model.external_force_at(node, t_next);
-            self.update_node(node, force, &mut lanes);
-            next = node + 1;
-        }
-        if n > 1 {
-            self.sweep(next, n - 1, &mut lanes);
-        }
-        let force = |i: usize| {
-            if self.loaded_nodes.contains(&i) {
-                model.external_force_at(i, t_next)
-            } else {
-                0.0
-            }
-        };
-        let (f0, f1) = (force(0), force(n - 1));
-        self.update_node(0, f0, &mut lanes);
-        if n > 1 {
-            self.update_node(n - 1, f1, &mut lanes);
-        }
         let (kinetic, impulse, strain) = (
             lanes.kinetic.iter().sum::<f64>(),
             lanes.impulse.iter().sum::<f64>(),
@@ -474,7 +364,151 @@ impl ParkScheme {
         }
     }
 
-    /// Nodes `from..to`, all interior (`1 <= from`, `to <= n-1`) and load-free.
+    /// Loads on the element problems: a~ gains `2/m_e share F` (free, `F` at `t + dt_e`) or
+    /// `2/m_e share dF` (incremental, `dF = F(t + dt_e) - F(t)`), so u_fs gains `dt_e^2 beta2`
+    /// times that and `u^{n+1}` `free theta/count` times the u_fs change. Also `F^{n+1}`.
+    fn prepare_loads(&mut self, model: &Model, t: f64) {
+        let n = self.u.len();
+        let incremental = self.options.variant == ParkVariant::Incremental;
+        for (index, &node) in self.loaded_nodes.iter().enumerate() {
+            let now = model.external_force_at(node, t);
+            let mut change = 0.0;
+            for (e, share) in [
+                (node.checked_sub(1), self.share_left[node]),
+                (Some(node).filter(|&k| k + 1 < n), self.share_right[node]),
+            ] {
+                let Some(e) = e else { continue };
+                let el = &self.element_loads[e];
+                let push = model.external_force_at(node, t + el.dt_e);
+                let force = if incremental { push - now } else { push };
+                change += el.pull_at * el.inverse_half_mass * share * force;
+            }
+            self.load_change[index] =
+                self.free[node] * self.options.theta * self.inverse_count[node] * change;
+            self.load_next[index] = model.external_force_at(node, t + self.dt);
+        }
+    }
+
+    /// Block by block: the load-free prediction of the block's nodes into `u_next`, the load
+    /// corrections among them, then step 4 for the nodes whose neighbours are all predicted
+    /// (one node behind; the next block reads only `v^n`, `a^n` of nodes not yet finished).
+    #[inline(always)]
+    fn fused<const INCREMENTAL: bool>(&mut self) -> Lanes {
+        let n = self.u.len();
+        let elements = n - 1;
+        let mut lanes = Lanes::default();
+        // w[0] holds w_{e0-1}, w[1..=len] hold w_{e0..e0+len}.
+        let mut w = [0.0f64; BLOCK + 1];
+        let (mut corrected, mut finished_loads, mut done) = (0, 0, 0);
+        let mut e0 = 0;
+        while e0 < elements {
+            let len = BLOCK.min(elements - e0);
+            let last = e0 + len == elements;
+            self.predict_block::<INCREMENTAL>(e0, len, last, &mut w);
+            let predicted = if last { n } else { e0 + len };
+            while corrected < self.loaded_nodes.len() && self.loaded_nodes[corrected] < predicted {
+                self.u_next[self.loaded_nodes[corrected]] += self.load_change[corrected];
+                corrected += 1;
+            }
+            let limit = if last { n } else { predicted - 1 };
+            self.finish(done, limit, &mut finished_loads, &mut lanes);
+            done = limit;
+            w[0] = w[len];
+            e0 += len;
+        }
+        lanes
+    }
+
+    /// `u^{n+1}` without loads of the nodes `e0..e0+len` (and node `n-1` when `last`) into
+    /// `u_next`, in the folded form of the module doc; `w[0]` must hold `w_{e0-1}`.
+    #[inline(always)]
+    fn predict_block<const INCREMENTAL: bool>(
+        &mut self,
+        e0: usize,
+        len: usize,
+        last: bool,
+        w: &mut [f64; BLOCK + 1],
+    ) {
+        let n = self.u.len();
+        let (dt, theta) = (self.dt, self.options.theta);
+        let half_theta = 0.5 * theta;
+        let (u, v, a) = (&self.u[..], &self.v[..], &self.a[..]);
+        let pull = &self.pull_acceleration[..];
+        let out = &mut self.u_next[..];
+        {
+            let (uu, vv, aa) = (&u[e0..=e0 + len], &v[e0..=e0 + len], &a[e0..=e0 + len]);
+            let (dd, qq) = (&self.dt_e[e0..e0 + len], &self.pull_stiffness[e0..e0 + len]);
+            let ww = &mut w[1..=len];
+            for k in 0..len {
+                let d = dd[k];
+                let stretch = d * (vv[k + 1] - vv[k]) + 0.5 * d * d * (aa[k + 1] - aa[k]);
+                let stretch = if INCREMENTAL {
+                    stretch
+                } else {
+                    (uu[k + 1] - uu[k]) + stretch
+                };
+                ww[k] = qq[k] * stretch;
+            }
+        }
+        // Interior nodes i in max(e0, 1)..e0+len: w_{i-1} = w[i-e0], w_i = w[i-e0+1].
+        let from = e0.max(1);
+        let to = e0 + len;
+        if from < to {
+            let skip = from - e0;
+            let m = to - from;
+            let (uu, vv, aa, pp) = (&u[from..to], &v[from..to], &a[from..to], &pull[from..to]);
+            let ww = &w[skip..=skip + m];
+            let oo = &mut out[from..to];
+            for k in 0..m {
+                oo[k] = (uu[k] + dt * vv[k]) + pp[k] * aa[k] + half_theta * (ww[k + 1] - ww[k]);
+            }
+        }
+        // End nodes: one element each, inverse count 1, possibly fixed.
+        let free = &self.free;
+        let end =
+            |i: usize, jump: f64| free[i] * ((u[i] + dt * v[i]) + theta * jump) + pull[i] * a[i];
+        if e0 == 0 {
+            out[0] = end(0, w[1]);
+        }
+        if last {
+            out[n - 1] = end(n - 1, -w[len]);
+        }
+    }
+
+    /// Step 4 for the nodes `from..to` (`u_next` final at `from-1..=to`): new accelerations
+    /// `a^{n+1} = M^-1 (F^{n+1} - K u^{n+1})`, trapezoidal velocities and the energies; the end
+    /// and loaded nodes one by one, the rest in vectorisable sweeps. `load` indexes the first
+    /// loaded node not yet finished.
+    #[inline(always)]
+    fn finish(&mut self, from: usize, to: usize, load: &mut usize, lanes: &mut Lanes) {
+        let n = self.u.len();
+        let mut next = from;
+        while next < to {
+            let force = match self.loaded_nodes.get(*load) {
+                Some(&node) if node == next => {
+                    *load += 1;
+                    Some(self.load_next[*load - 1])
+                }
+                _ => None,
+            };
+            if force.is_some() || next == 0 || next == n - 1 {
+                self.update_node(next, force.unwrap_or(0.0), lanes);
+                next += 1;
+                continue;
+            }
+            let stop = match self.loaded_nodes.get(*load) {
+                Some(&node) if node < to => node,
+                _ => to,
+            }
+            .min(n - 1);
+            self.sweep(next, stop, lanes);
+            next = stop;
+        }
+    }
+
+    /// Step 4 for nodes `from..to`, all interior (`1 <= from`, `to <= n-1`) and load-free: the
+    /// updates in one element-wise loop, then the energy sums in a second loop over the (L1-hot)
+    /// block; one fused loop with the sums does not vectorise as well.
     #[inline(always)]
     fn sweep(&mut self, from: usize, to: usize, lanes: &mut Lanes) {
         if from >= to {
@@ -482,10 +516,21 @@ impl ParkScheme {
         }
         let half_dt = 0.5 * self.dt;
         let m = to - from;
-        let u = &self.u[from - 1..=to];
+        let u = &self.u_next[from - 1..=to];
         let k = &self.stiffness[from - 1..to];
         let (im, mass) = (&self.inverse_mass[from..to], &self.mass[from..to]);
         let (v, a) = (&mut self.v[from..to], &mut self.a[from..to]);
+        // The updates first (element-wise, vectorisable), then the energy sums over the block,
+        // still in L1.
+        for i in 0..m {
+            let du = u[i + 2] - u[i + 1];
+            let right = k[i + 1] * du;
+            let left = k[i] * (u[i + 1] - u[i]);
+            let a_next = im[i] * (right - left);
+            v[i] += half_dt * (a[i] + a_next);
+            a[i] = a_next;
+        }
+        let (v, a) = (&*v, &*a);
         let Lanes {
             mut kinetic,
             mut impulse,
@@ -493,49 +538,30 @@ impl ParkScheme {
         } = *lanes;
         let whole = m / LANES * LANES;
         for base in (0..whole).step_by(LANES) {
-            let uu: &[f64; LANES + 2] = u[base..base + LANES + 2]
+            let uu: &[f64; LANES + 1] = u[base + 1..base + LANES + 2]
                 .try_into()
                 .expect("fixed-size window");
-            let kk: &[f64; LANES + 1] = k[base..base + LANES + 1]
-                .try_into()
-                .expect("fixed-size window");
-            let ii: &[f64; LANES] = im[base..base + LANES]
+            let kk: &[f64; LANES] = k[base + 1..base + LANES + 1]
                 .try_into()
                 .expect("fixed-size window");
             let mm: &[f64; LANES] = mass[base..base + LANES]
                 .try_into()
                 .expect("fixed-size window");
-            let vv: &mut [f64; LANES] = (&mut v[base..base + LANES])
-                .try_into()
-                .expect("fixed-size window");
-            let aa: &mut [f64; LANES] = (&mut a[base..base + LANES])
-                .try_into()
-                .expect("fixed-size window");
+            let vv: &[f64; LANES] = v[base..base + LANES].try_into().expect("fixed-size window");
+            let aa: &[f64; LANES] = a[base..base + LANES].try_into().expect("fixed-size window");
             for l in 0..LANES {
-                let du = uu[l + 2] - uu[l + 1];
-                let right = kk[l + 1] * du;
-                let left = kk[l] * (uu[l + 1] - uu[l]);
-                let a_next = ii[l] * (right - left);
-                let v_next = vv[l] + half_dt * (aa[l] + a_next);
-                vv[l] = v_next;
-                aa[l] = a_next;
-                kinetic[l] += mm[l] * v_next * v_next;
-                impulse[l] += mm[l] * a_next * a_next;
-                strain[l] += right * du;
+                let du = uu[l + 1] - uu[l];
+                kinetic[l] += mm[l] * vv[l] * vv[l];
+                impulse[l] += mm[l] * aa[l] * aa[l];
+                strain[l] += kk[l] * du * du;
             }
         }
         for i in whole..m {
             let l = i % LANES;
             let du = u[i + 2] - u[i + 1];
-            let right = k[i + 1] * du;
-            let left = k[i] * (u[i + 1] - u[i]);
-            let a_next = im[i] * (right - left);
-            let v_next = v[i] + half_dt * (a[i] + a_next);
-            v[i] = v_next;
-            a[i] = a_next;
-            kinetic[l] += mass[i] * v_next * v_next;
-            impulse[l] += mass[i] * a_next * a_next;
-            strain[l] += right * du;
+            kinetic[l] += mass[i] * v[i] * v[i];
+            impulse[l] += mass[i] * a[i] * a[i];
+            strain[l] += k[i + 1] * du * du;
         }
         *lanes = Lanes {
             kinetic,
@@ -548,7 +574,7 @@ impl ParkScheme {
     #[inline(always)]
     fn update_node(&mut self, i: usize, force: f64, lanes: &mut Lanes) {
         let n = self.u.len();
-        let u = &self.u;
+        let u = &self.u_next;
         let (right, du) = if i + 1 < n {
             let du = u[i + 1] - u[i];
             (self.stiffness[i] * du, du)
