@@ -38,6 +38,7 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
     ("fig1_si", include_str!("../scenes/fig1_si.toml")),
     ("long_run", include_str!("../scenes/long_run.toml")),
     ("graded_1e4", include_str!("../scenes/graded_1e4.toml")),
+    ("layered_1e4", include_str!("../scenes/layered_1e4.toml")),
     (
         "contact_courant_sweep",
         include_str!("../scenes/contact_courant_sweep.toml"),

@@ -17,11 +17,13 @@ use crate::run::{CaseResult, Status};
 use crate::table::Table;
 
 /// Scenes whose cases sit at the stability extremes (Co at 0.99/1.00/1.01 of each critical value,
-/// modulus ratio 1e4, 1e6-step runs, SI units).
+/// modulus ratio 1e4 on graded and layered bars, 1e6-step runs, SI units, contact with beta_s up
+/// to 1e8).
 pub const STABILITY_SCENES: &[&str] = &[
     "stability_extremes",
     "courant_sweep",
     "graded_1e4",
+    "layered_1e4",
     "layered",
     "long_run",
     "fig1_si",

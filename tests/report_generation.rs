@@ -59,7 +59,10 @@ fn report_has_sections_tables_and_deterministic_content() {
         .unwrap()
         .1;
     assert!(cpu.starts_with("study,method,N,steps,l1,wall_time_s\n"));
-    assert!(cpu.contains("fig5_contact,lagrange-multiplier,"), "contact schemes timed");
+    assert!(
+        cpu.contains("fig5_contact,lagrange-multiplier,"),
+        "contact schemes timed"
+    );
     let html = &a.files.iter().find(|f| f.0 == "index.html").unwrap().1;
     assert!(html.starts_with("<!DOCTYPE html>") && html.trim_end().ends_with("</html>"));
     for tag in ["table", "tr", "ul", "p", "h2", "figure", "svg"] {
