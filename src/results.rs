@@ -89,13 +89,14 @@ pub fn energy_table(result: &CaseResult) -> Table {
     table
 }
 
-/// One row per case: cost (dt, steps, wall time) beside accuracy (worst norms over the profile
+/// One row per case: the scheme that ran (Park's variant and theta named), cost (dt, steps, wall time) beside accuracy (worst norms over the profile
 /// times, energy balance) and how the run ended. `dt_crit` is the exact critical step the run
 /// was checked against; the element (Fried) and nodal Gershgorin estimates stand beside it.
 pub fn summary_table(results: &[CaseResult]) -> Table {
     let mut table = Table::new(&[
         "case",
         "N",
+        "scheme",
         "mass",
         "Co",
         "Co_crit",
@@ -123,6 +124,7 @@ pub fn summary_table(results: &[CaseResult]) -> Table {
         table.push(vec![
             r.case.as_str().into(),
             r.elements.into(),
+            r.scheme.as_str().into(),
             r.critical.mass.label().into(),
             r.courant.into(),
             (r.courant * r.critical.exact / r.dt).into(),

@@ -5,7 +5,9 @@ use crate::reference::Reference;
 use crate::scene::Case;
 use courant_references::Energies;
 use courant_solver::Mesh;
-use courant_solver::{CriticalStep, DivergenceError, EnergyLog, NodeHistory, RunError, RunOutput};
+use courant_solver::{
+    CentralDifference, CriticalStep, DivergenceError, EnergyLog, NodeHistory, RunError, RunOutput,
+};
 use std::collections::HashMap;
 use std::time::{Duration, Instant};
 
@@ -49,6 +51,9 @@ pub enum Status {
 pub struct CaseResult {
     /// Case name.
     pub case: String,
+    /// The time-stepping scheme that ran: `cd`, or Park's with its stepping, element-acceleration
+    /// variant and blend, e.g. `park-lts-free theta=0.5` (methods.md §6).
+    pub scheme: String,
     /// Number of elements.
     pub elements: usize,
     /// Courant number relative to the stiffest element.
@@ -145,6 +150,14 @@ pub fn run_case_with(case: &Case, cache: &mut ProfileCache) -> Result<CaseResult
     Ok(compare(case, output, status, wall_time, cache))
 }
 
+/// What [`CaseResult::scheme`] says of an integrator.
+pub fn scheme_label(integrator: &CentralDifference) -> String {
+    integrator.park.map_or_else(
+        || "cd".to_string(),
+        |park| format!("{} theta={}", park.label(), park.theta),
+    )
+}
+
 fn compare(
     case: &Case,
     output: RunOutput,
@@ -206,6 +219,7 @@ fn compare(
     });
     CaseResult {
         case: case.name.clone(),
+        scheme: scheme_label(&case.integrator),
         elements: mesh.element_count(),
         courant: output.courant,
         dt: output.dt,

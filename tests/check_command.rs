@@ -432,7 +432,7 @@ fn baseline_of_a_fresh_run_passes_and_a_changed_number_fails_naming_file_and_col
     );
     let original = std::fs::read_to_string(&profile).unwrap();
     edit_cell(&profile, 52, 3, |x| x * (1.0 + 1e-10));
-    edit_cell(&base.join("fig1").join("summary.csv"), 2, 18, |_| 999.0);
+    edit_cell(&base.join("fig1").join("summary.csv"), 2, 19, |_| 999.0);
     let out = check(&dir.join("close.xml"));
     assert_eq!(out.status.code(), Some(0), "{}", text(&out));
 

@@ -77,7 +77,7 @@ fn run_writes_profiles_histories_energy_and_summary_and_is_deterministic() {
     }
     assert_eq!(
         header(&scene.join("summary.csv")),
-        "case,N,mass,Co,Co_crit,dt,dt_crit,dt_crit_element,dt_crit_gershgorin,steps,l1,l2,linf,overshoot,tv_ratio,energy_balance,energy_lost,status,wall_time_s"
+        "case,N,scheme,mass,Co,Co_crit,dt,dt_crit,dt_crit_element,dt_crit_gershgorin,steps,l1,l2,linf,overshoot,tv_ratio,energy_balance,energy_lost,status,wall_time_s"
     );
     let mut files: Vec<_> = std::fs::read_dir(&scene)
         .unwrap()

@@ -1,8 +1,10 @@
-//! Small symmetric banded-matrix kernels: tridiagonal matrix-vector products and LDL^T
-//! factorisation (Thomas algorithm), and the inertia (count of negative pivots) of a symmetric
+//! Small symmetric banded-matrix kernels: tridiagonal matrix-vector products, the SPD
+//! solve of [`PartitionedLdl`], and the inertia (count of negative pivots) of a symmetric
 //! banded matrix, which by Sylvester's law of inertia counts the eigenvalues of a definite pencil
 //! below a shift (Wilkinson, The Algebraic Eigenvalue Problem (1965), §5.37; Parlett, The
 //! Symmetric Eigenvalue Problem (1998), §3.3).
+
+pub use crate::partitioned_ldl::PartitionedLdl;
 
 /// Symmetric tridiagonal matrix: `diag[i]`, `off[i] = A[i][i+1] = A[i+1][i]`.
 #[derive(Debug, Clone, PartialEq)]
@@ -41,98 +43,10 @@ impl Tridiagonal {
         }
     }
 
-    /// Twisted factorisation of an SPD tridiagonal matrix, `None` when a pivot is not positive
-    /// (the matrix is not positive definite). See [`TridiagonalLdl`].
-    pub fn factor_spd(&self) -> Option<TridiagonalLdl> {
-        let (a, b) = (&self.diag, &self.off);
-        let n = a.len();
-        let m = n / 2;
-        let mut lower = vec![0.0; n];
-        let mut upper = vec![0.0; n];
-        let mut pivot = vec![0.0; n];
-        // Top rows 0..m: L D L^T from the top; lower[i] couples row i to row i + 1.
-        for i in 0..m {
-            pivot[i] = a[i] - if i > 0 { lower[i - 1] * b[i - 1] } else { 0.0 };
-            lower[i] = b[i] / pivot[i];
-        }
-        // Bottom rows m+1..n: U D U^T from the bottom; upper[i] couples row i to row i - 1.
-        for i in (m + 1..n).rev() {
-            pivot[i] = a[i] - if i + 1 < n { upper[i + 1] * b[i] } else { 0.0 };
-            upper[i] = b[i - 1] / pivot[i];
-        }
-        // The twist row m meets both.
-        pivot[m] = a[m]
-            - if m > 0 { lower[m - 1] * b[m - 1] } else { 0.0 }
-            - if m + 1 < n { upper[m + 1] * b[m] } else { 0.0 };
-        if pivot.iter().any(|p| p.is_nan() || *p <= 0.0) {
-            return None;
-        }
-        let inverse_pivot = pivot.iter().map(|p| 1.0 / p).collect();
-        Some(TridiagonalLdl {
-            twist: m,
-            inverse_pivot,
-            lower,
-            upper,
-        })
-    }
-}
-
-/// Twisted ("burn at both ends") factor of an SPD tridiagonal matrix: `L D L^T` from the top
-/// down to the middle row and `U D U^T` from the bottom up to it (Meurant, SIAM J. Matrix Anal.
-/// Appl. 13 (1992); Parlett and Dhillon 1997). A solve runs two independent recurrences at
-/// once, which roughly halves the latency-bound time of the Thomas algorithm; the arithmetic is
-/// still O(n) and exact up to round-off.
-#[derive(Debug, Clone, PartialEq)]
-pub struct TridiagonalLdl {
-    twist: usize,
-    inverse_pivot: Vec<f64>,
-    lower: Vec<f64>,
-    upper: Vec<f64>,
-}
-
-impl TridiagonalLdl {
-    /// Solve `A x = b` in place (`b` becomes `x`).
-    pub fn solve_in_place(&self, x: &mut [f64]) {
-        let n = x.len();
-        let m = self.twist;
-        let (l, u, p) = (&self.lower, &self.upper, &self.inverse_pivot);
-        // Eliminate towards the twist: rows 1..m from the top, rows n-2..=m+1 from the bottom,
-        // two independent recurrences interleaved.
-        let (top, bottom) = (m.saturating_sub(1), n.saturating_sub(m + 2));
-        let both = top.min(bottom);
-        for j in 0..both {
-            let (i, k) = (1 + j, n - 2 - j);
-            x[i] -= l[i - 1] * x[i - 1];
-            x[k] -= u[k + 1] * x[k + 1];
-        }
-        for i in 1 + both..1 + top {
-            x[i] -= l[i - 1] * x[i - 1];
-        }
-        for k in (m + 1..n - 1 - both).rev() {
-            x[k] -= u[k + 1] * x[k + 1];
-        }
-        let mut twist = x[m];
-        if m > 0 {
-            twist -= l[m - 1] * x[m - 1];
-        }
-        if m + 1 < n {
-            twist -= u[m + 1] * x[m + 1];
-        }
-        x[m] = twist * p[m];
-        // Substitute outwards from the twist, again two recurrences at once.
-        let (up, down) = (m, n - m - 1);
-        let both = up.min(down);
-        for j in 0..both {
-            let (i, k) = (m - 1 - j, m + 1 + j);
-            x[i] = x[i] * p[i] - l[i] * x[i + 1];
-            x[k] = x[k] * p[k] - u[k] * x[k - 1];
-        }
-        for i in (0..m - both).rev() {
-            x[i] = x[i] * p[i] - l[i] * x[i + 1];
-        }
-        for k in m + 1 + both..n {
-            x[k] = x[k] * p[k] - u[k] * x[k - 1];
-        }
+    /// Factor an SPD tridiagonal matrix for solves, `None` when it is not positive definite.
+    /// See [`PartitionedLdl`].
+    pub fn factor_spd(&self) -> Option<PartitionedLdl> {
+        PartitionedLdl::new(self)
     }
 }
 
@@ -229,52 +143,6 @@ impl SymmetricBanded {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn ldl_solve_inverts_the_matrix() {
-        let a = Tridiagonal {
-            diag: vec![4.0, 5.0, 6.0, 7.0],
-            off: vec![1.0, -2.0, 0.5],
-        };
-        let f = a.factor_spd().unwrap();
-        let x = [1.0, -2.0, 3.0, 0.25];
-        let mut b = vec![0.0; 4];
-        a.apply(&x, &mut b);
-        f.solve_in_place(&mut b);
-        for i in 0..4 {
-            assert!((b[i] - x[i]).abs() < 1e-14);
-        }
-    }
-
-    #[test]
-    fn twisted_solve_inverts_every_size() {
-        for n in 1usize..=25 {
-            let a = Tridiagonal {
-                diag: (0..n).map(|i| 3.0 + (i as f64 * 0.7).sin()).collect(),
-                off: (0..n.saturating_sub(1))
-                    .map(|i| 0.9 * (i as f64 * 1.3).cos())
-                    .collect(),
-            };
-            let f = a.factor_spd().unwrap();
-            let x: Vec<f64> = (0..n).map(|i| (i as f64 * 0.37).cos() - 0.2).collect();
-            let mut b = vec![0.0; n];
-            a.apply(&x, &mut b);
-            f.solve_in_place(&mut b);
-            for i in 0..n {
-                assert!(
-                    (b[i] - x[i]).abs() < 1e-13,
-                    "n = {n}, row {i}: {} vs {}",
-                    b[i],
-                    x[i]
-                );
-            }
-        }
-        let indefinite = Tridiagonal {
-            diag: vec![1.0, 1.0],
-            off: vec![2.0],
-        };
-        assert!(indefinite.factor_spd().is_none());
-    }
 
     #[test]
     fn inertia_counts_eigenvalues_of_a_pencil_below_a_shift() {

@@ -24,6 +24,7 @@ pub mod mesh;
 pub mod model;
 pub mod output;
 pub mod park;
+pub mod partitioned_ldl;
 pub mod spectrum;
 pub mod stability;
 pub mod time_step;

@@ -15,7 +15,7 @@
 //! the stiffness pattern; `beta = 1` gives LMM. Dirichlet nodes: their rows and columns are
 //! deleted (of `M`, or of `M^-1` for RMM).
 
-use crate::banded::{SymmetricBanded, Tridiagonal, TridiagonalLdl};
+use crate::banded::{PartitionedLdl, SymmetricBanded, Tridiagonal};
 use crate::error::InputError;
 use crate::model::Model;
 
@@ -126,8 +126,8 @@ pub enum MassOperator {
     Tridiagonal {
         /// `M` with fixed nodes decoupled.
         matrix: Tridiagonal,
-        /// Its (twisted) `L D L^T` factor.
-        factor: TridiagonalLdl,
+        /// Its partitioned `L D L^T` factor.
+        factor: PartitionedLdl,
         /// Fixed-node flags.
         fixed: Vec<bool>,
         /// Indices of the fixed nodes.
@@ -138,7 +138,7 @@ pub enum MassOperator {
         /// `M^-1` with fixed rows and columns zero.
         inverse: Tridiagonal,
         /// Factor of `C` with fixed nodes decoupled.
-        c_factor: TridiagonalLdl,
+        c_factor: PartitionedLdl,
         /// Lumped masses `A`.
         lumped: Vec<f64>,
         /// Fixed-node flags.

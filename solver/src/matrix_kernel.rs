@@ -1,6 +1,6 @@
-//! The central-difference step with a non-diagonal mass (CMM, AMM: a pre-factored tridiagonal
-//! solve; RMM: a tridiagonal product with the assembled `M^-1`, no solve), O(N) per step, no
-//! dense matrix.
+//! The central-difference step with a non-diagonal mass (CMM, AMM: a pre-factored, partitioned
+//! tridiagonal solve, [`crate::partitioned_ldl`]; RMM: a tridiagonal product with the assembled
+//! `M^-1`, no solve), O(N) per step, no dense matrix, no allocation.
 //!
 //! ```text
 //!   u^{n+1}   = u^n + dt v^{n+1/2}
@@ -105,6 +105,10 @@ impl MatrixCentralDifference {
     }
 
     /// Advance one step; `forces` lists `(node, F^{n+1})`, sorted, each node once.
+    ///
+    /// Every pass is a straight sweep; the energy sums run in [`LANES`] independent partial
+    /// sums (node or element `i` adds to lane `i % LANES`, a fixed order, so the result is
+    /// deterministic) so that no pass waits on the latency of one long chain of additions.
     pub fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
         let dt = self.dt;
         for (u, v) in self.u.iter_mut().zip(&self.v) {
@@ -112,27 +116,32 @@ impl MatrixCentralDifference {
         }
         // Element forces N_e = k_e (u_{e+1} - u_e) at padded index e + 1 (ghosts stay 0).
         let n = self.u.len();
-        let mut strain = 0.0;
-        for e in 0..n - 1 {
-            let du = self.u[e + 1] - self.u[e];
-            let force = self.stiffness[e + 1] * du;
-            self.element_force[e + 1] = force;
-            strain += force * du;
-        }
+        let strain = lane_sums(
+            &mut self.element_force[1..n],
+            (&self.stiffness[1..n], &self.u[..]),
+            |e, force, (k, u)| {
+                let du = u[e + 1] - u[e];
+                *force = k[e] * du;
+                [*force * du, 0.0]
+            },
+        )[0];
         // r_i = N_i - N_{i-1} + F_i.
-        for i in 0..n {
-            self.r[i] = self.element_force[i + 1] - self.element_force[i];
+        for (r, pair) in self.r.iter_mut().zip(self.element_force.windows(2)) {
+            *r = pair[1] - pair[0];
         }
         for &(node, f) in forces {
             self.r[node] += f;
         }
         self.mass.apply_inverse(&self.r, &mut self.a);
-        let (mut increment, mut impulse) = (0.0, 0.0);
-        for i in 0..n {
-            increment += self.v[i] * (self.r_previous[i] + self.r[i]);
-            impulse += self.a[i] * self.r[i];
-            self.v[i] += dt * self.a[i];
-        }
+        let [increment, impulse] = lane_sums(
+            &mut self.v,
+            (&self.a[..], (&self.r_previous[..], &self.r[..])),
+            |i, v, (a, (r_previous, r))| {
+                let terms = [*v * (r_previous[i] + r[i]), a[i] * r[i]];
+                *v += dt * a[i];
+                terms
+            },
+        );
         self.staggered += 0.5 * dt * increment;
         std::mem::swap(&mut self.r, &mut self.r_previous);
         StepEnergy {
@@ -155,4 +164,33 @@ impl MatrixCentralDifference {
             .map(|((v, a), mv)| (v - dt * a) * mv)
             .sum::<f64>()
     }
+}
+
+/// Number of independent partial sums per energy term.
+const LANES: usize = 8;
+
+/// Update every `x[i]` with `f(i, &mut x[i], data)` and sum the two terms it returns, each in
+/// [`LANES`] partial sums added up in a fixed order at the end.
+#[inline(always)]
+fn lane_sums<D: Copy>(
+    x: &mut [f64],
+    data: D,
+    f: impl Fn(usize, &mut f64, D) -> [f64; 2],
+) -> [f64; 2] {
+    let mut lanes = [[0.0; LANES]; 2];
+    let whole = x.len() / LANES * LANES;
+    let (body, rest) = x.split_at_mut(whole);
+    for (c, chunk) in body.chunks_exact_mut(LANES).enumerate() {
+        for (l, xi) in chunk.iter_mut().enumerate() {
+            let [p, q] = f(c * LANES + l, xi, data);
+            lanes[0][l] += p;
+            lanes[1][l] += q;
+        }
+    }
+    for (l, xi) in rest.iter_mut().enumerate() {
+        let [p, q] = f(whole + l, xi, data);
+        lanes[0][l] += p;
+        lanes[1][l] += q;
+    }
+    lanes.map(|lane| lane.iter().sum())
 }

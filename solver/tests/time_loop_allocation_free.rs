@@ -1,0 +1,123 @@
+//! Source of truth: the project's cost rule ("a lumped-mass run stays diagonal and O(N) per step,
+//! with no dense or global matrices in a time loop") and issue 4's "the element loop does no
+//! allocation": every per-step kernel is set up once and then steps without touching the heap.
+//!
+//! ```text
+//!   new(model, dt)  --allocates-->  [ step  step  step ... ]  --0 allocations-->
+//! ```
+//!
+//! Proves: one step of lumped CD, of CD with each non-diagonal mass (CMM, AMM: partitioned
+//! tridiagonal solve; RMM: product with M^-1), and of Park's scheme (global and local stepping,
+//! both variants) performs exactly zero heap allocations, counted by a global allocator wrapper.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use courant_solver::fixtures::graded_seed_bar;
+use courant_solver::kernel::LumpedCentralDifference;
+use courant_solver::matrix_kernel::{MatrixCentralDifference, StartState};
+use courant_solver::{MassKind, MassOperator, ParkOptions, ParkScheme, ParkVariant};
+
+/// The system allocator, counting allocations and reallocations.
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+// SAFETY: every call is forwarded unchanged to the system allocator.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+/// Heap allocations made by `steps` calls of `step`.
+fn allocations_during(steps: usize, mut step: impl FnMut()) -> usize {
+    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    for _ in 0..steps {
+        step();
+    }
+    ALLOCATIONS.load(Ordering::SeqCst) - before
+}
+
+// All kernels are checked in ONE test: the harness runs tests on parallel threads, and another
+// test's set-up would be counted too.
+#[test]
+fn every_time_stepping_kernel_steps_without_allocating() {
+    // 1000 elements: large enough for the partitioned mass solve to use its 8 blocks.
+    let n = 1000;
+    let model = graded_seed_bar(n).unwrap();
+    let element_dt = model.bar().stiffest_element().1;
+    let forces = [(0usize, -1.0f64)];
+
+    let v_half = vec![0.0; n + 1];
+    let mut lumped = LumpedCentralDifference::new(&model, 0.5 * element_dt, &v_half, &v_half);
+    assert_eq!(
+        allocations_during(200, || {
+            std::hint::black_box(lumped.step_with_energy(&forces));
+        }),
+        0,
+        "lumped CD"
+    );
+
+    for kind in [
+        MassKind::Consistent,
+        MassKind::Averaged { beta: 0.5 },
+        MassKind::Reciprocal { beta: 0.5 },
+    ] {
+        let zeros = vec![0.0; n + 1];
+        let start = StartState {
+            displacement: &zeros,
+            half_step_velocity: &zeros,
+            acceleration: &zeros,
+            residual: &zeros,
+            kinetic_staggered: 0.0,
+        };
+        let operator = MassOperator::new(&model, kind).unwrap();
+        let dt = 0.5 * kind.critical_courant() * element_dt;
+        let mut kernel = MatrixCentralDifference::new(dt, model.stiffness(), operator, &start);
+        assert_eq!(
+            allocations_during(200, || {
+                std::hint::black_box(kernel.step_with_energy(&forces));
+            }),
+            0,
+            "{}",
+            kind.label()
+        );
+        assert!(kernel.displacement().iter().all(|u| u.is_finite()));
+    }
+
+    for local_stepping in [false, true] {
+        for variant in [ParkVariant::Free, ParkVariant::Incremental] {
+            let options = ParkOptions {
+                local_stepping,
+                variant,
+                ..ParkOptions::default()
+            };
+            let dt = 0.5 * element_dt;
+            let mut park = ParkScheme::new(&model, dt, options).unwrap();
+            park.start(&model);
+            let mut t = 0.0;
+            assert_eq!(
+                allocations_during(200, || {
+                    std::hint::black_box(park.step(&model, t));
+                    t += dt;
+                }),
+                0,
+                "{}",
+                options.label()
+            );
+            assert!(park.displacement().iter().all(|u| u.is_finite()));
+        }
+    }
+}
