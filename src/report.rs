@@ -39,7 +39,52 @@ pub struct ConvergenceStudy {
     pub scene: &'static str,
     /// Text substitutions applied to the scene (one case per element count must remain).
     pub replacements: &'static [(&'static str, &'static str)],
+    /// What theory allows for the L1, L2 and max errors (`None`: measured, no theory to check).
+    pub bands: [Option<OrderBand>; 3],
 }
+
+/// What theory allows for one error norm of a convergence study.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum OrderBand {
+    /// The order fitted on the finest [`FIT_LEVELS`] meshes lies in `[min, max]`.
+    Order {
+        /// Lowest order admitted.
+        min: f64,
+        /// Highest order admitted.
+        max: f64,
+    },
+    /// Exact up to round-off: the error is at most `max_error` on every mesh.
+    Exact {
+        /// Largest error admitted.
+        max_error: f64,
+    },
+}
+
+/// Picks one error norm of a mesh level.
+type NormOf = fn(&Level) -> f64;
+
+/// Meshes the least-squares order is fitted on (the finest ones).
+pub const FIT_LEVELS: usize = 3;
+
+/// The orders of a dispersive step front (methods.md §3; the bands of
+/// `tests/data/airy_front_convergence.csv`).
+const AIRY_FRONT: [Option<OrderBand>; 3] = [
+    Some(OrderBand::Order {
+        min: 0.42,
+        max: 0.56,
+    }),
+    Some(OrderBand::Order {
+        min: 0.30,
+        max: 0.37,
+    }),
+    Some(OrderBand::Order {
+        min: -0.10,
+        max: 0.10,
+    }),
+];
+
+/// First order in every norm.
+const FIRST_ORDER: Option<OrderBand> = Some(OrderBand::Order { min: 0.9, max: 1.1 });
 
 /// The built-in convergence studies.
 pub const CONVERGENCE_STUDIES: &[ConvergenceStudy] = &[
@@ -47,11 +92,12 @@ pub const CONVERGENCE_STUDIES: &[ConvergenceStudy] = &[
         name: "fig1_co0.5",
         title: "Fig. 1 bar, lumped CD at Co = 0.5, t = 0.5 T",
         expected: "L1 ~ h^(1/2), L2 ~ h^(1/3), Linf does not converge (dispersive step front, methods.md §3)",
+        bands: AIRY_FRONT,
         scene: "fig1",
         replacements: &[
             (
                 "elements = 100",
-                "elements = [50, 100, 200, 400, 800, 1600, 3200, 6400]",
+                "elements = [50, 100, 200, 400, 800, 1600, 3200, 6400, 12800]",
             ),
             ("courant = [1.0, 0.5, 0.1]", "courant = 0.5"),
             ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
@@ -62,11 +108,12 @@ pub const CONVERGENCE_STUDIES: &[ConvergenceStudy] = &[
         name: "fig1_co1",
         title: "Fig. 1 bar, lumped CD at Co = 1, t = 0.5 T",
         expected: "exact to round-off on every mesh (methods.md §3)",
+        bands: [Some(OrderBand::Exact { max_error: 1e-10 }); 3],
         scene: "fig1",
         replacements: &[
             (
                 "elements = 100",
-                "elements = [50, 100, 200, 400, 800, 1600, 3200, 6400]",
+                "elements = [50, 100, 200, 400, 800, 1600, 3200, 6400, 12800]",
             ),
             ("courant = [1.0, 0.5, 0.1]", "courant = 1.0"),
             ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
@@ -77,9 +124,13 @@ pub const CONVERGENCE_STUDIES: &[ConvergenceStudy] = &[
         name: "fig2_park_lts",
         title: "Fig. 2 graded bar, Park with local stepping, Co = 0.5, t = 0.5 T",
         expected: "no closed-form order; compare with CD below",
+        bands: [None; 3],
         scene: "fig2",
         replacements: &[
-            ("elements = 100", "elements = [50, 100, 200, 400]"),
+            (
+                "elements = 100",
+                "elements = [50, 100, 200, 400, 800, 1600]",
+            ),
             (
                 "scheme = [\"cd\", \"park-global\", \"park-lts\"]",
                 "scheme = \"park-lts\"",
@@ -91,9 +142,13 @@ pub const CONVERGENCE_STUDIES: &[ConvergenceStudy] = &[
         name: "fig2_cd",
         title: "Fig. 2 graded bar, lumped CD, Co = 0.5, t = 0.5 T",
         expected: "step front: L1 ~ h^(1/2) at best; the soft part runs far below its own Courant limit",
+        bands: [None; 3],
         scene: "fig2",
         replacements: &[
-            ("elements = 100", "elements = [50, 100, 200, 400]"),
+            (
+                "elements = 100",
+                "elements = [50, 100, 200, 400, 800, 1600]",
+            ),
             (
                 "scheme = [\"cd\", \"park-global\", \"park-lts\"]",
                 "scheme = \"cd\"",
@@ -106,11 +161,12 @@ pub const CONVERGENCE_STUDIES: &[ConvergenceStudy] = &[
         name: "fig2_equal_transit",
         title: "Fig. 2 graded bar on equal-transit-time meshes, lumped CD at Co = 1, t = 0.5 T",
         expected: "first order: the exact layered (Goupillaud) model of the graded bar (methods.md §4)",
+        bands: [FIRST_ORDER; 3],
         scene: "fig2",
         replacements: &[
             (
                 "elements = 100",
-                "elements = [50, 100, 200, 400, 800]\nspacing = \"equal-transit\"",
+                "elements = [50, 100, 200, 400, 800, 1600]\nspacing = \"equal-transit\"",
             ),
             (
                 "scheme = [\"cd\", \"park-global\", \"park-lts\"]",
@@ -158,6 +214,71 @@ impl ConvergenceResult {
         let (ea, eb) = (pick(a), pick(b));
         (ea > 1e-12 && eb > 1e-12)
             .then(|| (ea / eb).ln() / (b.elements as f64 / a.elements as f64).ln())
+    }
+
+    /// Least-squares order on the finest [`FIT_LEVELS`] meshes, `-slope` of `ln e` against
+    /// `ln N`; `None` when an error there is at round-off level (below 1e-12).
+    pub fn fitted_order(&self, pick: fn(&Level) -> f64) -> Option<f64> {
+        let finest = &self.levels[self.levels.len().saturating_sub(FIT_LEVELS)..];
+        if finest.len() < 2 || finest.iter().any(|l| pick(l) <= 1e-12) {
+            return None;
+        }
+        let points: Vec<(f64, f64)> = finest
+            .iter()
+            .map(|l| ((l.elements as f64).ln(), pick(l).ln()))
+            .collect();
+        let count = points.len() as f64;
+        let (mx, my) = points
+            .iter()
+            .fold((0.0, 0.0), |(a, b), (x, y)| (a + x / count, b + y / count));
+        let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
+            (a + (x - mx) * (y - my), b + (x - mx) * (x - mx))
+        });
+        Some(-sxy / sxx)
+    }
+
+    /// One verdict per norm: `(norm, fitted order, what theory allows, pass)`; `pass` is `None`
+    /// for a norm with no band (measured only).
+    pub fn verdicts(&self) -> Vec<(&'static str, Option<f64>, String, Option<bool>)> {
+        let picks: [(&str, NormOf); 3] = [("l1", |l| l.l1), ("l2", |l| l.l2), ("linf", |l| l.linf)];
+        picks
+            .iter()
+            .zip(self.study.bands)
+            .map(|(&(norm, pick), band)| {
+                let fitted = self.fitted_order(pick);
+                let (expected, pass) = match band {
+                    None => ("-".to_string(), None),
+                    Some(OrderBand::Order { min, max }) => (
+                        format!("order in [{min}, {max}]"),
+                        Some(fitted.is_some_and(|p| (min..=max).contains(&p))),
+                    ),
+                    Some(OrderBand::Exact { max_error }) => (
+                        format!("error <= {max_error:e} on every mesh"),
+                        Some(self.levels.iter().all(|l| pick(l) <= max_error)),
+                    ),
+                };
+                (norm, fitted, expected, pass)
+            })
+            .collect()
+    }
+
+    /// `norm, fitted_order, expected, verdict` (fitted on the finest [`FIT_LEVELS`] meshes).
+    pub fn verdict_table(&self) -> Table {
+        let mut t = Table::new(&["norm", "fitted_order", "expected", "verdict"]);
+        for (norm, fitted, expected, pass) in self.verdicts() {
+            t.push(vec![
+                norm.into(),
+                fitted.into(),
+                expected.into(),
+                match pass {
+                    None => "measured",
+                    Some(true) => "pass",
+                    Some(false) => "FAIL",
+                }
+                .into(),
+            ]);
+        }
+        t
     }
 
     /// `N, dt, steps, l1, order_l1, l2, order_l2, linf, order_linf` (orders between successive
@@ -326,10 +447,28 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
                 .filter(|v| !v.pass)
                 .map(move |v| format!("{}: {}", s.name, v.describe()))
         })
+        .chain(convergence.iter().flat_map(|c| {
+            c.verdicts().into_iter().filter(|v| v.3 == Some(false)).map(
+                |(norm, fitted, expected, _)| {
+                    format!(
+                        "convergence {}: {norm} fitted order {}, expected {expected}",
+                        c.study.name,
+                        fitted.map_or("-".into(), |p| format!("{p:.3}"))
+                    )
+                },
+            )
+        }))
         .collect();
-    let count: usize = outcomes.iter().map(|(o, _)| o.verdicts.len()).sum();
+    let count: usize = outcomes
+        .iter()
+        .map(|(o, _)| o.verdicts.len())
+        .sum::<usize>()
+        + convergence
+            .iter()
+            .map(|c| c.verdicts().iter().filter(|v| v.3.is_some()).count())
+            .sum::<usize>();
     doc.push(Block::Paragraph(format!(
-        "{count} expectations, {} failed.",
+        "{count} expectations (scene expectations and convergence-order bands), {} failed.",
         failed.len()
     )));
     if !failed.is_empty() {
@@ -374,7 +513,8 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
     doc.push(Block::Heading(2, "Convergence studies".into()));
     doc.push(Block::Paragraph(
         "Errors of element stresses against the exact element averages, normalised by |sigma0| and L; \
-         observed orders between successive meshes."
+         observed orders between successive meshes, and the order fitted by least squares on the finest \
+         three meshes, checked against the band theory allows where it gives one."
             .into(),
     ));
     for c in &convergence {
@@ -394,6 +534,14 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
         files.push((csv.clone(), table.to_csv(STORED)));
         doc.push(Block::Table {
             table,
+            precision: SHOWN,
+            csv: Some(csv),
+        });
+        let verdicts = c.verdict_table();
+        let csv = format!("convergence/{}.orders.csv", c.study.name);
+        files.push((csv.clone(), verdicts.to_csv(STORED)));
+        doc.push(Block::Table {
+            table: verdicts,
             precision: SHOWN,
             csv: Some(csv),
         });
@@ -441,8 +589,9 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
          1e8) take the exact critical step of their scheme; between it and the contact-free limit linear theory \
          of the closed contact predicts growth, which the unilateral contact bounds by opening \
          (`contact-unstable`: the run completes; energy_ratio shows what it pumped into the bars). {agreeing} of \
-         {} rows agree with the prediction. The contact stability sweeps against the closed forms (beta_s up to \
-         1e8, closed forms to 1e12) are in the fig3 section.",
+         {} rows agree with the prediction. The contact stability sweep of the solver's eigenvalues against the \
+         closed forms (beta_s up to 1e8) is in the fig3 section; the closed forms themselves up to beta_s = 1e12 \
+         are in the last table below.",
         crate::stability_table::STABILITY_SCENES.join(", "),
         stability.len()
     )));
@@ -453,6 +602,28 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
         precision: SHOWN,
         csv: Some("stability/extremes.csv".into()),
     });
+    doc.push(Block::Paragraph(CONTACT_CLOSED_FORMS_TEXT.into()));
+    let table = contact_closed_form_table().map_err(|e| format!("contact closed forms: {e}"))?;
+    files.push((
+        "stability/contact_closed_forms.csv".into(),
+        table.to_csv(STORED),
+    ));
+    doc.push(Block::Table {
+        table,
+        precision: SHOWN,
+        csv: Some("stability/contact_closed_forms.csv".into()),
+    });
+    doc.push(Block::Heading(2, "How this report was made".into()));
+    doc.push(Block::Paragraph(format!(
+        "By `cargo run --release -- report` (courant {}): every built-in scene ({} of them) and {} \
+         convergence studies, run in parallel; the content is identical whatever the thread count. The \
+         commit, date, CPU, thread count and rustc of this run are in `timing.md`, with the wall times: \
+         they change from run to run and machine to machine, while everything on this page changes only \
+         when a result does (CI regenerates the report and fails when this page is out of date).",
+        env!("CARGO_PKG_VERSION"),
+        scenes.len(),
+        convergence.len()
+    )));
     files.push(("index.md".into(), document::markdown(&doc)));
     files.push((
         "index.html".into(),
@@ -601,11 +772,33 @@ pub fn builtin_scenes() -> Result<Vec<Scene>, String> {
         .collect()
 }
 
+/// Now, as an ISO 8601 UTC time.
 fn date() -> String {
     let secs = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());
-    format!("{secs} s after the Unix epoch (UTC)")
+    iso_utc(secs)
+}
+
+/// `secs` after the Unix epoch as `YYYY-MM-DDThh:mm:ssZ` (proleptic Gregorian calendar; days to
+/// civil date after Hinnant, "chrono-Compatible Low-Level Date Algorithms", `civil_from_days`).
+fn iso_utc(secs: u64) -> String {
+    let (days, rest) = (secs / 86_400, secs % 86_400);
+    let z = days as i64 + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!(
+        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}Z",
+        rest / 3600,
+        rest % 3600 / 60,
+        rest % 60
+    )
 }
 
 fn cpu() -> String {
@@ -644,4 +837,213 @@ fn rustc() -> String {
         .and_then(|o| String::from_utf8(o.stdout).ok())
         .map(|s| s.trim().to_string())
         .unwrap_or_else(|| "rustc version unknown".into())
+}
+
+/// The text above the table of [`contact_closed_form_table`].
+const CONTACT_CLOSED_FORMS_TEXT: &str = "Closed-form critical Courant numbers of contact with a rigid \
+     wall (semi-infinite uniform lumped bar, central difference; `courant-references`, methods.md §7) at large \
+     beta_s, each beside its large-beta_s limit: sqrt(2/beta_s) for penalty only (r = -), 1/sqrt(r) for bipenalty \
+     with r > 1, 1 for r <= 1. relative_difference = Cr/limit - 1 (3 significant digits) stands beside first_order, \
+     the leading term of its expansion in 1/beta_s: -1/(2 beta_s) for penalty only, (r/beta_s)(1 - s)/(1 + s) \
+     with s = 1/(sqrt(r) + sqrt(r - 1))^2 for r > 1, 0 for r <= 1. They agree up to beta_s = 1e12, where the \
+     difference is below 1e-11: the closed forms stay accurate there, free of cancellation.";
+
+/// The penalty stiffnesses of [`contact_closed_form_table`].
+const CLOSED_FORM_BETAS: [f64; 4] = [1e6, 1e8, 1e10, 1e12];
+
+/// The penalty ratios of [`contact_closed_form_table`] (`None`: penalty only).
+const CLOSED_FORM_RATIOS: [Option<f64>; 4] = [None, Some(0.25), Some(1.0), Some(4.0)];
+
+/// One row of [`contact_closed_form_table`], unrounded.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct ClosedFormRow {
+    beta_s: f64,
+    /// `None`: penalty only.
+    r: Option<f64>,
+    /// The closed-form critical Courant number.
+    cr: f64,
+    /// Its limit as beta_s -> inf at fixed r.
+    limit: f64,
+    /// The leading term of `cr/limit - 1` in 1/beta_s.
+    first_order: f64,
+}
+
+/// The closed-form contact critical Courant numbers of `courant-references` at beta_s = 1e6 …
+/// 1e12, penalty only and bipenalty r = 1/4, 1, 4, beside their large-beta_s limits.
+fn contact_closed_form_rows() -> Result<Vec<ClosedFormRow>, courant_references::ReferenceError> {
+    use courant_references::contact::{
+        signorini_critical_courant_penalty, signorini_critical_courant_ratio,
+    };
+    let mut rows = Vec::new();
+    for r in CLOSED_FORM_RATIOS {
+        for beta_s in CLOSED_FORM_BETAS {
+            let row = match r {
+                None => ClosedFormRow {
+                    beta_s,
+                    r,
+                    cr: signorini_critical_courant_penalty(beta_s)?,
+                    limit: (2.0 / beta_s).sqrt(),
+                    first_order: -1.0 / (2.0 * beta_s),
+                },
+                Some(r) if r > 1.0 => {
+                    let s = 1.0 / (r.sqrt() + (r - 1.0).sqrt()).powi(2);
+                    ClosedFormRow {
+                        beta_s,
+                        r: Some(r),
+                        cr: signorini_critical_courant_ratio(beta_s, r)?,
+                        limit: 1.0 / r.sqrt(),
+                        first_order: r / beta_s * (1.0 - s) / (1.0 + s),
+                    }
+                }
+                Some(r) => ClosedFormRow {
+                    beta_s,
+                    r: Some(r),
+                    cr: signorini_critical_courant_ratio(beta_s, r)?,
+                    limit: 1.0,
+                    first_order: 0.0,
+                },
+            };
+            rows.push(row);
+        }
+    }
+    Ok(rows)
+}
+
+/// The table of [`contact_closed_form_rows`]: `beta_s, r, cr_closed_form, cr_limit,
+/// relative_difference, first_order` (the last two as text with 3 significant digits, so the
+/// differences, far below the report's display floor, show).
+///
+/// # Errors
+/// A closed form refuses its parameters (it cannot for these fixed, valid values).
+fn contact_closed_form_table() -> Result<Table, courant_references::ReferenceError> {
+    let three = Precision::Significant {
+        digits: 3,
+        floor: 0.0,
+    };
+    let mut table = Table::new(&[
+        "beta_s",
+        "r",
+        "cr_closed_form",
+        "cr_limit",
+        "relative_difference",
+        "first_order",
+    ]);
+    for row in contact_closed_form_rows()? {
+        table.push(vec![
+            row.beta_s.into(),
+            row.r.into(),
+            row.cr.into(),
+            row.limit.into(),
+            three.format(row.cr / row.limit - 1.0).into(),
+            three.format(row.first_order).into(),
+        ]);
+    }
+    Ok(table)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn iso_dates_of_known_instants() {
+        assert_eq!(iso_utc(0), "1970-01-01T00:00:00Z");
+        assert_eq!(iso_utc(951_782_400), "2000-02-29T00:00:00Z");
+        assert_eq!(iso_utc(1_795_324_163), "2026-11-22T05:09:23Z"); // GNU `date -u -d @1795324163`
+    }
+
+    fn study_with(errors: &[(usize, f64)], bands: [Option<OrderBand>; 3]) -> ConvergenceResult {
+        ConvergenceResult {
+            study: ConvergenceStudy {
+                bands,
+                ..CONVERGENCE_STUDIES[0]
+            },
+            levels: errors
+                .iter()
+                .map(|&(elements, e)| Level {
+                    elements,
+                    dt: 1.0 / elements as f64,
+                    steps: elements,
+                    l1: e,
+                    l2: e,
+                    linf: 0.3,
+                    wall_time: 0.0,
+                })
+                .collect(),
+        }
+    }
+
+    #[test]
+    fn fitted_order_is_the_least_squares_slope_of_the_finest_meshes() {
+        // e = 2 N^(-1/2) on the finest three meshes; the coarse one is off the line and ignored.
+        let c = study_with(
+            &[
+                (50, 1.0),
+                (100, 2.0 / 10.0),
+                (200, 2.0 / 200f64.sqrt()),
+                (400, 2.0 / 20.0),
+            ],
+            AIRY_FRONT,
+        );
+        assert!((c.fitted_order(|l| l.l1).unwrap() - 0.5).abs() < 1e-12);
+        let verdicts = c.verdicts();
+        assert_eq!(verdicts[0].3, Some(true), "L1 order 1/2 is in [0.42, 0.56]");
+        assert_eq!(
+            verdicts[1].3,
+            Some(false),
+            "L2 order 1/2 is outside [0.30, 0.37]"
+        );
+        assert_eq!(
+            verdicts[2].3,
+            Some(true),
+            "a constant max error has order 0"
+        );
+        let exact = study_with(
+            &[(50, 0.0), (100, 1e-15)],
+            [Some(OrderBand::Exact { max_error: 1e-10 }), None, None],
+        );
+        assert_eq!(exact.fitted_order(|l| l.l1), None, "round-off has no order");
+        assert_eq!(exact.verdicts()[0].3, Some(true));
+        assert_eq!(exact.verdicts()[1].3, None, "no band: measured only");
+    }
+
+    #[test]
+    fn closed_forms_approach_their_limits_at_the_first_order_rate_up_to_1e12() {
+        let rows = contact_closed_form_rows().unwrap();
+        assert_eq!(rows.len(), 16);
+        for row in &rows {
+            let difference = row.cr / row.limit - 1.0;
+            if row.r.is_some_and(|r| r <= 1.0) {
+                assert_eq!(row.cr, 1.0, "{row:?}: no localized mode for r <= 1");
+            } else {
+                assert!(
+                    (difference - row.first_order).abs() <= 1e-3 * row.first_order.abs(),
+                    "{row:?}: Cr/limit - 1 = {difference:e}"
+                );
+            }
+        }
+        let last = rows
+            .iter()
+            .find(|r| r.beta_s == 1e12 && r.r.is_none())
+            .unwrap();
+        assert!((last.cr / 2e-12_f64.sqrt() - 1.0).abs() < 1e-12, "{last:?}");
+    }
+
+    #[test]
+    fn table_lists_every_beta_and_ratio_with_readable_differences() {
+        let table = contact_closed_form_table().unwrap();
+        assert_eq!(table.rows.len(), 16);
+        let csv = table.to_csv(STORED);
+        assert!(
+            csv.starts_with("beta_s,r,cr_closed_form,cr_limit,relative_difference,first_order\n")
+        );
+        assert!(
+            csv.contains("\n1.000000000e12,,1.414213562e-6,1.414213562e-6,-5.00e-13,-5.00e-13\n"),
+            "{csv}"
+        );
+        assert!(
+            csv.contains("\n1.000000000e12,0.2500000000,1.000000000,1.000000000,0,0\n"),
+            "{csv}"
+        );
+    }
 }

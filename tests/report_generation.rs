@@ -1,14 +1,20 @@
 //! Source of truth: the report contract of the README ("courant report"): every scene's tables
-//! and verdicts and the convergence studies in `index.md`, every table also as CSV, timings only
-//! in `timing.md`/`timing.csv`, written whole or not at all.
+//! and verdicts and the convergence studies in `index.md`, every table also as CSV, every figure
+//! as SVG, a self-contained `index.html`, timings only in `timing.md`/`timing.csv`, written whole
+//! or not at all; the closed-form contact critical Courant numbers of `courant-references`.
 //!
 //! Proves: on a reduced set (two scenes, one study) the report has the expected files with CSV
-//! headers, its deterministic files are identical from one generation to the next (timings
-//! apart), an expectation failure is flagged, and `courant report` replaces the output
-//! directory whole.
+//! headers, `index.html` and every generated SVG are well-formed XML (checker in
+//! `tests/common/xml.rs`, itself shown to reject malformed markup), the stability section carries
+//! the closed-form contact table for beta_s = 1e6 … 1e12, its deterministic files are identical
+//! from one generation to the next (timings apart), an expectation failure is flagged, and
+//! `courant report` replaces the output directory whole.
 
 use courant::builtin::builtin_scene;
 use courant::report::{CONVERGENCE_STUDIES, generate};
+
+#[path = "common/xml.rs"]
+mod xml;
 
 fn reduced() -> courant::report::Report {
     let scenes = vec![
@@ -65,6 +71,37 @@ fn report_has_sections_tables_and_deterministic_content() {
     );
     let html = &a.files.iter().find(|f| f.0 == "index.html").unwrap().1;
     assert!(html.starts_with("<!DOCTYPE html>") && html.trim_end().ends_with("</html>"));
+    let page = xml::parse_xhtml(html).unwrap_or_else(|e| panic!("index.html: {e}"));
+    assert_eq!(page.name, "html");
+    let head_body: Vec<&str> = page.children.iter().map(|c| c.name.as_str()).collect();
+    assert_eq!(head_body, ["head", "body"]);
+    let svgs: Vec<&(String, String)> = a.files.iter().filter(|f| f.0.ends_with(".svg")).collect();
+    let inline = svgs.iter().filter(|f| !f.0.starts_with("timing")).count();
+    assert!(inline >= 4, "figures of fig1, fig6, the study: {svgs:?}");
+    assert_eq!(
+        page.count("figure"),
+        inline,
+        "every figure but the timing plots is inline in index.html"
+    );
+    let body = &page.children[1];
+    for figure in body
+        .descendants()
+        .into_iter()
+        .filter(|e| e.name == "figure")
+    {
+        let names: Vec<&str> = figure.children.iter().map(|c| c.name.as_str()).collect();
+        assert_eq!(names, ["svg", "figcaption"]);
+    }
+    for (name, svg) in &svgs {
+        let root = xml::parse_xml(svg).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(root.name, "svg", "{name}");
+        assert_eq!(
+            root.attr("xmlns"),
+            Some("http://www.w3.org/2000/svg"),
+            "{name}"
+        );
+        assert!(root.children.len() > 1, "{name}: an empty drawing");
+    }
     for tag in ["table", "tr", "ul", "p", "h2", "figure", "svg"] {
         let (open, close) = (
             html.matches(&format!("<{tag}>")).count() + html.matches(&format!("<{tag} ")).count(),
@@ -80,6 +117,58 @@ fn report_has_sections_tables_and_deterministic_content() {
         "no network resources are loaded"
     );
     assert!(!html.contains("<script"), "no scripts");
+    let closed_forms = &a
+        .files
+        .iter()
+        .find(|f| f.0 == "stability/contact_closed_forms.csv")
+        .expect("closed-form contact table in the stability section")
+        .1;
+    let mut reader = csv::Reader::from_reader(closed_forms.as_bytes());
+    assert_eq!(
+        reader.headers().unwrap(),
+        vec![
+            "beta_s",
+            "r",
+            "cr_closed_form",
+            "cr_limit",
+            "relative_difference",
+            "first_order"
+        ]
+    );
+    let rows: Vec<csv::StringRecord> = reader.records().map(|r| r.unwrap()).collect();
+    let keys: Vec<(f64, String)> = rows
+        .iter()
+        .map(|r| {
+            (
+                r[0].parse().unwrap(),
+                r[1].parse::<f64>().map_or("-".into(), |r| r.to_string()),
+            )
+        })
+        .collect();
+    let mut expected = Vec::new();
+    for r in ["-", "0.25", "1", "4"] {
+        for beta_s in [1e6, 1e8, 1e10, 1e12] {
+            expected.push((beta_s, r.to_string()));
+        }
+    }
+    assert_eq!(keys, expected);
+    for row in &rows {
+        let number = |i: usize| -> f64 { row[i].parse().unwrap() };
+        let (beta_s, cr, limit, difference) = (number(0), number(2), number(3), number(4));
+        assert!(
+            (cr / limit - 1.0).abs() < 1e-9 + 4.0 / beta_s && difference.abs() < 4.0 / beta_s,
+            "{row:?}: Cr far from its large-beta_s limit"
+        );
+        assert_eq!(
+            row[4], row[5],
+            "{row:?}: Cr/limit - 1 is its first-order term to 3 digits"
+        );
+    }
+    assert!(
+        index.contains("stability/contact_closed_forms.csv")
+            && index.contains("closed forms themselves up to beta_s = 1e12"),
+        "the stability text points to the table"
+    );
     for (name, text) in &a.files {
         if name.ends_with(".csv") {
             let mut reader = csv::Reader::from_reader(text.as_bytes());
@@ -95,6 +184,35 @@ fn report_has_sections_tables_and_deterministic_content() {
             assert_eq!(text, other, "{name} differs between two generations");
         }
     }
+}
+
+#[test]
+fn xml_checker_rejects_malformed_markup() {
+    for bad in [
+        "<a><b></a></b>",
+        "<a x=\"1 < 2\"/>",
+        "<a x=1/>",
+        "<a x=\"1\"y=\"2\"/>",
+        "<a x=\"1\" x=\"2\"/>",
+        "<a>&nope;</a>",
+        "<a>&#0;</a>",
+        "<a>AT&T</a>",
+        "<a>1 < 2</a>",
+        "<a>",
+        "<a></a><b/>",
+        "<a><!-- a -- b --></a>",
+        "<meta charset=\"utf-8\">",
+    ] {
+        assert!(xml::parse_xml(bad).is_err(), "accepted {bad:?}");
+    }
+    assert!(xml::parse_xhtml("<p>line<br>break</p>").is_ok());
+    assert!(xml::parse_xhtml("<p><meta></meta></p>").is_err());
+    let ok = xml::parse_xml(
+        "<?xml version=\"1.0\"?>\n<!-- c --><a x='&lt;&#10;'>t &amp; u<b/><![CDATA[<&]]></a>",
+    )
+    .unwrap();
+    assert_eq!((ok.attr("x"), ok.text.as_str()), (Some("<\n"), "t & u<&"));
+    assert_eq!(ok.count("b"), 1);
 }
 
 #[test]
