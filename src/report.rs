@@ -60,6 +60,19 @@ pub enum OrderBand {
     },
 }
 
+/// What a convergence study's fitted order says of one norm.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OrderVerdict {
+    /// `l1`, `l2` or `linf`.
+    pub norm: &'static str,
+    /// Order fitted on the finest [`FIT_LEVELS`] meshes (`None` at round-off).
+    pub fitted: Option<f64>,
+    /// What theory allows, as text (`-` where it gives nothing).
+    pub expected: String,
+    /// `None` for a norm with no band (measured only).
+    pub pass: Option<bool>,
+}
+
 /// Picks one error norm of a mesh level.
 type NormOf = fn(&Level) -> f64;
 
@@ -237,9 +250,8 @@ impl ConvergenceResult {
         Some(-sxy / sxx)
     }
 
-    /// One verdict per norm: `(norm, fitted order, what theory allows, pass)`; `pass` is `None`
-    /// for a norm with no band (measured only).
-    pub fn verdicts(&self) -> Vec<(&'static str, Option<f64>, String, Option<bool>)> {
+    /// One verdict per norm (L1, L2, max).
+    pub fn verdicts(&self) -> Vec<OrderVerdict> {
         let picks: [(&str, NormOf); 3] = [("l1", |l| l.l1), ("l2", |l| l.l2), ("linf", |l| l.linf)];
         picks
             .iter()
@@ -257,7 +269,12 @@ impl ConvergenceResult {
                         Some(self.levels.iter().all(|l| pick(l) <= max_error)),
                     ),
                 };
-                (norm, fitted, expected, pass)
+                OrderVerdict {
+                    norm,
+                    fitted,
+                    expected,
+                    pass,
+                }
             })
             .collect()
     }
@@ -265,12 +282,12 @@ impl ConvergenceResult {
     /// `norm, fitted_order, expected, verdict` (fitted on the finest [`FIT_LEVELS`] meshes).
     pub fn verdict_table(&self) -> Table {
         let mut t = Table::new(&["norm", "fitted_order", "expected", "verdict"]);
-        for (norm, fitted, expected, pass) in self.verdicts() {
+        for v in self.verdicts() {
             t.push(vec![
-                norm.into(),
-                fitted.into(),
-                expected.into(),
-                match pass {
+                v.norm.into(),
+                v.fitted.into(),
+                v.expected.into(),
+                match v.pass {
                     None => "measured",
                     Some(true) => "pass",
                     Some(false) => "FAIL",
@@ -448,15 +465,18 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
                 .map(move |v| format!("{}: {}", s.name, v.describe()))
         })
         .chain(convergence.iter().flat_map(|c| {
-            c.verdicts().into_iter().filter(|v| v.3 == Some(false)).map(
-                |(norm, fitted, expected, _)| {
+            c.verdicts()
+                .into_iter()
+                .filter(|v| v.pass == Some(false))
+                .map(|v| {
                     format!(
-                        "convergence {}: {norm} fitted order {}, expected {expected}",
+                        "convergence {}: {} fitted order {}, expected {}",
                         c.study.name,
-                        fitted.map_or("-".into(), |p| format!("{p:.3}"))
+                        v.norm,
+                        v.fitted.map_or("-".into(), |p| format!("{p:.3}")),
+                        v.expected
                     )
-                },
-            )
+                })
         }))
         .collect();
     let count: usize = outcomes
@@ -465,7 +485,7 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
         .sum::<usize>()
         + convergence
             .iter()
-            .map(|c| c.verdicts().iter().filter(|v| v.3.is_some()).count())
+            .map(|c| c.verdicts().iter().filter(|v| v.pass.is_some()).count())
             .sum::<usize>();
     doc.push(Block::Paragraph(format!(
         "{count} expectations (scene expectations and convergence-order bands), {} failed.",
@@ -843,10 +863,10 @@ fn rustc() -> String {
 const CONTACT_CLOSED_FORMS_TEXT: &str = "Closed-form critical Courant numbers of contact with a rigid \
      wall (semi-infinite uniform lumped bar, central difference; `courant-references`, methods.md §7) at large \
      beta_s, each beside its large-beta_s limit: sqrt(2/beta_s) for penalty only (r = -), 1/sqrt(r) for bipenalty \
-     with r > 1, 1 for r <= 1. relative_difference = Cr/limit - 1 (3 significant digits) stands beside first_order, \
-     the leading term of its expansion in 1/beta_s: -1/(2 beta_s) for penalty only, (r/beta_s)(1 - s)/(1 + s) \
+     with r > 1, 1 for r <= 1. scaled_difference = beta_s (Cr/limit - 1) stands beside scaled_first_order, \
+     beta_s times the leading term of that difference in 1/beta_s: -1/2 for penalty only, r(1 - s)/(1 + s) \
      with s = 1/(sqrt(r) + sqrt(r - 1))^2 for r > 1, 0 for r <= 1. They agree up to beta_s = 1e12, where the \
-     difference is below 1e-11: the closed forms stay accurate there, free of cancellation.";
+     difference itself is below 1e-11: the closed forms stay accurate there, free of cancellation.";
 
 /// The penalty stiffnesses of [`contact_closed_form_table`].
 const CLOSED_FORM_BETAS: [f64; 4] = [1e6, 1e8, 1e10, 1e12];
@@ -910,23 +930,19 @@ fn contact_closed_form_rows() -> Result<Vec<ClosedFormRow>, courant_references::
 }
 
 /// The table of [`contact_closed_form_rows`]: `beta_s, r, cr_closed_form, cr_limit,
-/// relative_difference, first_order` (the last two as text with 3 significant digits, so the
-/// differences, far below the report's display floor, show).
+/// scaled_difference, scaled_first_order`, the differences times beta_s (O(1) numbers: the
+/// differences themselves fall below the report's display floor for round-off).
 ///
 /// # Errors
 /// A closed form refuses its parameters (it cannot for these fixed, valid values).
 fn contact_closed_form_table() -> Result<Table, courant_references::ReferenceError> {
-    let three = Precision::Significant {
-        digits: 3,
-        floor: 0.0,
-    };
     let mut table = Table::new(&[
         "beta_s",
         "r",
         "cr_closed_form",
         "cr_limit",
-        "relative_difference",
-        "first_order",
+        "scaled_difference",
+        "scaled_first_order",
     ]);
     for row in contact_closed_form_rows()? {
         table.push(vec![
@@ -934,8 +950,8 @@ fn contact_closed_form_table() -> Result<Table, courant_references::ReferenceErr
             row.r.into(),
             row.cr.into(),
             row.limit.into(),
-            three.format(row.cr / row.limit - 1.0).into(),
-            three.format(row.first_order).into(),
+            (row.beta_s * (row.cr / row.limit - 1.0)).into(),
+            (row.beta_s * row.first_order).into(),
         ]);
     }
     Ok(table)
@@ -987,14 +1003,18 @@ mod tests {
         );
         assert!((c.fitted_order(|l| l.l1).unwrap() - 0.5).abs() < 1e-12);
         let verdicts = c.verdicts();
-        assert_eq!(verdicts[0].3, Some(true), "L1 order 1/2 is in [0.42, 0.56]");
         assert_eq!(
-            verdicts[1].3,
+            verdicts[0].pass,
+            Some(true),
+            "L1 order 1/2 is in [0.42, 0.56]"
+        );
+        assert_eq!(
+            verdicts[1].pass,
             Some(false),
             "L2 order 1/2 is outside [0.30, 0.37]"
         );
         assert_eq!(
-            verdicts[2].3,
+            verdicts[2].pass,
             Some(true),
             "a constant max error has order 0"
         );
@@ -1003,8 +1023,8 @@ mod tests {
             [Some(OrderBand::Exact { max_error: 1e-10 }), None, None],
         );
         assert_eq!(exact.fitted_order(|l| l.l1), None, "round-off has no order");
-        assert_eq!(exact.verdicts()[0].3, Some(true));
-        assert_eq!(exact.verdicts()[1].3, None, "no band: measured only");
+        assert_eq!(exact.verdicts()[0].pass, Some(true));
+        assert_eq!(exact.verdicts()[1].pass, None, "no band: measured only");
     }
 
     #[test]
@@ -1034,13 +1054,19 @@ mod tests {
         let table = contact_closed_form_table().unwrap();
         assert_eq!(table.rows.len(), 16);
         let csv = table.to_csv(STORED);
-        assert!(
-            csv.starts_with("beta_s,r,cr_closed_form,cr_limit,relative_difference,first_order\n")
-        );
-        assert!(
-            csv.contains("\n1.000000000e12,,1.414213562e-6,1.414213562e-6,-5.00e-13,-5.00e-13\n"),
-            "{csv}"
-        );
+        assert!(csv.starts_with(
+            "beta_s,r,cr_closed_form,cr_limit,scaled_difference,scaled_first_order\n"
+        ));
+        // Penalty only at beta_s = 1e12: beta_s (Cr/limit - 1) -> -1/2; the difference (5e-13)
+        // carries round-off of about 1e-16/5e-13, so only three digits are asserted.
+        let row = csv
+            .lines()
+            .find(|l| l.starts_with("1.000000000e12,,"))
+            .expect("penalty row at 1e12");
+        let cells: Vec<&str> = row.split(',').collect();
+        assert_eq!(cells[5], "-0.5000000000", "{row}");
+        let scaled: f64 = cells[4].parse().unwrap();
+        assert!((scaled + 0.5).abs() < 1e-3, "{row}");
         assert!(
             csv.contains("\n1.000000000e12,0.2500000000,1.000000000,1.000000000,0,0\n"),
             "{csv}"

@@ -9,7 +9,7 @@
 //!
 //! Proves, with the built binary on the fig1 scene (milliseconds per run): the committed
 //! expectations pass; a deliberately broken expectation exits 1 and appears as a `<failure>` in
-//! a well-formed JUnit file (checked by a small XML parser below: balanced tags, quoted
+//! a well-formed JUnit file (checked by the shared XML parser `tests/common/xml.rs`: balanced tags, quoted
 //! attributes, valid entities, `testsuites/testsuite/testcase/failure` nesting, consistent
 //! counts); a baseline from a fresh run passes, survives round-off-sized edits and wall-time
 //! changes, and fails on a stress change beyond tolerance or a missing file, naming them; a bad
@@ -44,197 +44,10 @@ fn s(path: &Path) -> &str {
     path.to_str().unwrap()
 }
 
-// ---- a tiny XML well-formedness checker (no XML crate is available) ----
-
-#[derive(Debug)]
-struct Element {
-    name: String,
-    attrs: Vec<(String, String)>,
-    children: Vec<Element>,
-    text: String,
-}
-
-impl Element {
-    fn attr(&self, name: &str) -> &str {
-        self.attrs
-            .iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, v)| v.as_str())
-            .unwrap_or_else(|| panic!("<{}> has no attribute {name}", self.name))
-    }
-
-    fn child(&self, name: &str) -> Option<&Element> {
-        self.children.iter().find(|c| c.name == name)
-    }
-}
-
-struct Parser<'a> {
-    s: &'a str,
-    i: usize,
-}
-
-impl<'a> Parser<'a> {
-    fn rest(&self) -> &'a str {
-        &self.s[self.i..]
-    }
-
-    fn skip_ws(&mut self) {
-        let trimmed = self.rest().trim_start_matches([' ', '\t', '\n', '\r']);
-        self.i = self.s.len() - trimmed.len();
-    }
-
-    fn eat(&mut self, token: &str) -> bool {
-        if self.rest().starts_with(token) {
-            self.i += token.len();
-            true
-        } else {
-            false
-        }
-    }
-
-    fn expect(&mut self, token: &str) -> Result<(), String> {
-        if self.eat(token) {
-            Ok(())
-        } else {
-            Err(format!("expected {token:?} at byte {}", self.i))
-        }
-    }
-
-    fn name(&mut self) -> Result<String, String> {
-        let len = self
-            .rest()
-            .find(|c: char| !(c.is_ascii_alphanumeric() || "_:.-".contains(c)))
-            .unwrap_or(self.rest().len());
-        let name = &self.rest()[..len];
-        if name.is_empty() || !name.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
-            return Err(format!("bad name at byte {}", self.i));
-        }
-        self.i += len;
-        Ok(name.to_string())
-    }
-
-    /// Character data up to (not including) `stop`, with entities resolved.
-    fn chars_until(&mut self, stop: char) -> Result<String, String> {
-        let end = self
-            .rest()
-            .find(stop)
-            .ok_or_else(|| format!("unterminated text at byte {}", self.i))?;
-        let raw = &self.rest()[..end];
-        if stop == '"' && raw.contains('<') {
-            return Err(format!("raw '<' in an attribute at byte {}", self.i));
-        }
-        let value = unescape(raw).map_err(|e| format!("{e} at byte {}", self.i))?;
-        self.i += end;
-        Ok(value)
-    }
-
-    fn element(&mut self) -> Result<Element, String> {
-        self.expect("<")?;
-        let name = self.name()?;
-        let mut attrs: Vec<(String, String)> = Vec::new();
-        loop {
-            self.skip_ws();
-            if self.eat("/>") {
-                return Ok(Element {
-                    name,
-                    attrs,
-                    children: Vec::new(),
-                    text: String::new(),
-                });
-            }
-            if self.eat(">") {
-                break;
-            }
-            let attr = self.name()?;
-            self.skip_ws();
-            self.expect("=")?;
-            self.skip_ws();
-            self.expect("\"")?;
-            let value = self.chars_until('"')?;
-            self.expect("\"")?;
-            if attrs.iter().any(|(a, _)| *a == attr) {
-                return Err(format!("duplicate attribute {attr} on <{name}>"));
-            }
-            attrs.push((attr, value));
-        }
-        let (mut children, mut text) = (Vec::new(), String::new());
-        loop {
-            if self.rest().is_empty() {
-                return Err(format!("<{name}> is never closed"));
-            }
-            if self.eat("</") {
-                let closing = self.name()?;
-                if closing != name {
-                    return Err(format!("<{name}> closed by </{closing}>"));
-                }
-                self.skip_ws();
-                self.expect(">")?;
-                return Ok(Element {
-                    name,
-                    attrs,
-                    children,
-                    text,
-                });
-            }
-            if self.rest().starts_with('<') {
-                children.push(self.element()?);
-            } else {
-                text.push_str(&self.chars_until('<')?);
-            }
-        }
-    }
-}
-
-fn unescape(raw: &str) -> Result<String, String> {
-    let mut out = String::new();
-    let mut rest = raw;
-    while let Some(amp) = rest.find('&') {
-        out.push_str(&rest[..amp]);
-        let semi = rest[amp..]
-            .find(';')
-            .ok_or("'&' without ';'")?
-            .checked_add(amp)
-            .unwrap();
-        let entity = &rest[amp + 1..semi];
-        let c = match entity {
-            "amp" => '&',
-            "lt" => '<',
-            "gt" => '>',
-            "quot" => '"',
-            "apos" => '\'',
-            _ => {
-                let code = if let Some(hex) = entity.strip_prefix("#x") {
-                    u32::from_str_radix(hex, 16).map_err(|_| format!("bad entity &{entity};"))?
-                } else if let Some(dec) = entity.strip_prefix('#') {
-                    dec.parse().map_err(|_| format!("bad entity &{entity};"))?
-                } else {
-                    return Err(format!("unknown entity &{entity};"));
-                };
-                char::from_u32(code).ok_or(format!("bad character &{entity};"))?
-            }
-        };
-        out.push(c);
-        rest = &rest[semi + 1..];
-    }
-    out.push_str(rest);
-    Ok(out)
-}
-
-/// Parse a whole document (optional `<?xml ...?>` declaration, one root element).
-fn parse_xml(doc: &str) -> Result<Element, String> {
-    let mut p = Parser { s: doc, i: 0 };
-    if p.eat("<?xml") {
-        let end = p.rest().find("?>").ok_or("unterminated declaration")?;
-        p.i += end + 2;
-    }
-    p.skip_ws();
-    let root = p.element()?;
-    p.skip_ws();
-    if !p.rest().is_empty() {
-        return Err(format!("content after the root element at byte {}", p.i));
-    }
-    Ok(root)
-}
+// The XML checker shared by the integration tests (its own test is in report_generation.rs).
+#[path = "common/xml.rs"]
+mod xml;
+use xml::{Element, parse_xml};
 
 /// Parse a JUnit file and check its nesting and counts; returns the root.
 fn junit(path: &Path) -> Element {
@@ -251,7 +64,7 @@ fn junit(path: &Path) -> Element {
                 "properties" => assert!(child.children.iter().all(|p| p.name == "property")),
                 "testcase" => {
                     cases += 1;
-                    assert_eq!(child.attr("classname"), suite.attr("name"));
+                    assert_eq!(child.value("classname"), suite.value("name"));
                     for grandchild in &child.children {
                         assert!(
                             ["failure", "system-out"].contains(&grandchild.name.as_str()),
@@ -265,13 +78,13 @@ fn junit(path: &Path) -> Element {
                 other => panic!("unexpected <{other}> in a testsuite"),
             }
         }
-        assert_eq!(suite.attr("tests"), cases.to_string());
-        assert_eq!(suite.attr("failures"), failed.to_string());
+        assert_eq!(suite.value("tests"), cases.to_string());
+        assert_eq!(suite.value("failures"), failed.to_string());
         tests += cases;
         failures += failed;
     }
-    assert_eq!(root.attr("tests"), tests.to_string());
-    assert_eq!(root.attr("failures"), failures.to_string());
+    assert_eq!(root.value("tests"), tests.to_string());
+    assert_eq!(root.value("failures"), failures.to_string());
     root
 }
 
@@ -281,17 +94,6 @@ fn testcases(root: &Element) -> Vec<&Element> {
         .flat_map(|s| &s.children)
         .filter(|c| c.name == "testcase")
         .collect()
-}
-
-#[test]
-fn xml_checker_rejects_malformed_documents() {
-    assert!(parse_xml("<a><b></a></b>").is_err());
-    assert!(parse_xml("<a x=\"1 < 2\"/>").is_err());
-    assert!(parse_xml("<a>&nope;</a>").is_err());
-    assert!(parse_xml("<a>").is_err());
-    assert!(parse_xml("<a/><b/>").is_err());
-    let ok = parse_xml("<?xml version=\"1.0\"?>\n<a x=\"&lt;&#10;\">t &amp; u<b/></a>").unwrap();
-    assert_eq!((ok.attr("x"), ok.text.as_str()), ("<\n", "t & u"));
 }
 
 #[test]
@@ -314,11 +116,11 @@ fn check_fig1_passes_on_the_committed_expectations() {
     let root = junit(&report);
     let cases = testcases(&root);
     assert_eq!(cases.len(), verdicts.len());
-    assert_eq!(root.children[0].attr("name"), "fig1");
+    assert_eq!(root.children[0].value("name"), "fig1");
     for v in &verdicts {
         let name = format!("{} {}", v.case, v.metric.name());
         assert!(
-            cases.iter().any(|c| c.attr("name") == name),
+            cases.iter().any(|c| c.value("name") == name),
             "no testcase {name}"
         );
     }
@@ -361,16 +163,16 @@ fn a_broken_expectation_exits_1_with_a_junit_failure_for_that_testcase() {
     assert!(failed[0].contains("<= 1e-30") && failed[0].contains("methods.md §3"));
 
     let root = junit(&report);
-    assert_eq!(root.attr("failures"), "1");
-    assert_eq!(root.children[0].attr("name"), "strict");
+    assert_eq!(root.value("failures"), "1");
+    assert_eq!(root.children[0].value("name"), "strict");
     for case in testcases(&root) {
         let failure = case.child("failure");
-        if case.attr("name") == "co1 linf" {
-            let message = failure.expect("co1 linf must fail").attr("message");
+        if case.value("name") == "co1 linf" {
+            let message = failure.expect("co1 linf must fail").value("message");
             assert!(message.contains("1e-30") && message.contains("measured"));
             assert!(message.contains("methods.md §3"), "names its source");
         } else {
-            assert!(failure.is_none(), "{} must pass", case.attr("name"));
+            assert!(failure.is_none(), "{} must pass", case.value("name"));
         }
     }
     // Escaping round-trips: a source with '<' reads back intact.
@@ -421,7 +223,7 @@ fn baseline_of_a_fresh_run_passes_and_a_changed_number_fails_naming_file_and_col
     assert!(
         testcases(&root)
             .iter()
-            .any(|c| c.attr("name") == "baseline co0.5.csv")
+            .any(|c| c.value("name") == "baseline co0.5.csv")
     );
 
     // Within tolerance: a 1e-10 relative change of a stress and a different wall time pass.
@@ -452,12 +254,12 @@ fn baseline_of_a_fresh_run_passes_and_a_changed_number_fails_naming_file_and_col
     let root = junit(&dir.join("changed.xml"));
     let case = testcases(&root)
         .into_iter()
-        .find(|c| c.attr("name") == "baseline co0.5.csv")
+        .find(|c| c.value("name") == "baseline co0.5.csv")
         .unwrap();
     let failure = case.child("failure").expect("the edited file fails");
-    assert!(failure.attr("message").contains("co0.5.csv"));
-    assert!(failure.attr("message").contains("stress"));
-    assert_eq!(root.attr("failures"), "1");
+    assert!(failure.value("message").contains("co0.5.csv"));
+    assert!(failure.value("message").contains("stress"));
+    assert_eq!(root.value("failures"), "1");
 
     // A file missing from the baseline fails too.
     std::fs::write(&profile, &original).unwrap();

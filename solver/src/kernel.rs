@@ -26,8 +26,8 @@ pub struct StepEnergy {
     pub strain: f64,
 }
 
-/// Number of independent partial sums per energy term.
-const LANES: usize = 8;
+/// Number of independent partial sums per energy term (also used by the matrix-mass step).
+pub(crate) const LANES: usize = 8;
 
 /// Partial energy sums, one per lane.
 #[derive(Debug, Clone, Copy, Default)]

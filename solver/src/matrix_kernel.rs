@@ -19,7 +19,7 @@
 //! and, at sampled steps, `T*` from `M` itself ([`MatrixCentralDifference::staggered_kinetic_from_mass`]),
 //! which checks the mass operator against the update.
 
-use crate::kernel::StepEnergy;
+use crate::kernel::{LANES, StepEnergy};
 use crate::mass::MassOperator;
 
 /// The state a run starts from, after the start procedure.
@@ -116,15 +116,15 @@ impl MatrixCentralDifference {
         }
         // Element forces N_e = k_e (u_{e+1} - u_e) at padded index e + 1 (ghosts stay 0).
         let n = self.u.len();
-        let strain = lane_sums(
+        let [strain] = lane_sums(
             &mut self.element_force[1..n],
             (&self.stiffness[1..n], &self.u[..]),
             |e, force, (k, u)| {
                 let du = u[e + 1] - u[e];
                 *force = k[e] * du;
-                [*force * du, 0.0]
+                [*force * du]
             },
-        )[0];
+        );
         // r_i = N_i - N_{i-1} + F_i.
         for (r, pair) in self.r.iter_mut().zip(self.element_force.windows(2)) {
             *r = pair[1] - pair[0];
@@ -166,31 +166,30 @@ impl MatrixCentralDifference {
     }
 }
 
-/// Number of independent partial sums per energy term.
-const LANES: usize = 8;
-
-/// Update every `x[i]` with `f(i, &mut x[i], data)` and sum the two terms it returns, each in
-/// [`LANES`] partial sums added up in a fixed order at the end.
+/// Update every `x[i]` with `f(i, &mut x[i], data)` and sum each of the `K` terms it returns in
+/// [`LANES`] partial sums, added up in a fixed order at the end.
 #[inline(always)]
-fn lane_sums<D: Copy>(
+fn lane_sums<const K: usize, D: Copy>(
     x: &mut [f64],
     data: D,
-    f: impl Fn(usize, &mut f64, D) -> [f64; 2],
-) -> [f64; 2] {
-    let mut lanes = [[0.0; LANES]; 2];
+    f: impl Fn(usize, &mut f64, D) -> [f64; K],
+) -> [f64; K] {
+    let mut lanes = [[0.0; LANES]; K];
     let whole = x.len() / LANES * LANES;
     let (body, rest) = x.split_at_mut(whole);
     for (c, chunk) in body.chunks_exact_mut(LANES).enumerate() {
         for (l, xi) in chunk.iter_mut().enumerate() {
-            let [p, q] = f(c * LANES + l, xi, data);
-            lanes[0][l] += p;
-            lanes[1][l] += q;
+            let terms = f(c * LANES + l, xi, data);
+            for (lane, term) in lanes.iter_mut().zip(terms) {
+                lane[l] += term;
+            }
         }
     }
     for (l, xi) in rest.iter_mut().enumerate() {
-        let [p, q] = f(whole + l, xi, data);
-        lanes[0][l] += p;
-        lanes[1][l] += q;
+        let terms = f(whole + l, xi, data);
+        for (lane, term) in lanes.iter_mut().zip(terms) {
+            lane[l] += term;
+        }
     }
     lanes.map(|lane| lane.iter().sum())
 }

@@ -36,8 +36,6 @@ const MIN_BLOCK_ROWS: usize = 16;
 /// Partitioned `L D L^T` factor of an SPD tridiagonal matrix (see the module docs).
 #[derive(Debug, Clone, PartialEq)]
 pub struct PartitionedLdl {
-    /// Order.
-    n: usize,
     /// Number of blocks: [`BLOCKS`] or 1.
     blocks: usize,
     /// Rows of every block but the last, which also takes the remainder.
@@ -98,18 +96,10 @@ impl PartitionedLdl {
                 previous = Some((pivot, l));
             }
         }
-        let mut factor = Self {
-            n,
-            blocks,
-            block_rows,
-            lower,
-            inverse_pivot,
-            spikes: vec![[0.0; 2]; n],
-            right_support: vec![0..0; blocks],
-            left_support: vec![0..0; blocks],
-            interface: DenseLu::identity(0),
-        };
         // Spikes, block by block, and the rows where they are nonzero.
+        let mut spikes = vec![[0.0; 2]; n];
+        let mut right_support = vec![0..0; blocks];
+        let mut left_support = vec![0..0; blocks];
         let mut column = vec![0.0; n];
         for j in 0..blocks {
             let rows = range(j);
@@ -125,21 +115,17 @@ impl PartitionedLdl {
                 let x = &mut column[rows.clone()];
                 x.fill(0.0);
                 x[unit_row - rows.start] = b;
-                factor.solve_block(rows.clone(), x);
-                for (s, xi) in factor.spikes[rows.clone()].iter_mut().zip(x.iter()) {
+                solve_block(&lower[rows.clone()], &inverse_pivot[rows.clone()], x);
+                for (s, xi) in spikes[rows.clone()].iter_mut().zip(x.iter()) {
                     s[side] = *xi;
                 }
                 let first = x.iter().position(|v| *v != 0.0).unwrap_or(x.len());
                 let last = x.iter().rposition(|v| *v != 0.0).map_or(0, |p| p + 1);
-                let support = if first < last {
-                    rows.start + first..rows.start + last
-                } else {
-                    rows.start..rows.start
-                };
+                let support = rows.start + first..rows.start + last.max(first);
                 if side == 0 {
-                    factor.right_support[j] = support;
+                    right_support[j] = support;
                 } else {
-                    factor.left_support[j] = support;
+                    left_support[j] = support;
                 }
             }
         }
@@ -150,26 +136,29 @@ impl PartitionedLdl {
         let mut system = vec![vec![0.0; order]; order];
         for q in 0..blocks - 1 {
             let (last, first) = (range(q).end - 1, range(q + 1).start);
-            let [v, w] = factor.spikes[last];
+            let [v, w] = spikes[last];
             system[2 * q][2 * q] = 1.0;
             system[2 * q][2 * q + 1] = v;
             if q > 0 {
                 system[2 * q][2 * q - 2] = w;
             }
-            let [v, w] = factor.spikes[first];
+            let [v, w] = spikes[first];
             system[2 * q + 1][2 * q + 1] = 1.0;
             system[2 * q + 1][2 * q] = w;
             if q + 2 < blocks {
                 system[2 * q + 1][2 * q + 3] = v;
             }
         }
-        factor.interface = DenseLu::new(system)?;
-        Some(factor)
-    }
-
-    /// Order of the matrix.
-    pub fn order(&self) -> usize {
-        self.n
+        Some(Self {
+            blocks,
+            block_rows,
+            lower,
+            inverse_pivot,
+            spikes,
+            right_support,
+            left_support,
+            interface: DenseLu::new(system)?,
+        })
     }
 
     /// Number of independent blocks the solve runs.
@@ -179,9 +168,13 @@ impl PartitionedLdl {
 
     /// Solve `A x = r` in place (`r` becomes `x`).
     pub fn solve_in_place(&self, x: &mut [f64]) {
-        assert_eq!(x.len(), self.n, "right-hand side of the wrong length");
+        assert_eq!(
+            x.len(),
+            self.lower.len(),
+            "right-hand side of the wrong length"
+        );
         if self.blocks == 1 {
-            self.solve_block(0..self.n, x);
+            solve_block(&self.lower, &self.inverse_pivot, x);
             return;
         }
         self.solve_blocks_interleaved(x);
@@ -209,24 +202,11 @@ impl PartitionedLdl {
         }
     }
 
-    /// `L D L^T` solve of one block, rows `rows`, with `x` holding exactly those rows.
-    fn solve_block(&self, rows: std::ops::Range<usize>, x: &mut [f64]) {
-        let (l, p) = (&self.lower[rows.clone()], &self.inverse_pivot[rows]);
-        for i in 1..x.len() {
-            x[i] -= l[i - 1] * x[i - 1];
-        }
-        let mut next = 0.0;
-        for i in (0..x.len()).rev() {
-            next = x[i] * p[i] - l[i] * next;
-            x[i] = next;
-        }
-    }
-
     /// The [`BLOCKS`] block solves with their recurrences interleaved row by row; the last
     /// block's extra rows (the remainder of `n / BLOCKS`) run on their own.
     fn solve_blocks_interleaved(&self, x: &mut [f64]) {
         let m = self.block_rows;
-        let n = self.n;
+        let n = self.lower.len();
         let tail = BLOCKS * m..n;
         let (l, p) = (&self.lower[..], &self.inverse_pivot[..]);
         assert!(m >= 1 && x.len() == n && l.len() == n && p.len() == n && BLOCKS * m <= n);
@@ -276,6 +256,19 @@ impl PartitionedLdl {
     }
 }
 
+/// `L D L^T` solve of one block with its factor `lower`, `inverse_pivot` (`lower` 0 at its last
+/// row), `x` holding exactly the block's rows.
+fn solve_block(lower: &[f64], inverse_pivot: &[f64], x: &mut [f64]) {
+    for i in 1..x.len() {
+        x[i] -= lower[i - 1] * x[i - 1];
+    }
+    let mut next = 0.0;
+    for i in (0..x.len()).rev() {
+        next = x[i] * inverse_pivot[i] - lower[i] * next;
+        x[i] = next;
+    }
+}
+
 /// Whether every pivot of the plain (unpartitioned) `L D L^T` factorisation is positive, i.e.
 /// the matrix is positive definite.
 fn plain_pivots_positive(a: &Tridiagonal) -> bool {
@@ -306,15 +299,6 @@ struct DenseLu {
 }
 
 impl DenseLu {
-    fn identity(order: usize) -> Self {
-        Self {
-            lu: (0..order)
-                .map(|i| (0..order).map(|j| f64::from(u8::from(i == j))).collect())
-                .collect(),
-            permutation: (0..order).collect(),
-        }
-    }
-
     /// Doolittle elimination with partial pivoting; `None` when the matrix is singular.
     fn new(mut a: Vec<Vec<f64>>) -> Option<Self> {
         let order = a.len();
@@ -381,13 +365,17 @@ mod tests {
         Tridiagonal { diag, off }
     }
 
+    fn max_difference(p: &[f64], q: &[f64]) -> f64 {
+        p.iter()
+            .zip(q)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max)
+    }
+
     fn residual(a: &Tridiagonal, x: &[f64], b: &[f64]) -> f64 {
         let mut ax = vec![0.0; x.len()];
         a.apply(x, &mut ax);
-        ax.iter()
-            .zip(b)
-            .map(|(p, q)| (p - q).abs())
-            .fold(0.0, f64::max)
+        max_difference(&ax, b)
     }
 
     #[test]
@@ -404,16 +392,13 @@ mod tests {
                 a.apply(&x, &mut b);
                 let rhs = b.clone();
                 factor.solve_in_place(&mut b);
-                let error = b
-                    .iter()
-                    .zip(&x)
-                    .map(|(p, q)| (p - q).abs())
-                    .fold(0.0, f64::max);
+                let error = max_difference(&b, &x);
+                // Measured: error <= 1.1e-14, residual <= 3.6e-15 over all of these.
                 assert!(
-                    error < 1e-11,
+                    error < 1e-13,
                     "n = {n}, dominance {dominance}: error {error:e}"
                 );
-                assert!(residual(&a, &b, &rhs) < 1e-12);
+                assert!(residual(&a, &b, &rhs) < 1e-14);
             }
         }
     }
@@ -448,21 +433,22 @@ mod tests {
         let m = n / BLOCKS;
         assert!(factor.right_support[0].len() < m / 4);
         assert!(factor.left_support[1].len() < m / 4);
-        for (j, range) in factor.right_support.iter().enumerate() {
+        for j in 0..BLOCKS {
             let block = j * m..if j + 1 == BLOCKS { n } else { (j + 1) * m };
-            for i in block.clone().filter(|i| !range.contains(i)) {
-                assert_eq!(factor.spikes[i][0], 0.0);
+            for (side, range) in [&factor.right_support[j], &factor.left_support[j]]
+                .into_iter()
+                .enumerate()
+            {
+                for i in block.clone().filter(|i| !range.contains(i)) {
+                    assert_eq!(factor.spikes[i][side], 0.0, "block {j}, row {i}");
+                }
             }
         }
         let x: Vec<f64> = (0..n).map(|i| 1.0 + (i as f64 * 0.01).sin()).collect();
         let mut b = vec![0.0; n];
         a.apply(&x, &mut b);
         factor.solve_in_place(&mut b);
-        let error = b
-            .iter()
-            .zip(&x)
-            .map(|(p, q)| (p - q).abs())
-            .fold(0.0, f64::max);
+        let error = max_difference(&b, &x);
         assert!(error < 1e-13, "error {error:e}");
     }
 

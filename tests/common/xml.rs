@@ -29,6 +29,17 @@ impl Element {
             .map(|(_, v)| v.as_str())
     }
 
+    /// The value of an attribute the element must have (panics naming both otherwise).
+    pub fn value(&self, name: &str) -> &str {
+        self.attr(name)
+            .unwrap_or_else(|| panic!("<{}> has no attribute {name}", self.name))
+    }
+
+    /// The first child element named `name`.
+    pub fn child(&self, name: &str) -> Option<&Element> {
+        self.children.iter().find(|c| c.name == name)
+    }
+
     /// This element and all elements below it, depth first.
     pub fn descendants(&self) -> Vec<&Element> {
         let mut out = vec![self];
