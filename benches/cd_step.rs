@@ -19,6 +19,9 @@
 //! loop at `-march=native`. `step_with_energy` adds three energy sums, kept in 8 independent
 //! lanes so they vectorise.
 //!
+//! Also: `memory_triad`, the STREAM triad at the same sizes (and 4e6), the machine's bandwidth
+//! the report compares each step's model bandwidth with.
+//!
 //! Run:      cargo bench --bench cd_step
 //!           (one function only: cargo bench --bench cd_step -- 'lumped_cd_step/step/')
 //!           C reference: bash benches/c_reference/run.sh
@@ -222,11 +225,42 @@ fn park_step(c: &mut Criterion) {
     group.finish();
 }
 
+/// The machine's reach: the STREAM triad `a[i] = b[i] + s c[i]` (McCalpin, "Memory bandwidth and
+/// machine balance", 1995) over N = 1e3, 1e5, 1e6 and 4e6 elements, 24 bytes per element as
+/// STREAM counts them (write-allocate traffic not counted). The report's benchmark table divides
+/// each step's model bandwidth by the triad's at the same N: how close to this machine's limit
+/// the step runs. 4e6 (96 MB) is beyond every cache: main-memory bandwidth.
+fn memory_triad(c: &mut Criterion) {
+    let mut group = c.benchmark_group("memory_triad");
+    group
+        .warm_up_time(Duration::from_secs(1))
+        .sample_size(20)
+        .measurement_time(Duration::from_secs(3));
+    for n in [1_000, 100_000, 1_000_000, 4_000_000] {
+        let b: Vec<f64> = (0..n).map(|i| i as f64).collect();
+        let c_in: Vec<f64> = (0..n).map(|i| 1.0 / (1.0 + i as f64)).collect();
+        let mut a = vec![0.0; n];
+        group.throughput(Throughput::Bytes(24 * n as u64));
+        group.bench_function(BenchmarkId::new("triad", n), |bench| {
+            bench.iter(|| {
+                let s = black_box(3.0);
+                for ((a, b), c) in a.iter_mut().zip(&b).zip(&c_in) {
+                    *a = b + s * c;
+                }
+                black_box(&mut a);
+            })
+        });
+        assert!(a.iter().all(|x| x.is_finite()));
+    }
+    group.finish();
+}
+
 criterion_group!(
     benches,
     lumped_cd_step,
     mass_kind_step,
     spectrum_dense,
-    park_step
+    park_step,
+    memory_triad
 );
 criterion_main!(benches);

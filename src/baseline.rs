@@ -1,13 +1,70 @@
 //! Comparing fresh result CSVs with a baseline, column by column, the way MOOSE's CSVDiff does.
 //!
-//! A baseline is a previous run's output directory, laid out as `courant run --out DIR` writes
-//! it: `DIR/<scene>/<file>.csv`. Every fresh file of a scene is compared with the baseline file
-//! of the same name, cell by cell, under the rule [`Tolerances::rule_for`] picks for its column.
-//! A file missing on either side, a changed header, a changed row count or a cell beyond its
-//! tolerance fails the file. The report keeps the largest change of every column (absolute and
-//! relative) so that a passing comparison still says how close it came.
+//! A baseline is either a previous run's output directory, laid out as `courant run --out DIR`
+//! writes it (`DIR/<scene>/<file>.csv`), or a previous *report* (`courant report --out DIR`:
+//! `DIR/index.md` beside `DIR/<scene>/`), which keeps only each scene's deterministic tables
+//! (`summary.csv` without wall times, `norms.csv`, `expectations.csv`, spectra, dispersion and
+//! stability tables) and not the per-case profiles, histories and energy logs ([`BaselineKind`]).
+//! Every fresh file of a scene is compared with the baseline file of the same name, cell by cell,
+//! under the rule [`Tolerances::rule_for`] picks for its column; columns are matched by name (in
+//! any order), and ignored columns (wall times) may be present on one side only. A file missing on either side
+//! (except a fresh file a report does not keep, which is reported as not compared), a changed
+//! header, a changed row count or a cell beyond its tolerance fails the file. The report keeps
+//! the largest change of every column (absolute and relative) so that a passing comparison still
+//! says how close it came.
 
 use std::path::Path;
+use thiserror::Error;
+
+/// What a baseline directory holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BaselineKind {
+    /// A `courant run --out DIR` (or `courant check --out DIR`) directory: every result file of
+    /// every scene. A fresh file without a baseline file fails.
+    RunOutput,
+    /// A `courant report --out DIR` directory (it has an `index.md`): each scene's deterministic
+    /// tables only. A fresh file the report does not keep (a profile, history or energy log) is
+    /// listed as not compared; every table the report keeps must still be written and match.
+    Report,
+}
+
+/// The scene tables a report keeps (`courant report` writes each scene's deterministic tables
+/// under these names); a fresh file of another name is not kept by a report baseline.
+pub const REPORT_TABLES: &[&str] = &[
+    "summary.csv",
+    "norms.csv",
+    "dispersion.csv",
+    "stability.csv",
+    "expectations.csv",
+];
+
+impl BaselineKind {
+    /// True when a baseline of this kind keeps a scene file of this name: a run's output keeps
+    /// every file, a report its [`REPORT_TABLES`].
+    pub fn keeps(self, file: &str) -> bool {
+        match self {
+            BaselineKind::RunOutput => true,
+            BaselineKind::Report => REPORT_TABLES.contains(&file),
+        }
+    }
+
+    /// A directory with an `index.md` is a report, anything else a run's output.
+    pub fn detect(root: &Path) -> Self {
+        if root.join("index.md").is_file() {
+            BaselineKind::Report
+        } else {
+            BaselineKind::RunOutput
+        }
+    }
+
+    /// Short name for reports.
+    pub fn label(self) -> &'static str {
+        match self {
+            BaselineKind::RunOutput => "run output",
+            BaselineKind::Report => "report",
+        }
+    }
+}
 
 /// How the cells of one column are compared. `a` is the fresh value, `b` the baseline's.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -54,10 +111,95 @@ impl ColumnRule {
     }
 }
 
+/// A tolerance given on the command line that breaks its rule: the flag, the value as given and
+/// the rule, e.g. `--rel "-1": must be a finite number >= 0`.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("{flag} {value:?}: {rule}")]
+pub struct ToleranceError {
+    /// The flag (`--rel`, `--column`, ...).
+    pub flag: &'static str,
+    /// The value as given.
+    pub value: String,
+    /// The rule it breaks.
+    pub rule: &'static str,
+}
+
+/// A tolerance value: finite and not negative.
+pub fn tolerance_value(flag: &'static str, value: f64) -> Result<f64, ToleranceError> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(ToleranceError {
+            flag,
+            value: value.to_string(),
+            rule: "must be a finite number >= 0",
+        })
+    }
+}
+
+impl ColumnRule {
+    /// The grammar of a per-column rule on the command line.
+    pub const GRAMMAR: &'static str = "must be COLUMN=RULE with RULE one of ignore, exact, rel:REL[:ABS], peak:REL[:ABS] (REL, ABS finite numbers >= 0)";
+
+    /// Parse `COLUMN=RULE` (`courant check --column`): `ignore`, `exact`, `rel:REL[:ABS]`
+    /// (`|a - b| <= max(ABS, REL |b|)`) or `peak:REL[:ABS]` (`|a - b| <= max(ABS, REL peak)`);
+    /// `ABS` defaults to `default_abs`.
+    pub fn parse_override(
+        spec: &str,
+        default_abs: f64,
+    ) -> Result<(String, ColumnRule), ToleranceError> {
+        let bad = || ToleranceError {
+            flag: "--column",
+            value: spec.to_string(),
+            rule: Self::GRAMMAR,
+        };
+        let (column, rule) = spec.split_once('=').ok_or_else(bad)?;
+        let column = column.trim();
+        if column.is_empty() {
+            return Err(bad());
+        }
+        let mut parts = rule.trim().split(':');
+        let kind = parts.next().unwrap_or_default();
+        let numbers = parts
+            .map(|x| {
+                x.trim()
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|v| v.is_finite() && *v >= 0.0)
+                    .ok_or_else(bad)
+            })
+            .collect::<Result<Vec<f64>, _>>()?;
+        let rule = match (kind, numbers.as_slice()) {
+            ("ignore", []) => ColumnRule::Ignored,
+            ("exact", []) => ColumnRule::Exact,
+            ("rel", [rel]) => ColumnRule::Relative {
+                rel: *rel,
+                abs: default_abs,
+            },
+            ("rel", [rel, abs]) => ColumnRule::Relative {
+                rel: *rel,
+                abs: *abs,
+            },
+            ("peak", [rel]) => ColumnRule::PeakRelative {
+                rel: *rel,
+                abs: default_abs,
+            },
+            ("peak", [rel, abs]) => ColumnRule::PeakRelative {
+                rel: *rel,
+                abs: *abs,
+            },
+            _ => return Err(bad()),
+        };
+        Ok((column.to_string(), rule))
+    }
+}
+
 /// The tolerance rules of a baseline comparison, in one place.
 ///
 /// For the column named `c` of a file, the first rule that applies wins:
 ///
+/// 0. the rule given for `c` in [`overrides`](Self::overrides) (`courant check --column
+///    c=RULE`, see [`ColumnRule::parse`]);
 /// 1. **ignored** when `c` is in [`ignored_columns`](Self::ignored_columns) (`wall_time_s`) or
 ///    ends in one of [`ignored_suffixes`](Self::ignored_suffixes) (`_time_s`: times in seconds; `beta_s` and other `_s` names are compared);
 /// 2. **exact** when `c` is in [`exact_columns`](Self::exact_columns) (the integer columns
@@ -92,6 +234,8 @@ pub struct Tolerances {
     pub ignored_columns: Vec<String>,
     /// Columns whose name ends in one of these are never compared.
     pub ignored_suffixes: Vec<String>,
+    /// Per-column rules that take precedence over everything else, by column name.
+    pub overrides: Vec<(String, ColumnRule)>,
 }
 
 impl Default for Tolerances {
@@ -106,6 +250,7 @@ impl Default for Tolerances {
             exact_columns: strings(&["element", "node", "step", "steps", "N", "mode", "active"]),
             ignored_columns: strings(&["wall_time_s"]),
             ignored_suffixes: strings(&["_time_s"]),
+            overrides: Vec::new(),
         }
     }
 }
@@ -118,7 +263,9 @@ impl Tolerances {
 
     /// The rule for `column` of a file (`profile`: the file is a stress profile).
     pub fn rule_for(&self, profile: bool, column: &str) -> ColumnRule {
-        if self.ignored_columns.iter().any(|c| c == column)
+        if let Some((_, rule)) = self.overrides.iter().rev().find(|(c, _)| c == column) {
+            *rule
+        } else if self.ignored_columns.iter().any(|c| c == column)
             || self.ignored_suffixes.iter().any(|s| column.ends_with(s))
         {
             ColumnRule::Ignored
@@ -139,8 +286,13 @@ impl Tolerances {
 
     /// One line describing the rules, for reports.
     pub fn describe(&self) -> String {
+        let overrides: String = self
+            .overrides
+            .iter()
+            .map(|(c, r)| format!("; {c}: {}", r.label()))
+            .collect();
         format!(
-            "|a - b| <= max(abs, rel * scale): scale = |b| (rel {:e}, abs {:e}); for {} of stress profiles scale = the column's peak |b| (rel {:e}, abs {:e}); exact: {}; ignored: {} and *{}",
+            "|a - b| <= max(abs, rel * scale): scale = |b| (rel {:e}, abs {:e}); for {} of stress profiles scale = the column's peak |b| (rel {:e}, abs {:e}); exact: {}; ignored: {} and *{}{overrides}",
             self.rel,
             self.abs,
             self.peak_columns.join("/"),
@@ -239,6 +391,9 @@ pub enum FileOutcome {
     MissingInBaseline,
     /// The baseline has the file but the fresh run did not write it.
     MissingInFresh,
+    /// The baseline is a report, which does not keep this file (a per-case profile, history or
+    /// energy log): not compared, and not a failure.
+    NotKeptByReport,
     /// The headers differ.
     HeaderChanged {
         /// Fresh header.
@@ -267,10 +422,16 @@ pub struct FileComparison {
 }
 
 impl FileComparison {
-    /// True when the file matches its baseline within tolerance.
+    /// True when the file was not compared because a report baseline does not keep it.
+    pub fn skipped(&self) -> bool {
+        self.outcome == FileOutcome::NotKeptByReport
+    }
+
+    /// True when the file matches its baseline within tolerance (or was skipped).
     pub fn passed(&self) -> bool {
         match &self.outcome {
             FileOutcome::Compared { columns, .. } => columns.iter().all(ColumnChange::passed),
+            FileOutcome::NotKeptByReport => true,
             _ => false,
         }
     }
@@ -312,6 +473,9 @@ impl FileComparison {
                 }
             }
             FileOutcome::MissingInBaseline => "missing from the baseline".into(),
+            FileOutcome::NotKeptByReport => {
+                "not compared: a report baseline does not keep it".into()
+            }
             FileOutcome::MissingInFresh => {
                 "in the baseline but not written by the fresh run".into()
             }
@@ -398,7 +562,20 @@ pub fn compare_csv(fresh: &str, baseline: &str, tolerances: &Tolerances) -> File
         Ok(t) => t,
         Err(e) => return FileOutcome::Unreadable(format!("baseline file: {e}")),
     };
-    if fresh_header != base_header {
+    // Columns are matched by name, in any order; ignored columns (wall times) may be on one side
+    // only.
+    let fresh_profile = tolerances.is_profile(&fresh_header);
+    let profile = tolerances.is_profile(&base_header);
+    let compared = |header: &[String], profile: bool| -> Vec<String> {
+        let mut names: Vec<String> = header
+            .iter()
+            .filter(|c| tolerances.rule_for(profile, c) != ColumnRule::Ignored)
+            .cloned()
+            .collect();
+        names.sort();
+        names
+    };
+    if compared(&fresh_header, fresh_profile) != compared(&base_header, profile) {
         return FileOutcome::HeaderChanged {
             fresh: fresh_header,
             baseline: base_header,
@@ -410,20 +587,28 @@ pub fn compare_csv(fresh: &str, baseline: &str, tolerances: &Tolerances) -> File
             baseline: base_rows.len(),
         };
     }
-    let profile = tolerances.is_profile(&base_header);
     let mut columns = Vec::new();
-    let mut ignored = Vec::new();
+    let mut ignored: Vec<String> = Vec::new();
     for (j, name) in base_header.iter().enumerate() {
         let rule = tolerances.rule_for(profile, name);
         if rule == ColumnRule::Ignored {
             ignored.push(name.clone());
             continue;
         }
+        // Present: the compared names are equal on both sides.
+        let Some(i) = fresh_header.iter().position(|c| c == name) else {
+            continue;
+        };
         let cells = fresh_rows
             .iter()
             .zip(&base_rows)
-            .map(|(f, b)| (&f[j], &b[j]));
+            .map(|(f, b)| (&f[i], &b[j]));
         columns.push(compare_column(name, rule, cells));
+    }
+    for name in &fresh_header {
+        if !ignored.contains(name) && !base_header.contains(name) {
+            ignored.push(name.clone());
+        }
     }
     FileOutcome::Compared {
         rows: base_rows.len(),
@@ -542,23 +727,29 @@ fn compare_column<'a>(
 }
 
 /// Compare the fresh files of a scene (name, CSV text) with `baseline_dir` (the scene's
-/// directory of a previous run, `DIR/<scene>`): every fresh file in order, then every `.csv`
-/// file the baseline has and the fresh run did not write. A missing `baseline_dir` makes every
-/// file missing from the baseline.
+/// directory of a previous run or report, `DIR/<scene>`): every fresh file in order, then every
+/// `.csv` file the baseline has and the fresh run did not write. A missing `baseline_dir` makes
+/// every file missing from the baseline, whatever its kind; a fresh file a report does not keep
+/// ([`BaselineKind::keeps`]) is [`FileOutcome::NotKeptByReport`] and not read.
 pub fn compare_scene(
     fresh: &[(String, String)],
     baseline_dir: &Path,
+    kind: BaselineKind,
     tolerances: &Tolerances,
 ) -> Vec<FileComparison> {
     let mut comparisons: Vec<FileComparison> = fresh
         .iter()
         .map(|(file, text)| {
-            let outcome = match std::fs::read_to_string(baseline_dir.join(file)) {
-                Ok(base) => compare_csv(text, &base, tolerances),
-                Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-                    FileOutcome::MissingInBaseline
+            let outcome = if kind.keeps(file) {
+                match std::fs::read_to_string(baseline_dir.join(file)) {
+                    Ok(base) => compare_csv(text, &base, tolerances),
+                    Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                        FileOutcome::MissingInBaseline
+                    }
+                    Err(e) => FileOutcome::Unreadable(format!("baseline file: {e}")),
                 }
-                Err(e) => FileOutcome::Unreadable(format!("baseline file: {e}")),
+            } else {
+                FileOutcome::NotKeptByReport
             };
             FileComparison {
                 file: file.clone(),
@@ -680,5 +871,110 @@ mod tests {
         assert!(!c("a,b\n1,nan\n", "a,b\n1,2\n").passed());
         assert!(c("a,b\nNaN,inf\n", "a,b\nNaN,inf\n").passed());
         assert!(!c("a,b\n1,\n", "a,b\n1,0\n").passed());
+    }
+
+    /// Overrides come first: a column named on the command line gets its rule whatever its kind.
+    #[test]
+    fn overrides_win_and_parse_with_named_errors() {
+        let mut t = Tolerances::default();
+        let (c, r) = ColumnRule::parse_override("stress=rel:1e-6", 1e-12).unwrap();
+        assert_eq!(c, "stress");
+        assert_eq!(
+            r,
+            ColumnRule::Relative {
+                rel: 1e-6,
+                abs: 1e-12
+            }
+        );
+        t.overrides.push((c, r));
+        t.overrides
+            .push(ColumnRule::parse_override("wall_time_s=exact", 0.0).unwrap());
+        t.overrides
+            .push(ColumnRule::parse_override("x=peak:1e-3:1e-8", 0.0).unwrap());
+        t.overrides
+            .push(ColumnRule::parse_override(" l1 = ignore ", 0.0).unwrap());
+        assert_eq!(t.rule_for(true, "stress"), r);
+        assert_eq!(t.rule_for(false, "wall_time_s"), ColumnRule::Exact);
+        assert_eq!(
+            t.rule_for(false, "x"),
+            ColumnRule::PeakRelative {
+                rel: 1e-3,
+                abs: 1e-8
+            }
+        );
+        assert_eq!(t.rule_for(false, "l1"), ColumnRule::Ignored);
+        assert!(t.describe().contains("; l1: ignored"));
+        for bad in [
+            "stress",
+            "=rel:1",
+            "stress=rel",
+            "stress=rel:-1",
+            "stress=rel:1:2:3",
+            "stress=exact:1",
+            "stress=relative:1",
+            "stress=rel:nan",
+        ] {
+            let e = ColumnRule::parse_override(bad, 0.0).unwrap_err();
+            assert_eq!(e.flag, "--column");
+            assert_eq!(e.value, bad);
+            assert!(e.to_string().contains("COLUMN=RULE"), "{e}");
+        }
+        assert!(tolerance_value("--rel", -1.0).is_err());
+        assert!(tolerance_value("--abs", f64::INFINITY).is_err());
+        assert_eq!(tolerance_value("--abs", 0.0), Ok(0.0));
+    }
+
+    /// Columns are matched by name: a report drops `wall_time_s` from summaries, a run keeps it.
+    #[test]
+    fn ignored_columns_may_be_on_one_side_only() {
+        let t = Tolerances::default();
+        let fresh = "case,l1,wall_time_s\na,0.5,3.2\n";
+        let report = "case,l1\na,0.5000000001\n";
+        let outcome = compare_csv(fresh, report, &t);
+        assert_eq!(columns(&outcome).len(), 2);
+        assert!(columns(&outcome).iter().all(ColumnChange::passed));
+        let FileOutcome::Compared { ignored, .. } = &outcome else {
+            unreachable!()
+        };
+        assert_eq!(ignored, &["wall_time_s".to_string()]);
+        // A compared column on one side only still changes the header.
+        let outcome = compare_csv("case,l1,l2\na,1,2\n", "case,l1\na,1\n", &t);
+        assert!(matches!(outcome, FileOutcome::HeaderChanged { .. }));
+        // The same columns in another order are compared by name.
+        let outcome = compare_csv("l1,case\n0.5,a\n", "case,l1\na,0.5\n", &t);
+        assert!(
+            columns(&outcome).iter().all(|c| !c.changed()),
+            "{outcome:?}"
+        );
+    }
+
+    /// A report keeps only its tables: other fresh files are skipped, its tables must match and
+    /// must exist; a run's output keeps everything.
+    #[test]
+    fn a_report_baseline_compares_its_tables_and_skips_per_case_files() {
+        let root =
+            std::env::temp_dir().join(format!("courant-baseline-kind-{}", std::process::id()));
+        let scene = root.join("s");
+        std::fs::create_dir_all(&scene).unwrap();
+        assert_eq!(BaselineKind::detect(&root), BaselineKind::RunOutput);
+        std::fs::write(root.join("index.md"), "# report\n").unwrap();
+        assert_eq!(BaselineKind::detect(&root), BaselineKind::Report);
+        std::fs::write(scene.join("summary.csv"), "case,l1\na,1\n").unwrap();
+        let fresh = [
+            ("a.csv".to_string(), "t,stress\n0,1\n".to_string()),
+            (
+                "summary.csv".to_string(),
+                "case,l1,wall_time_s\na,1,0.1\n".to_string(),
+            ),
+            ("norms.csv".to_string(), "case,l1\na,1\n".to_string()),
+        ];
+        let t = Tolerances::default();
+        let outcomes = compare_scene(&fresh, &scene, BaselineKind::Report, &t);
+        assert!(outcomes[0].skipped() && outcomes[0].passed());
+        assert!(outcomes[1].passed() && !outcomes[1].skipped());
+        assert_eq!(outcomes[2].outcome, FileOutcome::MissingInBaseline);
+        let outcomes = compare_scene(&fresh, &scene, BaselineKind::RunOutput, &t);
+        assert_eq!(outcomes[0].outcome, FileOutcome::MissingInBaseline);
+        std::fs::remove_dir_all(&root).unwrap();
     }
 }

@@ -1,6 +1,9 @@
 //! The benchmark table of the report's timing section: criterion's medians read from
 //! `target/criterion/<group>/<function>/<N>/new/estimates.json` (written by `cargo bench`),
-//! in ns per node-step, beside a bandwidth model (bytes of arrays each node-step touches).
+//! in ns per node-step, beside a bandwidth model (bytes of arrays each node-step touches) and
+//! the machine's measured reach: the STREAM triad `a = b + s c` at the same N (McCalpin 1995;
+//! the `memory_triad` benchmark, 24 B per element), so `fraction_of_triad` = model GB/s over
+//! triad GB/s says how close to this machine's limit a step runs.
 
 use crate::table::Table;
 use std::path::Path;
@@ -24,9 +27,13 @@ fn bytes_per_node_step(group: &str, function: &str) -> Option<u64> {
     }
 }
 
+/// The STREAM triad benchmark (group, function) and its bytes per element.
+const TRIAD: (&str, &str, f64) = ("memory_triad", "triad", 24.0);
+
 /// `benchmark, N, median_ns_per_iteration, ns_per_node_step, model_bytes_per_node_step,
-/// model_GB_per_s` for every criterion result found under `criterion_dir`; `None` when there
-/// are none (run `cargo bench` first).
+/// model_GB_per_s, triad_GB_per_s, fraction_of_triad` for every criterion result found under
+/// `criterion_dir` (the triad columns where the triad was measured at the same N); `None` when
+/// there are none (run `cargo bench` first).
 pub fn bench_table(criterion_dir: &Path) -> Option<Table> {
     let mut rows: Vec<(String, String, u64, f64)> = Vec::new();
     for group in std::fs::read_dir(criterion_dir).ok()?.flatten() {
@@ -64,6 +71,12 @@ pub fn bench_table(criterion_dir: &Path) -> Option<Table> {
         return None;
     }
     rows.sort_by(|a, b| (&a.0, &a.1, a.2).cmp(&(&b.0, &b.1, b.2)));
+    // GB/s of the triad at each N (bytes per ns = GB/s).
+    let triad = |n: u64| {
+        rows.iter()
+            .find(|r| r.0 == TRIAD.0 && r.1 == TRIAD.1 && r.2 == n)
+            .map(|r| TRIAD.2 * n as f64 / r.3)
+    };
     let mut table = Table::new(&[
         "benchmark",
         "N",
@@ -71,21 +84,39 @@ pub fn bench_table(criterion_dir: &Path) -> Option<Table> {
         "ns_per_node_step",
         "model_bytes_per_node_step",
         "model_GB_per_s",
+        "triad_GB_per_s",
+        "fraction_of_triad",
     ]);
-    for (group, function, n, median) in rows {
+    for &(ref group, ref function, n, median) in &rows {
+        if (group.as_str(), function.as_str()) == (TRIAD.0, TRIAD.1) {
+            table.push(vec![
+                format!("{group}/{function}").into(),
+                (n as usize).into(),
+                median.into(),
+                None::<f64>.into(),
+                None::<usize>.into(),
+                triad(n).into(),
+                triad(n).into(),
+                Some(1.0).into(),
+            ]);
+            continue;
+        }
         // A dense spectrum benchmark iterates one eigen-solve, not a time step; a contact step
         // advances two bars of N elements each.
         let is_step = group != "spectrum_dense";
         let nodes = if group == "contact_step" { 2 } else { 1 } as f64 * (n as f64 + 1.0);
         let per_node = is_step.then(|| median / nodes);
-        let bytes = bytes_per_node_step(&group, &function);
+        let bytes = bytes_per_node_step(group, function);
+        let model = bytes.zip(per_node).map(|(b, t)| b as f64 / t);
         table.push(vec![
             format!("{group}/{function}").into(),
             (n as usize).into(),
             median.into(),
             per_node.into(),
             bytes.map(|b| b as usize).into(),
-            bytes.zip(per_node).map(|(b, t)| b as f64 / t).into(),
+            model.into(),
+            triad(n).into(),
+            model.zip(triad(n)).map(|(m, t)| m / t).into(),
         ]);
     }
     Some(table)
@@ -109,9 +140,34 @@ mod tests {
         .unwrap();
         let table = bench_table(&dir).expect("one result");
         let csv = table.to_csv(crate::table::Precision::RoundTrip);
-        std::fs::remove_dir_all(&dir).unwrap();
         let row = csv.lines().nth(1).unwrap();
-        assert_eq!(row, "lumped_cd_step/step,999,500,0.5,48,96");
+        assert_eq!(row, "lumped_cd_step/step,999,500,0.5,48,96,,");
+        // A triad of 999 elements in 125 ns moves 24 * 999 / 125 GB/s; the step's 96 GB/s is
+        // that fraction of it.
+        let leaf = dir.join("memory_triad/triad/999/new");
+        std::fs::create_dir_all(&leaf).unwrap();
+        std::fs::write(
+            leaf.join("estimates.json"),
+            r#"{"median":{"point_estimate":125.0}}"#,
+        )
+        .unwrap();
+        let csv = bench_table(&dir)
+            .unwrap()
+            .to_csv(crate::table::Precision::RoundTrip);
+        std::fs::remove_dir_all(&dir).unwrap();
+        let triad = 24.0 * 999.0 / 125.0;
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(
+            lines[1],
+            format!(
+                "lumped_cd_step/step,999,500,0.5,48,96,{triad},{}",
+                96.0 / triad
+            )
+        );
+        assert_eq!(
+            lines[2],
+            format!("memory_triad/triad,999,125,,,{triad},{triad},1")
+        );
         assert!(bench_table(&dir).is_none());
     }
 }

@@ -35,6 +35,14 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         "stability_extremes",
         include_str!("../scenes/stability_extremes.toml"),
     ),
+    (
+        "stability_exact",
+        include_str!("../scenes/stability_exact.toml"),
+    ),
+    (
+        "stability_park",
+        include_str!("../scenes/stability_park.toml"),
+    ),
     ("fig1_si", include_str!("../scenes/fig1_si.toml")),
     ("long_run", include_str!("../scenes/long_run.toml")),
     ("graded_1e4", include_str!("../scenes/graded_1e4.toml")),

@@ -5,11 +5,12 @@
 //! terminal table ([`CheckReport::render`]) and as JUnit XML ([`CheckReport::junit`]), one
 //! test suite per scene, one test case per check.
 
-use crate::baseline::{FileComparison, FileOutcome, Tolerances, compare_scene};
+use crate::baseline::{BaselineKind, FileComparison, FileOutcome, Tolerances, compare_scene};
 use crate::expect::{Measured, Verdict};
 use crate::junit::{Failure, TestCase, TestSuite};
 use crate::scene::{Bound, Scene, SceneError};
 use courant_solver::RunError;
+use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -53,6 +54,10 @@ pub struct SceneCheck {
     pub files: Vec<(String, String)>,
     /// The baseline comparison of every file, when a baseline was given.
     pub baseline: Option<Vec<FileComparison>>,
+    /// When the scene started running, ISO 8601 UTC.
+    pub started: String,
+    /// Wall time of running and comparing the scene [s].
+    pub wall_time: f64,
 }
 
 impl SceneCheck {
@@ -67,16 +72,21 @@ impl SceneCheck {
 }
 
 /// Run a scene, evaluate its expectations and compare its files with `baseline` (the baseline
-/// root `DIR`; the scene's files are under `DIR/<scene>/`).
+/// root `DIR` and what it holds; the scene's files are under `DIR/<scene>/`).
 pub fn check_scene(
     scene: &Scene,
-    baseline: Option<&Path>,
+    baseline: Option<(&Path, BaselineKind)>,
     tolerances: &Tolerances,
 ) -> Result<SceneCheck, RunError> {
+    let started = crate::report::date();
+    let clock = std::time::Instant::now();
     let outcome = crate::run_scene(scene)?;
     let files = crate::results::scene_files(&outcome);
-    let baseline = baseline.map(|root| compare_scene(&files, &root.join(&scene.name), tolerances));
+    let baseline = baseline
+        .map(|(root, kind)| compare_scene(&files, &root.join(&scene.name), kind, tolerances));
     Ok(SceneCheck {
+        started,
+        wall_time: clock.elapsed().as_secs_f64(),
         name: scene.name.clone(),
         description: scene.description.clone(),
         source: scene.source.clone(),
@@ -134,35 +144,48 @@ fn verdict_word(pass: bool) -> &'static str {
 pub struct CheckReport {
     /// Per scene, in argument order.
     pub scenes: Vec<SceneCheck>,
-    /// The baseline root, if any.
-    pub baseline: Option<PathBuf>,
+    /// The baseline root and what it holds, if any.
+    pub baseline: Option<(PathBuf, BaselineKind)>,
     /// The tolerance rules of the baseline comparison.
     pub tolerances: Tolerances,
 }
 
-/// Counts of checks: (total, failed).
+/// Counts of checks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Counts {
-    /// Checks made.
+    /// Checks made (including skipped ones).
     pub total: usize,
     /// Checks failed.
     pub failed: usize,
+    /// Checks skipped (files a report baseline does not keep).
+    pub skipped: usize,
 }
 
 impl CheckReport {
-    /// Check every scene (stops at the first scene that cannot run).
+    /// Check every scene, in parallel (rayon; the results keep the argument order and do not
+    /// depend on the thread count). The baseline's kind is detected ([`BaselineKind::detect`]).
+    /// When scenes cannot run, the error of the first one in argument order is returned.
     pub fn run(
         scenes: &[Scene],
         baseline: Option<&Path>,
         tolerances: Tolerances,
     ) -> Result<CheckReport, (String, RunError)> {
-        let scenes = scenes
-            .iter()
-            .map(|s| check_scene(s, baseline, &tolerances).map_err(|e| (s.name.clone(), e)))
+        let baseline = baseline.map(|root| (root.to_path_buf(), BaselineKind::detect(root)));
+        let base = baseline
+            .as_ref()
+            .map(|(root, kind)| (root.as_path(), *kind));
+        let checked: Vec<Result<SceneCheck, RunError>> = scenes
+            .par_iter()
+            .map(|s| check_scene(s, base, &tolerances))
+            .collect();
+        let scenes = checked
+            .into_iter()
+            .zip(scenes)
+            .map(|(c, s)| c.map_err(|e| (s.name.clone(), e)))
             .collect::<Result<Vec<_>, _>>()?;
         Ok(CheckReport {
             scenes,
-            baseline: baseline.map(Path::to_path_buf),
+            baseline,
             tolerances,
         })
     }
@@ -178,6 +201,7 @@ impl CheckReport {
         Counts {
             total: all.clone().count(),
             failed: all.filter(|v| !v.pass).count(),
+            skipped: 0,
         }
     }
 
@@ -186,7 +210,8 @@ impl CheckReport {
         let all = self.scenes.iter().flat_map(|s| s.baseline.iter().flatten());
         Counts {
             total: all.clone().count(),
-            failed: all.filter(|f| !f.passed()).count(),
+            failed: all.clone().filter(|f| !f.passed()).count(),
+            skipped: all.filter(|f| f.skipped()).count(),
         }
     }
 
@@ -199,8 +224,13 @@ impl CheckReport {
             let _ = writeln!(out, "{}: {}", scene.name, scene.description);
             let _ = writeln!(out, "  source: {}", scene.source);
             render_verdicts(&mut out, &scene.verdicts);
-            if let (Some(root), Some(files)) = (&self.baseline, &scene.baseline) {
-                let _ = writeln!(out, "  baseline {}:", root.join(&scene.name).display());
+            if let (Some((root, kind)), Some(files)) = (&self.baseline, &scene.baseline) {
+                let _ = writeln!(
+                    out,
+                    "  baseline {} ({}):",
+                    root.join(&scene.name).display(),
+                    kind.label()
+                );
                 render_baseline(&mut out, files);
             }
             out.push('\n');
@@ -218,7 +248,11 @@ impl CheckReport {
         );
         if self.baseline.is_some() {
             let b = self.baseline_counts();
-            let _ = write!(out, "; baseline: {} file(s), {} failed", b.total, b.failed);
+            let _ = write!(
+                out,
+                "; baseline: {} file(s), {} failed, {} not kept by the baseline",
+                b.total, b.failed, b.skipped
+            );
         }
         let _ = writeln!(out, ": {}", verdict_word(self.passed()));
         out
@@ -235,11 +269,12 @@ impl CheckReport {
                     ("description".to_string(), scene.description.clone()),
                     ("source".to_string(), scene.source.clone()),
                 ];
-                if let Some(root) = &self.baseline {
+                if let Some((root, kind)) = &self.baseline {
                     properties.push((
                         "baseline".into(),
                         root.join(&scene.name).display().to_string(),
                     ));
+                    properties.push(("baseline_kind".into(), kind.label().into()));
                     properties.push(("tolerances".into(), self.tolerances.describe()));
                 }
                 let mut cases: Vec<TestCase> = scene
@@ -262,6 +297,7 @@ impl CheckReport {
                             }),
                             name,
                             output: Some(what),
+                            skipped: None,
                         }
                     })
                     .collect();
@@ -275,10 +311,13 @@ impl CheckReport {
                             details: m,
                         }),
                         output: Some(file_details(file)),
+                        skipped: file.skipped().then(|| file.summary()),
                     });
                 }
                 TestSuite {
                     name: scene.name.clone(),
+                    timestamp: scene.started.clone(),
+                    time: scene.wall_time,
                     properties,
                     cases,
                 }
@@ -342,10 +381,15 @@ fn render_baseline(out: &mut String, files: &[FileComparison]) {
         .max()
         .unwrap_or(0);
     for file in files {
+        let verdict = if file.skipped() {
+            "skip"
+        } else {
+            verdict_word(file.passed())
+        };
         let _ = writeln!(
             out,
             "  {:<7} {:<width$}  {}",
-            verdict_word(file.passed()),
+            verdict,
             file.file,
             file.summary()
         );

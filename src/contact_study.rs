@@ -9,6 +9,7 @@ use courant_solver::contact::{
     MassPenalty,
 };
 use courant_solver::{Bar, DivergenceError, End, InputError, Mesh};
+use rayon::prelude::*;
 use std::time::{Duration, Instant};
 
 /// A contact case's run beside its reference, with its accuracy figures.
@@ -249,41 +250,54 @@ impl SweepResult {
 
 /// Evaluate the sweep: a unit free bar (E = rho = A = 1) of `elements` elements against a rigid
 /// wall; the critical Courant number of its contact-active system (`(K + K_p, M + M_p)`,
-/// exact bisection) beside the closed form.
+/// exact bisection) beside the closed form. The rows are independent and evaluated in parallel
+/// (rayon), kept in curve order; an error is that of the first failing row in that order.
 pub fn run_sweep(sweep: &StabilitySweep) -> Result<SweepResult, InputError> {
     let started = Instant::now();
     let bar = Bar::homogeneous(Mesh::uniform(1.0, sweep.elements)?, 1.0, 1.0, 1.0)?;
     let problem = ContactProblem::wall_impact(bar, End::Right, 1.0, 0.0)?;
-    let mut rows = Vec::with_capacity(sweep.beta_s.len() * sweep.ratios.len());
-    for &ratio in &sweep.ratios {
-        for &beta_s in &sweep.beta_s {
-            let mass = ratio.map_or(MassPenalty::None, MassPenalty::Ratio);
-            let penalty = problem.penalty(beta_s, mass)?;
-            let scheme = if ratio.is_some() {
-                ContactScheme::Bipenalty(penalty)
-            } else {
-                ContactScheme::Penalty {
-                    stiffness: penalty.stiffness,
-                }
-            };
-            let critical = ContactCriticalStep::of(&problem, &scheme);
-            let courant = critical.contact_active / critical.stiffest_transit;
-            let closed_form = match ratio {
-                None => closed::signorini_critical_courant_penalty(beta_s),
-                Some(r) => closed::signorini_critical_courant_ratio(beta_s, r),
-            }
-            .map_err(|e| InputError::Other(e.to_string()))?;
-            rows.push(SweepRow {
-                beta_s,
-                ratio,
-                courant,
-                closed_form,
-            });
-        }
-    }
+    let grid: Vec<(Option<f64>, f64)> = sweep
+        .ratios
+        .iter()
+        .flat_map(|&ratio| sweep.beta_s.iter().map(move |&beta_s| (ratio, beta_s)))
+        .collect();
+    let rows: Vec<Result<SweepRow, InputError>> = grid
+        .par_iter()
+        .map(|&(ratio, beta_s)| sweep_row(&problem, ratio, beta_s))
+        .collect();
     Ok(SweepResult {
-        rows,
+        rows: rows.into_iter().collect::<Result<_, _>>()?,
         wall_time: started.elapsed(),
+    })
+}
+
+/// One row of [`run_sweep`]: penalty only (`ratio` `None`) or bipenalty with penalty ratio `r`.
+fn sweep_row(
+    problem: &ContactProblem,
+    ratio: Option<f64>,
+    beta_s: f64,
+) -> Result<SweepRow, InputError> {
+    let mass = ratio.map_or(MassPenalty::None, MassPenalty::Ratio);
+    let penalty = problem.penalty(beta_s, mass)?;
+    let scheme = if ratio.is_some() {
+        ContactScheme::Bipenalty(penalty)
+    } else {
+        ContactScheme::Penalty {
+            stiffness: penalty.stiffness,
+        }
+    };
+    let critical = ContactCriticalStep::of(problem, &scheme);
+    let courant = critical.contact_active / critical.stiffest_transit;
+    let closed_form = match ratio {
+        None => closed::signorini_critical_courant_penalty(beta_s),
+        Some(r) => closed::signorini_critical_courant_ratio(beta_s, r),
+    }
+    .map_err(|e| InputError::Other(e.to_string()))?;
+    Ok(SweepRow {
+        beta_s,
+        ratio,
+        courant,
+        closed_form,
     })
 }
 

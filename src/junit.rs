@@ -1,6 +1,8 @@
 //! JUnit XML for CI servers, written by hand: `<testsuites>` of `<testsuite>`s of `<testcase>`s,
-//! each with an optional `<failure>` and `<system-out>`. Every attribute value and text is
-//! XML-escaped; characters XML 1.0 forbids are replaced by U+FFFD.
+//! each with an optional `<failure>` or `<skipped>` and `<system-out>`, in the shape of the Ant
+//! JUnit schema (`testsuite` carries `name, tests, failures, errors, skipped, time, timestamp,
+//! hostname`; `timestamp` is ISO 8601 without a zone, here UTC). Every attribute value and text
+//! is XML-escaped; characters XML 1.0 forbids are replaced by U+FFFD.
 
 use std::fmt::Write as _;
 use std::io;
@@ -28,6 +30,8 @@ pub struct TestCase {
     pub failure: Option<Failure>,
     /// Text for `<system-out>`, if any.
     pub output: Option<String>,
+    /// Why the case was skipped (the `<skipped message>`), if it was.
+    pub skipped: Option<String>,
 }
 
 /// One test suite.
@@ -35,6 +39,11 @@ pub struct TestCase {
 pub struct TestSuite {
     /// `name` attribute.
     pub name: String,
+    /// When the suite started, ISO 8601 UTC (`YYYY-MM-DDThh:mm:ss`, a trailing `Z` is dropped
+    /// for the schema's zone-less pattern).
+    pub timestamp: String,
+    /// Wall time of the suite [s] (`time` attribute).
+    pub time: f64,
     /// `<properties>` (name, value).
     pub properties: Vec<(String, String)>,
     /// Its test cases.
@@ -46,6 +55,21 @@ impl TestSuite {
     pub fn failures(&self) -> usize {
         self.cases.iter().filter(|c| c.failure.is_some()).count()
     }
+
+    /// Skipped test cases.
+    pub fn skipped(&self) -> usize {
+        self.cases.iter().filter(|c| c.skipped.is_some()).count()
+    }
+}
+
+/// This machine's name (the `hostname` attribute), `localhost` when it cannot be read.
+fn hostname() -> String {
+    std::fs::read_to_string("/proc/sys/kernel/hostname")
+        .ok()
+        .or_else(|| std::env::var("HOSTNAME").ok())
+        .map(|h| h.trim().to_string())
+        .filter(|h| !h.is_empty())
+        .unwrap_or_else(|| "localhost".into())
 }
 
 /// Escape text for an XML attribute value: `& < > " '` become entities, tab, newline and
@@ -89,20 +113,26 @@ fn allowed_in_xml(c: char) -> bool {
 pub fn render(name: &str, suites: &[TestSuite]) -> String {
     let tests: usize = suites.iter().map(|s| s.cases.len()).sum();
     let failures: usize = suites.iter().map(TestSuite::failures).sum();
+    let skipped: usize = suites.iter().map(TestSuite::skipped).sum();
+    let time: f64 = suites.iter().map(|s| s.time).sum();
+    let host = escape(&hostname());
     let mut xml = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     // Writing to a String cannot fail.
     let _ = writeln!(
         xml,
-        "<testsuites name=\"{}\" tests=\"{tests}\" failures=\"{failures}\" errors=\"0\">",
+        "<testsuites name=\"{}\" tests=\"{tests}\" failures=\"{failures}\" errors=\"0\" skipped=\"{skipped}\" time=\"{time:.3}\">",
         escape(name)
     );
     for suite in suites {
         let _ = writeln!(
             xml,
-            "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" skipped=\"0\">",
+            "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" skipped=\"{}\" time=\"{:.3}\" timestamp=\"{}\" hostname=\"{host}\">",
             escape(&suite.name),
             suite.cases.len(),
-            suite.failures()
+            suite.failures(),
+            suite.skipped(),
+            suite.time,
+            escape(suite.timestamp.trim_end_matches('Z')),
         );
         if !suite.properties.is_empty() {
             xml.push_str("    <properties>\n");
@@ -123,7 +153,7 @@ pub fn render(name: &str, suites: &[TestSuite]) -> String {
                 escape(&case.classname),
                 escape(&case.name)
             );
-            if case.failure.is_none() && case.output.is_none() {
+            if case.failure.is_none() && case.output.is_none() && case.skipped.is_none() {
                 xml.push_str("/>\n");
                 continue;
             }
@@ -136,6 +166,9 @@ pub fn render(name: &str, suites: &[TestSuite]) -> String {
                     escape(&f.kind),
                     escape_text(&f.details)
                 );
+            }
+            if let Some(why) = &case.skipped {
+                let _ = writeln!(xml, "      <skipped message=\"{}\"/>", escape(why));
             }
             if let Some(out) = &case.output {
                 let _ = writeln!(xml, "      <system-out>{}</system-out>", escape_text(out));
@@ -186,6 +219,8 @@ mod tests {
     fn renders_counts_and_failures() {
         let suite = TestSuite {
             name: "s<1>".into(),
+            timestamp: "2026-11-24T11:08:06Z".into(),
+            time: 1.25,
             properties: vec![("source".into(), "a & b".into())],
             cases: vec![
                 TestCase {
@@ -193,6 +228,14 @@ mod tests {
                     name: "ok".into(),
                     failure: None,
                     output: None,
+                    skipped: None,
+                },
+                TestCase {
+                    classname: "s".into(),
+                    name: "not kept".into(),
+                    failure: None,
+                    output: None,
+                    skipped: Some("a report does not keep it".into()),
                 },
                 TestCase {
                     classname: "s".into(),
@@ -203,11 +246,16 @@ mod tests {
                         details: "x".into(),
                     }),
                     output: None,
+                    skipped: None,
                 },
             ],
         };
         let xml = render("all", &[suite]);
-        assert!(xml.contains("tests=\"2\" failures=\"1\""));
+        assert!(
+            xml.contains("tests=\"3\" failures=\"1\" errors=\"0\" skipped=\"1\" time=\"1.250\"")
+        );
+        assert!(xml.contains("timestamp=\"2026-11-24T11:08:06\" hostname=\""));
+        assert!(xml.contains("<skipped message=\"a report does not keep it\"/>"));
         assert!(xml.contains("<testsuite name=\"s&lt;1&gt;\""));
         assert!(xml.contains("<property name=\"source\" value=\"a &amp; b\"/>"));
         assert!(xml.contains("<testcase classname=\"s\" name=\"ok\"/>"));

@@ -55,13 +55,71 @@ enum Command {
         /// Write a JUnit XML report here (one testsuite per scene, one testcase per check).
         #[arg(long, value_name = "FILE")]
         junit: Option<PathBuf>,
-        /// Compare the fresh CSVs with a previous `courant run --out DIR` (DIR/<scene>/*.csv).
+        /// Compare the fresh CSVs with a previous report (`courant report --out DIR`, e.g. the
+        /// committed `reports/`: each scene's tables) or a previous `courant run --out DIR`
+        /// (every result file), DIR/<scene>/*.csv.
         #[arg(long, value_name = "DIR")]
         baseline: Option<PathBuf>,
+        #[command(flatten)]
+        tolerances: ToleranceArgs,
         /// Also write the result directories, as `courant run --out DIR` does.
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
     },
+}
+
+/// Baseline tolerances (only with --baseline); unset ones keep their defaults.
+#[derive(clap::Args)]
+struct ToleranceArgs {
+    /// Relative tolerance of numeric columns: |a - b| <= max(ABS, REL |b|) [default 1e-9].
+    #[arg(long, value_name = "REL", allow_negative_numbers = true)]
+    rel: Option<f64>,
+    /// Absolute floor of numeric columns [default 1e-12].
+    #[arg(long, value_name = "ABS", allow_negative_numbers = true)]
+    abs: Option<f64>,
+    /// Relative tolerance of stress-profile columns, relative to the column's peak |b|
+    /// [default 1e-9].
+    #[arg(long, value_name = "REL", allow_negative_numbers = true)]
+    peak_rel: Option<f64>,
+    /// Absolute floor of stress-profile columns [default 1e-12].
+    #[arg(long, value_name = "ABS", allow_negative_numbers = true)]
+    peak_abs: Option<f64>,
+    /// A rule for one column, ahead of every other rule (repeatable):
+    /// COLUMN=ignore | exact | rel:REL[:ABS] | peak:REL[:ABS].
+    #[arg(long = "column", value_name = "COLUMN=RULE")]
+    columns: Vec<String>,
+}
+
+impl ToleranceArgs {
+    /// True when any tolerance was given.
+    fn given(&self) -> bool {
+        self.rel.is_some()
+            || self.abs.is_some()
+            || self.peak_rel.is_some()
+            || self.peak_abs.is_some()
+            || !self.columns.is_empty()
+    }
+
+    /// The tolerances: the defaults with every given value checked and applied.
+    fn tolerances(
+        &self,
+    ) -> Result<courant::baseline::Tolerances, courant::baseline::ToleranceError> {
+        use courant::baseline::{ColumnRule, tolerance_value};
+        let mut t = courant::baseline::Tolerances::default();
+        let set = |flag, given: Option<f64>, value: &mut f64| {
+            given
+                .map(|v| tolerance_value(flag, v).map(|v| *value = v))
+                .transpose()
+        };
+        set("--rel", self.rel, &mut t.rel)?;
+        set("--abs", self.abs, &mut t.abs)?;
+        set("--peak-rel", self.peak_rel, &mut t.peak_rel)?;
+        set("--peak-abs", self.peak_abs, &mut t.peak_abs)?;
+        for spec in &self.columns {
+            t.overrides.push(ColumnRule::parse_override(spec, t.abs)?);
+        }
+        Ok(t)
+    }
 }
 
 fn main() -> ExitCode {
@@ -73,11 +131,13 @@ fn main() -> ExitCode {
             scenes,
             junit,
             baseline,
+            tolerances,
             out,
         } => check(
             &scenes,
             junit.as_deref(),
             baseline.as_deref(),
+            &tolerances,
             out.as_deref(),
         ),
     }
@@ -87,6 +147,7 @@ fn check(
     args: &[String],
     junit: Option<&std::path::Path>,
     baseline: Option<&std::path::Path>,
+    tolerance_args: &ToleranceArgs,
     out: Option<&std::path::Path>,
 ) -> ExitCode {
     use courant::check::{CheckReport, resolve_scenes};
@@ -104,12 +165,24 @@ fn check(
         eprintln!("error: --baseline {}: not a directory", dir.display());
         return ExitCode::from(2);
     }
+    if baseline.is_none() && tolerance_args.given() {
+        eprintln!(
+            "error: --rel, --abs, --peak-rel, --peak-abs and --column set baseline tolerances: they need --baseline DIR"
+        );
+        return ExitCode::from(2);
+    }
+    let tolerances = match tolerance_args.tolerances() {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
     if let Some(file) = junit.filter(|f| f.is_dir()) {
         eprintln!("error: --junit {}: is a directory", file.display());
         return ExitCode::from(2);
     }
     // Everything runs and is compared before anything is written (so --out may be the baseline).
-    let tolerances = courant::baseline::Tolerances::default();
     let report = match CheckReport::run(&scenes, baseline, tolerances) {
         Ok(report) => report,
         Err((scene, e)) => {

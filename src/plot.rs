@@ -30,9 +30,12 @@ pub const WIDTH: u32 = 640;
 /// Chart height in pixels.
 pub const HEIGHT: u32 = 400;
 
+/// Number of colours of the palette (series beyond it repeat colours).
+pub const PALETTE_SIZE: usize = 8;
+
 /// The fixed colour palette; series take colours in order (cycling), so charts are deterministic.
 /// Okabe–Ito colours (colour-blind safe), black first.
-const PALETTE: [RGBColor; 8] = [
+const PALETTE: [RGBColor; PALETTE_SIZE] = [
     RGBColor(0, 0, 0),
     RGBColor(0, 114, 178),
     RGBColor(213, 94, 0),
@@ -67,6 +70,12 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
     /// Line, dashed line or points.
     pub style: SeriesStyle,
+    /// Palette index of its colour (taken modulo the palette's 8 colours); `None`: the series'
+    /// position in the chart, so series take the colours in order.
+    pub colour: Option<usize>,
+    /// Whether the legend lists it (default true); e.g. several curves of one kind can share a
+    /// single legend entry.
+    pub in_legend: bool,
 }
 
 impl Series {
@@ -76,7 +85,24 @@ impl Series {
             name: name.into(),
             points,
             style,
+            colour: None,
+            in_legend: true,
         }
+    }
+
+    /// The same series drawn in palette colour `index` (modulo 8), e.g. to pair a computed curve
+    /// with its closed form.
+    #[must_use]
+    pub fn with_colour(mut self, index: usize) -> Self {
+        self.colour = Some(index);
+        self
+    }
+
+    /// The same series without a legend entry.
+    #[must_use]
+    pub fn without_legend(mut self) -> Self {
+        self.in_legend = false;
+        self
     }
 }
 
@@ -167,7 +193,8 @@ pub enum PlotError {
 /// Renders `series` on `axes` as a 640x400 SVG chart with title, axis labels and a legend.
 ///
 /// Ranges come from the drawable points of all series, widened by a small margin. Colours come
-/// from a fixed palette in series order. The result is well-formed XML (text is escaped) and is
+/// from a fixed palette in series order, or the palette index a series names
+/// ([`Series::with_colour`]). The result is well-formed XML (text is escaped) and is
 /// byte-identical for identical input.
 ///
 /// # Errors
@@ -195,8 +222,10 @@ pub fn line_chart(axes: &Axes, series: &[Series]) -> Result<String, PlotError> {
         y_span: y_range.1 - y_range.0,
         legend: SeriesLabelPosition::UpperRight,
     };
+    let (legend, y_range) = legend_place(&ctx, x_range, y_range);
     let ctx = Ctx {
-        legend: legend_corner(&ctx, x_range, y_range),
+        legend,
+        y_span: y_range.1 - y_range.0,
         ..ctx
     };
     let (x, y) = (x_range.0..x_range.1, y_range.0..y_range.1);
@@ -250,10 +279,67 @@ fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
     }
 }
 
-/// The corner whose box (40% of the width, 30% of the height) holds the fewest data points
-/// (lines sampled between their points); ties go to upper right, upper left, lower right,
-/// lower left in that order.
-fn legend_corner(ctx: &Ctx<'_>, x_range: (f64, f64), y_range: (f64, f64)) -> SeriesLabelPosition {
+/// Font size of a chart title: 20 px, smaller for long titles so the whole title fits the
+/// 640 px chart (about 0.55 em per character of a sans-serif face), never below 11 px.
+fn title_font_size(title: &str) -> u32 {
+    let chars = title.chars().count().max(1) as f64;
+    (600.0 / (0.55 * chars)).floor().clamp(11.0, 20.0) as u32
+}
+
+/// Approximate size of the plotting area in pixels (the 640x400 chart less title, labels and
+/// margins), for the legend box estimate.
+const PLOT_AREA_PX: (f64, f64) = (560.0, 300.0);
+
+/// Where the legend goes, and the y range to draw: the corner whose legend box holds the fewest
+/// data points (lines sampled between their points; ties go to upper right, upper left, lower
+/// right, lower left in that order). The box is estimated from the legend's entries (20 px each)
+/// and its longest label (7 px per character plus the sample). When every corner would cover
+/// data, the y range is extended downwards (by the box height, in the axis' own scale) so the
+/// legend sits in the lower right over empty space instead of over a curve.
+fn legend_place(
+    ctx: &Ctx<'_>,
+    x_range: (f64, f64),
+    y_range: (f64, f64),
+) -> (SeriesLabelPosition, (f64, f64)) {
+    let entries: Vec<&Prepared> = ctx.series.iter().filter(|s| s.in_legend).collect();
+    let longest = entries
+        .iter()
+        .map(|s| s.name.chars().count())
+        .max()
+        .unwrap_or(0);
+    let box_w = ((longest as f64 * 7.0 + 50.0) / PLOT_AREA_PX.0).clamp(0.2, 0.95);
+    let box_h = ((entries.len() as f64 * 20.0 + 12.0) / PLOT_AREA_PX.1).clamp(0.1, 0.9);
+    let counts = corner_counts(ctx, x_range, y_range, box_w, box_h);
+    let corners = [
+        SeriesLabelPosition::UpperRight,
+        SeriesLabelPosition::UpperLeft,
+        SeriesLabelPosition::LowerRight,
+        SeriesLabelPosition::LowerLeft,
+    ];
+    let best = (0..4).min_by_key(|&i| counts[i]).unwrap_or(0);
+    if counts[best] == 0 || entries.is_empty() || box_h >= 0.6 {
+        return (corners[best].clone(), y_range);
+    }
+    // Data fills [0, 1] of the axis; give the legend the band [0, box_h] below it.
+    let grow = box_h / (1.0 - box_h);
+    let lower = if ctx.axes.log_y {
+        let (lo, hi) = (y_range.0.log10(), y_range.1.log10());
+        10f64.powf(lo - (hi - lo) * grow)
+    } else {
+        y_range.0 - (y_range.1 - y_range.0) * grow
+    };
+    (SeriesLabelPosition::LowerRight, (lower, y_range.1))
+}
+
+/// Data points (lines sampled between their points) inside a `box_w x box_h` box (fractions of
+/// the plotting area) at each corner: upper right, upper left, lower right, lower left.
+fn corner_counts(
+    ctx: &Ctx<'_>,
+    x_range: (f64, f64),
+    y_range: (f64, f64),
+    box_w: f64,
+    box_h: f64,
+) -> [usize; 4] {
     let unit = |v: f64, (lo, hi): (f64, f64), log: bool| {
         if log {
             (v.log10() - lo.log10()) / (hi.log10() - lo.log10())
@@ -269,10 +355,10 @@ fn legend_corner(ctx: &Ctx<'_>, x_range: (f64, f64), y_range: (f64, f64)) -> Ser
     };
     let mut counts = [0usize; 4];
     let mut count = |(u, v): (f64, f64)| {
-        let right = u > 0.6;
-        let left = u < 0.4;
-        let upper = v > 0.7;
-        let lower = v < 0.3;
+        let right = u > 1.0 - box_w;
+        let left = u < box_w;
+        let upper = v > 1.0 - box_h;
+        let lower = v < box_h;
         for (i, hit) in [upper && right, upper && left, lower && right, lower && left]
             .into_iter()
             .enumerate()
@@ -297,23 +383,15 @@ fn legend_corner(ctx: &Ctx<'_>, x_range: (f64, f64), y_range: (f64, f64)) -> Ser
             }
         }
     }
-    let corners = [
-        SeriesLabelPosition::UpperRight,
-        SeriesLabelPosition::UpperLeft,
-        SeriesLabelPosition::LowerRight,
-        SeriesLabelPosition::LowerLeft,
-    ];
-    let best = (0..4).min_by_key(|&i| counts[i]).unwrap_or(0);
-    corners
-        .into_iter()
-        .nth(best)
-        .unwrap_or(SeriesLabelPosition::UpperRight)
+    counts
 }
 
 /// A series reduced to its drawable pieces.
 struct Prepared {
     name: String,
     style: SeriesStyle,
+    colour: Option<usize>,
+    in_legend: bool,
     /// Maximal runs of consecutive drawable points.
     segments: Vec<Vec<(f64, f64)>>,
 }
@@ -365,6 +443,8 @@ fn prepare(axes: &Axes, title: &str, s: &Series) -> Result<Prepared, PlotError> 
     Ok(Prepared {
         name: clean_text(&s.name),
         style: s.style,
+        colour: s.colour,
+        in_legend: s.in_legend,
         segments,
     })
 }
@@ -421,7 +501,7 @@ where
     let root = SVGBackend::with_string(svg, (WIDTH, HEIGHT)).into_drawing_area();
     root.fill(&WHITE).map_err(|err| e(&err))?;
     let mut chart = ChartBuilder::on(&root)
-        .caption(ctx.title, ("sans-serif", 20))
+        .caption(ctx.title, ("sans-serif", title_font_size(ctx.title)))
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(64)
@@ -444,7 +524,7 @@ where
         .map_err(|err| e(&err))?;
 
     for (i, s) in ctx.series.iter().enumerate() {
-        let color = PALETTE[i % PALETTE.len()];
+        let color = PALETTE[s.colour.unwrap_or(i) % PALETTE.len()];
         let line = ShapeStyle::from(color).stroke_width(2);
         let anno = match s.style {
             SeriesStyle::Line => chart
@@ -470,6 +550,9 @@ where
                 )
                 .map_err(|err| e(&err))?,
         };
+        if !s.in_legend {
+            continue;
+        }
         let style = s.style;
         anno.label(s.name.as_str())
             .legend(move |(lx, ly)| match style {
@@ -539,6 +622,18 @@ fn clean_text(s: &str) -> String {
 
 #[cfg(test)]
 mod tests {
+
+    /// Short titles keep 20 px; a 78-character title shrinks to fit 600 px at 0.55 em per
+    /// character; nothing goes below 11 px.
+    #[test]
+    fn long_titles_shrink_to_fit() {
+        assert_eq!(title_font_size("fig1: stress at t = 0.5"), 20);
+        let long = "Fig. 2 graded bar on equal-transit-time meshes, lumped CD at Co = 1, t = 0.5 T";
+        let size = title_font_size(long);
+        assert_eq!(size, 13);
+        assert!(f64::from(size) * 0.55 * long.chars().count() as f64 <= 600.0);
+        assert_eq!(title_font_size(&"x".repeat(500)), 11);
+    }
     use super::*;
 
     #[test]

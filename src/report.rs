@@ -96,8 +96,55 @@ const AIRY_FRONT: [Option<OrderBand>; 3] = [
     }),
 ];
 
+/// The dispersive step front of CD with a consistent, averaged or reciprocal mass: L1 and L2 as
+/// [`AIRY_FRONT`]; the max error does not converge (order at most 0.1), but these masses reach
+/// its bounded plateau (jump plus overshoot, below 1.3) from below on the meshes studied (AMM(1/2)
+/// at 1/2 of its critical Courant number: 0.19 at N = 50, 0.62 at 6400, 0.66 at 12800), so the
+/// fitted order may dip to -0.25.
+const AIRY_FRONT_MASSES: [Option<OrderBand>; 3] = [
+    AIRY_FRONT[0],
+    AIRY_FRONT[1],
+    Some(OrderBand::Order {
+        min: -0.25,
+        max: 0.10,
+    }),
+];
+
 /// First order in every norm.
 const FIRST_ORDER: Option<OrderBand> = Some(OrderBand::Order { min: 0.9, max: 1.1 });
+
+/// The Fig. 1 bar with one mass kind at 1/2 of its critical Courant number, N = 50 … 12800, at
+/// t = 0.5 T: `mass_kind_study!(name, mass key, mass label, its critical Courant number)`.
+macro_rules! mass_kind_study {
+    ($name:literal, $mass:literal, $label:literal, $critical:literal) => {
+        ConvergenceStudy {
+            name: $name,
+            title: concat!(
+                "Fig. 1 bar, CD with ",
+                $label,
+                " at Co = 1/2 of ",
+                $critical,
+                ", t = 0.5 T"
+            ),
+            expected: "as lumped CD at Co < 1: a dispersive step front (cubic leading dispersion error, methods.md §3 and §5), L1 ~ h^(1/2), L2 ~ h^(1/3), Linf does not converge",
+            bands: AIRY_FRONT_MASSES,
+            scene: "fig1_masses",
+            replacements: &[
+                (
+                    "elements = 100",
+                    "elements = [50, 100, 200, 400, 800, 1600, 3200, 6400, 12800]",
+                ),
+                (
+                    "mass = [\"lmm\", \"cmm\", \"amm\", \"rmm\"]",
+                    concat!("mass = \"", $mass, "\""),
+                ),
+                ("courant = [1.0, 0.5]", "courant = 0.5"),
+                ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
+                ("history_points = [0.0, 0.5]", "history_points = []"),
+            ],
+        }
+    };
+}
 
 /// The built-in convergence studies.
 pub const CONVERGENCE_STUDIES: &[ConvergenceStudy] = &[
@@ -131,6 +178,24 @@ pub const CONVERGENCE_STUDIES: &[ConvergenceStudy] = &[
             ("courant = [1.0, 0.5, 0.1]", "courant = 1.0"),
             ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
             ("history_points = [0.0, 0.5]", "history_points = []"),
+        ],
+    },
+    mass_kind_study!("fig1_cmm", "cmm", "CMM", "1/sqrt(3)"),
+    mass_kind_study!("fig1_amm", "amm", "AMM(1/2)", "sqrt(2/3)"),
+    mass_kind_study!("fig1_rmm", "rmm", "RMM(1/2)", "sqrt(2/3)"),
+    ConvergenceStudy {
+        name: "layered_co1",
+        title: "Two-layer bar (impedance ratio 16) on equal-transit meshes, lumped CD at Co = 1, t = 0.5, 1.2 and 2.6 T",
+        expected: "exact to round-off on every mesh: interfaces at nodes, every element at its own Courant number 1 (methods.md §4); round-off grows ~1e-14 N^2 (methods.md §3), 3e-10 at N = 3200",
+        bands: [Some(OrderBand::Exact { max_error: 1e-9 }); 3],
+        scene: "layered",
+        replacements: &[
+            (
+                "elements = 100",
+                "elements = [50, 100, 200, 400, 800, 1600, 3200]",
+            ),
+            ("scheme = [\"cd\", \"park-lts\"]", "scheme = \"cd\""),
+            ("courant = [1.0, 0.5]", "courant = 1.0"),
         ],
     },
     ConvergenceStudy {
@@ -406,7 +471,7 @@ pub struct Report {
 }
 
 /// Generate the report for `scenes` (all built-in ones from the CLI) and `studies`, running
-/// scenes and studies in parallel (the results do not depend on the thread count: every case is
+/// scenes, studies and the cases inside each scene in parallel (the results do not depend on the thread count: every case is
 /// independent and results are collected in order).
 pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report, String> {
     let started = Instant::now();
@@ -571,7 +636,10 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
         "Error against work (elements x steps, machine-independent) per scheme or mass kind over a sequence \
          of meshes: the cheapest way to a given accuracy is the lowest curve. Stress studies measure the \
          normalised L1 error of the profile, the contact study the L1-in-time error of the contact force over \
-         the exact impulse (elements of both bars). A node-step does not cost the same in every scheme: the \
+         the exact impulse (elements of both bars). Each run's Courant number (relative to the stiffest \
+         element) and its scheme's exact critical one are in the Co and Co_crit columns; a scheme whose stable \
+         step is far below the others' runs at its own, stated in its label (CD with penalty at beta_s = 2500 \
+         at 0.9 of its critical Courant number 0.0200). A node-step does not cost the same in every scheme: the \
          benchmark table in `timing.md` gives ns per node-step of each integrator (`cargo bench`), and the CPU \
          times of these runs are there too."
             .into(),
@@ -601,19 +669,39 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
         })
         .collect();
     let agreeing = stability.iter().filter(|r| r.agrees()).count();
+    let disagreeing: Vec<String> = stability
+        .iter()
+        .filter(|r| !r.agrees())
+        .map(|r| format!("{}/{} ({}, {})", r.scene, r.case, r.predicted, r.observed()))
+        .collect();
     doc.push(Block::Heading(2, "Stability at the extremes".into()));
     doc.push(Block::Paragraph(format!(
-        "Every time-stepping case of the stability scenes ({}): the step against the exact critical step \
-         2/omega_max of the assembled system, the verdict theory predicts (marginal within 1e-9 of it), what \
-         the run did, and where courant's divergence guard stopped it. Contact rows (contact_extremes, beta_s up to \
-         1e8) take the exact critical step of their scheme; between it and the contact-free limit linear theory \
-         of the closed contact predicts growth, which the unilateral contact bounds by opening \
-         (`contact-unstable`: the run completes; energy_ratio shows what it pumped into the bars). {agreeing} of \
-         {} rows agree with the prediction. The contact stability sweep of the solver's eigenvalues against the \
+        "Every time-stepping case of the stability scenes ({}): the step against the exact limit of its \
+         scheme (column `limit`: 2/omega_max of the assembled system for central difference with any mass; \
+         alpha_e = dt/dt_e <= 1 in every element for Park's scheme, whose runs above it use the true alpha), \
+         the verdict theory predicts (marginal within 1e-9 of the limit), what the run did, and where \
+         courant's divergence guard stopped it. Rows at 0.99, 1.00 and 1.01 of the closed-form critical Courant \
+         number (stability_extremes, layered_1e4: 1.00 is a hair below the finite mesh's exact limit) stand \
+         beside rows in units of the exact limit with the step kept exactly (stability_exact, stability_park, \
+         graded_1e4), where dt/dt_crit reads 0.99, 1.00 and 1.01 to round-off. Contact rows \
+         (contact_extremes, beta_s up to 1e8) take the exact critical step of their scheme; between it and the \
+         contact-free limit linear theory of the closed contact predicts growth, which the unilateral contact \
+         bounds by opening (`contact-unstable`: the run completes). `stable` promises bounded energy: a \
+         completed run whose energy_ratio (contact: energy of the bars at the end over the initial energy; \
+         time stepping: largest T + U over the largest energy supplied) exceeds {} is observed as `energy \
+         growth`, and disagrees where stability was predicted. {agreeing} of {} rows agree with the \
+         prediction; {} disagree{}. The contact stability sweep of the solver's eigenvalues against the \
          closed forms (beta_s up to 1e8) is in the fig3 section; the closed forms themselves up to beta_s = 1e12 \
          are in the last table below.",
         crate::stability_table::STABILITY_SCENES.join(", "),
-        stability.len()
+        crate::stability_table::ENERGY_BAND,
+        stability.len(),
+        disagreeing.len(),
+        if disagreeing.is_empty() {
+            String::new()
+        } else {
+            format!(": {}", disagreeing.join("; "))
+        }
     )));
     let table = crate::stability_table::stability_table(&stability);
     files.push(("stability/extremes.csv".into(), table.to_csv(STORED)));
@@ -636,7 +724,7 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
     doc.push(Block::Heading(2, "How this report was made".into()));
     doc.push(Block::Paragraph(format!(
         "By `cargo run --release -- report` (courant {}): every built-in scene ({} of them) and {} \
-         convergence studies, run in parallel; the content is identical whatever the thread count. The \
+         convergence studies, their scenes, studies and cases run in parallel; the content is identical whatever the thread count. The \
          commit, date, CPU, thread count and rustc of this run are in `timing.md`, with the wall times: \
          they change from run to run and machine to machine, while everything on this page changes only \
          when a result does (CI regenerates the report and fails when this page is out of date).",
@@ -708,8 +796,10 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
     match crate::bench_table::bench_table(std::path::Path::new("target/criterion")) {
         Some(bench) => {
             tmd += "Criterion medians from `target/criterion` (run `cargo bench` to refresh), per node-step, beside a \
-                    bandwidth model: the bytes of arrays each node-step touches and the rate that implies. Up to \
-                    N = 1e5 the arrays stay in cache; at 1e6 the model rate approaches the memory bandwidth.\n\n";
+                    bandwidth model: the bytes of arrays each node-step touches and the rate that implies, and the \
+                    machine's reach at the same N, the STREAM triad `a = b + s c` (McCalpin 1995; `memory_triad`, \
+                    24 B per element): `fraction_of_triad` is how close to this machine's limit each step runs. Up to \
+                    N = 1e5 the arrays stay in cache; at 1e6 and beyond (triad at 4e6) the rate is the memory bandwidth's.\n\n";
             tmd += &bench.to_markdown(Precision::Significant {
                 digits: 3,
                 floor: 0.0,
@@ -731,7 +821,8 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
     })
 }
 
-/// The deterministic tables of a scene (wall-time columns dropped), by file name.
+/// The deterministic tables of a scene (wall-time columns dropped), by file name: what a report
+/// keeps of `courant run`'s output, and what `courant check --baseline <report>` compares.
 fn scene_tables(o: &SceneOutcome) -> Vec<(String, Table)> {
     let drop = ["wall_time_s"];
     let mut tables = Vec::new();
@@ -769,6 +860,10 @@ fn scene_tables(o: &SceneOutcome) -> Vec<(String, Table)> {
             crate::contact_study::sweep_table(s),
         ));
     }
+    tables.push((
+        "expectations.csv".to_string(),
+        crate::results::expectations_table(&o.verdicts),
+    ));
     tables
 }
 
@@ -792,8 +887,8 @@ pub fn builtin_scenes() -> Result<Vec<Scene>, String> {
         .collect()
 }
 
-/// Now, as an ISO 8601 UTC time.
-fn date() -> String {
+/// Now, as an ISO 8601 UTC time (`YYYY-MM-DDThh:mm:ssZ`).
+pub(crate) fn date() -> String {
     let secs = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());

@@ -1,54 +1,27 @@
 //! The report's figures, as SVG strings (plotted by [`crate::plot`]): profiles against the exact
 //! solution, spectra errors, contact force histories, the contact stability graph and the
 //! convergence plots. A figure with nothing plottable (e.g. errors that are exactly zero on a
-//! log axis) is left out.
+//! log axis) is left out. Scenes with more cases than one legible figure holds get several
+//! figures, split by scheme and mass kind ([`split`]); a case that is not drawn is named in a
+//! caption with the reason.
 
-use crate::plot::{Axes, Series, SeriesStyle, line_chart};
+use crate::contact_study::{SweepResult, SweepRow};
+use crate::plot::{Axes, PALETTE_SIZE, PlotError, Series, SeriesStyle, line_chart};
 use crate::report::ConvergenceResult;
-use crate::run::SceneOutcome;
+use crate::run::{CaseResult, SceneOutcome, Status};
 use crate::scene::Scene;
 
-/// At most this many cases per figure (the palette has 8 colours; the legend stays readable).
-const MAX_CASES: usize = 5;
+/// At most this many cases per figure: with the exact solution they keep distinct colours of
+/// the 8-colour palette and a legend that fits the chart. A scene with more cases gets several
+/// figures (see [`split`]); no case is left out without the caption saying so.
+pub const MAX_CASES: usize = 6;
 
-/// `(file name, caption, svg)` figures of a scene.
+/// `(file name, caption, svg)` figures of a scene. Every case appears in some figure or is named
+/// in a caption as not shown, with the reason (diverged before that time, energy blow-up, or no
+/// drawable point).
 pub fn scene_figures(scene: &Scene, outcome: &SceneOutcome) -> Vec<(String, String, String)> {
     let mut figures = Vec::new();
-    // Stress profiles at each profile time, every case beside the exact element averages.
-    if let Some(first) = outcome.results.first() {
-        for (k, profile) in first.profiles.iter().enumerate() {
-            let mut series: Vec<Series> = outcome
-                .results
-                .iter()
-                .take(MAX_CASES)
-                .filter_map(|r| {
-                    r.profiles.get(k).map(|p| {
-                        Series::new(
-                            r.case.clone(),
-                            p.x.iter().copied().zip(p.stress.iter().copied()).collect(),
-                            SeriesStyle::Line,
-                        )
-                    })
-                })
-                .collect();
-            if let Some(reference) = &profile.reference {
-                series.push(Series::new(
-                    "exact",
-                    profile
-                        .x
-                        .iter()
-                        .copied()
-                        .zip(reference.iter().copied())
-                        .collect(),
-                    SeriesStyle::Dashed,
-                ));
-            }
-            let title = format!("{}: stress at t = {:.4}", scene.name, profile.time);
-            if let Ok(svg) = line_chart(&Axes::new(title.clone(), "x", "stress"), &series) {
-                figures.push((format!("profile_{k}.svg"), title, svg));
-            }
-        }
-    }
+    profile_figures(scene, outcome, &mut figures);
     // Spectra: relative frequency error per mode for each mass kind.
     for s in &outcome.spectra {
         let Some(exact) = &s.continuum else { continue };
@@ -77,24 +50,137 @@ pub fn scene_figures(scene: &Scene, outcome: &SceneOutcome) -> Vec<(String, Stri
             figures.push((format!("spectrum_{}.svg", s.case), title, svg));
         }
     }
-    // Contact force histories beside 1D wave theory.
-    if let Some(first) = outcome.contact.first() {
-        // Stable, energy-conserving cases, the predictor-corrector and Lagrange-multiplier ones
-        // first (CD bipenalty chatters at large beta_s and would hide the others).
-        let mut shown: Vec<&crate::contact_study::ContactResult> = outcome
-            .contact
+    force_figures(scene, outcome, &mut figures);
+    stability_figures(scene, outcome, &mut figures);
+    figures
+}
+
+/// Stress profiles at each profile time, every case beside the exact element averages, split by
+/// scheme and mass kind into figures of at most [`MAX_CASES`] cases; runs that diverged after
+/// the profile time come last, in figures of their own.
+fn profile_figures(
+    scene: &Scene,
+    outcome: &SceneOutcome,
+    figures: &mut Vec<(String, String, String)>,
+) {
+    let Some(longest) = outcome.results.iter().max_by_key(|r| r.profiles.len()) else {
+        return;
+    };
+    for (k, profile) in longest.profiles.iter().enumerate() {
+        let (shown, missing): (Vec<_>, Vec<_>) = outcome
+            .results
             .iter()
-            .filter(|c| c.diverged.is_none() && c.energy_ratio < 2.0)
-            .collect();
-        shown.sort_by_key(|c| {
-            !matches!(
-                c.run.scheme.label(),
-                "predictor-corrector" | "lagrange-multiplier"
-            )
-        });
-        let mut series: Vec<Series> = shown
+            .partition(|r| r.profiles.get(k).is_some());
+        // Runs that diverged later grow without bound and would flatten every other curve:
+        // they get figures of their own, after the others.
+        let (completed, diverged): (Vec<_>, Vec<_>) = shown
             .into_iter()
-            .take(MAX_CASES)
+            .partition(|r| !matches!(r.status, Status::Diverged(_)));
+        let key = |r: &&CaseResult| format!("{} {}", r.scheme, r.critical.mass.label());
+        let calm = split(completed.iter().map(|r| (key(r), *r)).collect(), MAX_CASES);
+        let calm_parts = calm.len();
+        let mut parts = calm;
+        parts.extend(split(
+            diverged.iter().map(|r| (key(r), *r)).collect(),
+            MAX_CASES,
+        ));
+        let title = format!("{}: stress at t = {:.4}", scene.name, profile.time);
+        for (j, part) in parts.iter().enumerate() {
+            let cases: Vec<Series> = part
+                .iter()
+                .map(|r| {
+                    let p = &r.profiles[k];
+                    Series::new(
+                        r.case.clone(),
+                        p.x.iter().copied().zip(p.stress.iter().copied()).collect(),
+                        SeriesStyle::Line,
+                    )
+                })
+                .collect();
+            let exact: Vec<Series> = part
+                .iter()
+                .find_map(|r| {
+                    let p = &r.profiles[k];
+                    p.reference.as_ref().map(|reference| {
+                        Series::new(
+                            "exact",
+                            p.x.iter().copied().zip(reference.iter().copied()).collect(),
+                            SeriesStyle::Dashed,
+                        )
+                    })
+                })
+                .into_iter()
+                .collect();
+            let mut notes = Vec::new();
+            if j >= calm_parts {
+                notes.push("these runs diverged later (status in the summary)".to_string());
+            }
+            if j == 0 && !missing.is_empty() {
+                notes.push(format!(
+                    "not shown, diverged before t = {:.4}: {}",
+                    profile.time,
+                    names(missing.iter().map(|r| r.case.as_str()))
+                ));
+            }
+            let part_title = numbered(&title, j, parts.len());
+            let axes = Axes::new(part_title.clone(), "x", "stress");
+            if let Some(svg) = chart_naming_omissions(&axes, cases, exact, &mut notes) {
+                let file = if parts.len() == 1 {
+                    format!("profile_{k}.svg")
+                } else {
+                    format!("profile_{k}_{}.svg", j + 1)
+                };
+                let caption = caption(
+                    &part_title,
+                    part.iter().map(|r| r.case.as_str()),
+                    &parts,
+                    outcome.results.len(),
+                    &notes,
+                );
+                figures.push((file, caption, svg));
+            }
+        }
+    }
+}
+
+/// Contact force histories beside 1D wave theory, one figure per scheme or group of schemes of
+/// at most [`MAX_CASES`] cases. Diverged runs and runs that pumped energy into the bars (final
+/// energy above twice the initial) would swamp the axis: the caption names them instead.
+fn force_figures(
+    scene: &Scene,
+    outcome: &SceneOutcome,
+    figures: &mut Vec<(String, String, String)>,
+) {
+    if outcome.contact.is_empty() {
+        return;
+    }
+    let (shown, unstable): (Vec<_>, Vec<_>) = outcome
+        .contact
+        .iter()
+        .partition(|c| c.diverged.is_none() && c.energy_ratio < 2.0);
+    let keyed = shown
+        .into_iter()
+        .map(|c| (c.run.scheme.label().to_string(), c))
+        .collect();
+    let parts = split(keyed, MAX_CASES);
+    let title = format!("{}: contact force", scene.name);
+    let mut first_notes = Vec::new();
+    if !unstable.is_empty() {
+        first_notes.push(format!(
+            "not shown, diverged or final energy above twice the initial (see energy_ratio and \
+             status in the summary): {}",
+            names(unstable.iter().map(|c| c.case.as_str()))
+        ));
+    }
+    // Nothing stable: one figure of the reference alone, whose caption names the cases.
+    let parts = if parts.is_empty() {
+        vec![Vec::new()]
+    } else {
+        parts
+    };
+    for (j, part) in parts.iter().enumerate() {
+        let cases: Vec<Series> = part
+            .iter()
             .map(|c| {
                 Series::new(
                     c.case.clone(),
@@ -103,51 +189,268 @@ pub fn scene_figures(scene: &Scene, outcome: &SceneOutcome) -> Vec<(String, Stri
                 )
             })
             .collect();
-        series.push(Series::new(
-            "1D wave theory",
-            first
-                .run
-                .history
-                .iter()
-                .map(|s| s.time)
-                .zip(first.reference.iter().copied())
-                .collect(),
-            SeriesStyle::Dashed,
-        ));
-        let title = format!(
-            "{}: contact force (stable, energy-conserving cases)",
-            scene.name
-        );
-        if let Ok(svg) = line_chart(&Axes::new(title.clone(), "t", "force"), &series) {
-            figures.push(("force.svg".into(), title, svg));
+        // The reference sampled as finely as any case of the figure.
+        let finest = part
+            .iter()
+            .copied()
+            .max_by_key(|c| c.run.history.len())
+            .or(outcome.contact.first());
+        let exact: Vec<Series> = finest
+            .map(|c| {
+                Series::new(
+                    "1D wave theory",
+                    c.run
+                        .history
+                        .iter()
+                        .map(|s| s.time)
+                        .zip(c.reference.iter().copied())
+                        .collect(),
+                    SeriesStyle::Dashed,
+                )
+            })
+            .into_iter()
+            .collect();
+        let mut notes = if j == 0 {
+            std::mem::take(&mut first_notes)
+        } else {
+            Vec::new()
+        };
+        let part_title = numbered(&title, j, parts.len());
+        let axes = Axes::new(part_title.clone(), "t", "force");
+        if let Some(svg) = chart_naming_omissions(&axes, cases, exact, &mut notes) {
+            let file = if parts.len() == 1 {
+                "force.svg".to_string()
+            } else {
+                format!("force_{}.svg", j + 1)
+            };
+            let caption = caption(
+                &part_title,
+                part.iter().map(|c| c.case.as_str()),
+                &parts,
+                outcome.contact.len(),
+                &notes,
+            );
+            figures.push((file, caption, svg));
         }
     }
-    // Contact stability graph.
-    for sweep in &outcome.sweeps {
-        let mut curves: Vec<Series> = Vec::new();
-        for row in &sweep.rows {
-            let name = row
-                .ratio
-                .map_or("penalty only".to_string(), |r| format!("r = {r}"));
-            match curves.iter_mut().find(|c| c.name == name) {
-                Some(c) => c.points.push((row.beta_s, row.courant)),
-                None => curves.push(Series::new(
-                    name,
-                    vec![(row.beta_s, row.courant)],
-                    SeriesStyle::Line,
-                )),
-            }
-        }
+}
+
+/// The contact stability graph (seed Fig. 3), one figure per part of [`stability_charts`].
+fn stability_figures(
+    scene: &Scene,
+    outcome: &SceneOutcome,
+    figures: &mut Vec<(String, String, String)>,
+) {
+    for (s, sweep) in outcome.sweeps.iter().enumerate() {
         let title = format!(
-            "{}: critical Courant number (solver eigenvalues; closed form within {:.1e})",
+            "{}: critical Courant number (closed form within {:.1e})",
             scene.name,
             sweep.deviation()
         );
-        if let Ok(svg) = line_chart(&Axes::log_log(title.clone(), "beta_s", "Cr"), &curves) {
-            figures.push(("stability.svg".into(), title, svg));
+        let parts = stability_charts(sweep);
+        for (j, (curves, series)) in parts.iter().enumerate() {
+            let part_title = numbered(&title, j, parts.len());
+            let Ok(svg) = line_chart(&Axes::log_log(part_title.clone(), "beta_s", "Cr"), series)
+            else {
+                continue;
+            };
+            let file = if parts.len() == 1 && s == 0 {
+                "stability.svg".to_string()
+            } else {
+                format!("stability_{}_{}.svg", s + 1, j + 1)
+            };
+            let overlap = if sweep.rows.iter().any(|r| r.ratio.is_some_and(|r| r <= 1.0)) {
+                "; the curves of r <= 1 coincide (Cr = 1) and overlap"
+            } else {
+                ""
+            };
+            let caption = format!(
+                "{part_title}: the solver's eigenvalues of the contact-active system (points) and \
+                 the closed form of courant-references (dashed line of the same colour) for {}{overlap}.",
+                names(curves.iter().map(String::as_str))
+            );
+            figures.push((file, caption, svg));
         }
     }
+}
+
+/// The series of the contact stability graph (seed Fig. 3), in parts of at most the palette's
+/// 8 curves: per curve (penalty only, each ratio r, named as in the legend) the solver's critical
+/// Courant numbers as points and the closed form of `courant-references` (methods.md §7) as a
+/// dashed line, both in the curve's palette colour. The closed forms come first, so the points
+/// are drawn over them, and share one legend entry, `closed form (dashed)`.
+pub fn stability_charts(sweep: &SweepResult) -> Vec<(Vec<String>, Vec<Series>)> {
+    let mut curves: Vec<(String, Vec<&SweepRow>)> = Vec::new();
+    for row in &sweep.rows {
+        let name = row
+            .ratio
+            .map_or("penalty only".to_string(), |r| format!("r = {r}"));
+        match curves.iter_mut().find(|c| c.0 == name) {
+            Some(c) => c.1.push(row),
+            None => curves.push((name, vec![row])),
+        }
+    }
+    let parts = split(
+        curves.into_iter().map(|c| (c.0.clone(), c)).collect(),
+        PALETTE_SIZE,
+    );
+    parts
+        .into_iter()
+        .map(|part| {
+            let closed = part.iter().enumerate().map(|(colour, (_, rows))| {
+                let closed = Series::new(
+                    "closed form (dashed)",
+                    rows.iter().map(|r| (r.beta_s, r.closed_form)).collect(),
+                    SeriesStyle::Dashed,
+                )
+                .with_colour(colour);
+                if colour == 0 {
+                    closed
+                } else {
+                    closed.without_legend()
+                }
+            });
+            let solver = part.iter().enumerate().map(|(colour, (name, rows))| {
+                Series::new(
+                    name.clone(),
+                    rows.iter().map(|r| (r.beta_s, r.courant)).collect(),
+                    SeriesStyle::Points,
+                )
+                .with_colour(colour)
+            });
+            let series = closed.chain(solver).collect();
+            (part.into_iter().map(|(name, _)| name).collect(), series)
+        })
+        .collect()
+}
+
+/// Split `items` (each with a group key: scheme, mass kind, …) into figures of at most `max`:
+/// items of one key stay together (a group larger than `max` is cut into near-equal parts),
+/// groups keep the order of their first item, consecutive groups share a figure, and the figures
+/// are as few as possible and as even as the groups allow. Every item lands in exactly one
+/// figure.
+pub fn split<T>(items: Vec<(String, T)>, max: usize) -> Vec<Vec<T>> {
+    let max = max.max(1);
+    let mut groups: Vec<(String, Vec<T>)> = Vec::new();
+    for (key, item) in items {
+        match groups.iter_mut().find(|g| g.0 == key) {
+            Some(g) => g.1.push(item),
+            None => groups.push((key, vec![item])),
+        }
+    }
+    // Cut oversized groups into ceil(n/max) near-equal chunks.
+    let mut chunks: Vec<Vec<T>> = Vec::new();
+    for (_, group) in groups {
+        let n = group.len();
+        let pieces = n.div_ceil(max);
+        let mut rest = group.into_iter();
+        for p in 0..pieces {
+            let size = n / pieces + usize::from(p < n % pieces);
+            chunks.push(rest.by_ref().take(size).collect());
+        }
+    }
+    let total: usize = chunks.iter().map(Vec::len).sum();
+    if total == 0 {
+        return Vec::new();
+    }
+    let largest = chunks.iter().map(Vec::len).max().unwrap_or(0);
+    let sizes: Vec<usize> = chunks.iter().map(Vec::len).collect();
+    // The fewest figures k for which greedy packing with capacity max(largest, ceil(total/k))
+    // needs at most k figures (k = number of chunks always works).
+    let capacity = (total.div_ceil(max)..=chunks.len())
+        .map(|k| (k, largest.max(total.div_ceil(k))))
+        .find(|&(k, cap)| pack(&sizes, cap).len() <= k)
+        .map_or(max, |(_, cap)| cap);
+    let mut figures: Vec<Vec<T>> = Vec::new();
+    let mut chunks = chunks.into_iter();
+    for count in pack(&sizes, capacity) {
+        figures.push(chunks.by_ref().take(count).flatten().collect());
+    }
     figures
+}
+
+/// Greedy packing of consecutive chunk sizes into bins of `capacity`: the number of chunks in
+/// each bin.
+fn pack(sizes: &[usize], capacity: usize) -> Vec<usize> {
+    let mut bins: Vec<(usize, usize)> = Vec::new(); // (chunks, items)
+    for &size in sizes {
+        match bins.last_mut() {
+            Some(bin) if bin.1 + size <= capacity => {
+                bin.0 += 1;
+                bin.1 += size;
+            }
+            _ => bins.push((1, size)),
+        }
+    }
+    bins.into_iter().map(|b| b.0).collect()
+}
+
+/// `title (j/n)` when a figure is one of several.
+fn numbered(title: &str, j: usize, parts: usize) -> String {
+    if parts > 1 {
+        format!("{title} ({}/{parts})", j + 1)
+    } else {
+        title.to_string()
+    }
+}
+
+/// The caption of a figure: its title, the cases it shows when the cases drawn are spread over
+/// several figures (`shown` drawn of the scene's `total`), and the notes (cases not shown and
+/// why).
+fn caption<'a, T>(
+    title: &str,
+    cases: impl Iterator<Item = &'a str>,
+    parts: &[Vec<T>],
+    total: usize,
+    notes: &[String],
+) -> String {
+    let mut caption = title.to_string();
+    if parts.len() > 1 {
+        let shown: usize = parts.iter().map(Vec::len).sum();
+        let of = if shown < total {
+            format!("{shown} of {total}")
+        } else {
+            format!("all {total}")
+        };
+        caption += &format!(
+            "; {of} cases drawn in {} figures, this one: {}",
+            parts.len(),
+            names(cases)
+        );
+    }
+    for note in notes {
+        caption += "; ";
+        caption += note;
+    }
+    caption
+}
+
+/// Comma-separated names.
+fn names<'a>(names: impl Iterator<Item = &'a str>) -> String {
+    names.collect::<Vec<_>>().join(", ")
+}
+
+/// Draw `cases` and then `extra` (references): a case series with no drawable point is left
+/// out and named in `notes` rather than losing the whole figure; `None` when nothing can be
+/// drawn.
+fn chart_naming_omissions(
+    axes: &Axes,
+    mut cases: Vec<Series>,
+    extra: Vec<Series>,
+    notes: &mut Vec<String>,
+) -> Option<String> {
+    loop {
+        let all: Vec<Series> = cases.iter().chain(&extra).cloned().collect();
+        match line_chart(axes, &all) {
+            Ok(svg) => return Some(svg),
+            Err(PlotError::NoPlottableData { series, .. }) => {
+                let i = cases.iter().position(|c| c.name == series)?;
+                cases.remove(i);
+                notes.push(format!("not shown, no drawable point: {series}"));
+            }
+            Err(_) => return None,
+        }
+    }
 }
 
 /// The log-log error figure of a convergence study (`None` when the errors are at round-off).

@@ -7,8 +7,9 @@ use courant_references::Energies;
 use courant_solver::Mesh;
 use courant_solver::{
     CentralDifference, CriticalStep, DivergenceError, EnergyLog, NodeHistory, RunError, RunOutput,
+    SchemeLimit,
 };
-use std::collections::HashMap;
+use rayon::prelude::*;
 use std::time::{Duration, Instant};
 
 /// A stress profile beside its reference.
@@ -66,6 +67,8 @@ pub struct CaseResult {
     pub steps: usize,
     /// Critical-step estimates.
     pub critical: CriticalStep,
+    /// The stability limit of the scheme that ran (CD's `2/omega_max`, Park's `alpha_e <= 1`).
+    pub limit: SchemeLimit,
     /// Number of distinct profile times requested.
     pub profiles_requested: usize,
     /// Profiles recorded (fewer than requested when the run diverged first).
@@ -103,40 +106,16 @@ impl CaseResult {
     }
 }
 
-/// Exact profiles already evaluated, keyed by the reference's name and stress scale, the mesh's
-/// node coordinates and the time (bit patterns): the cases of a scene share their reference, so a
-/// Courant or scheme sweep evaluates each exact profile (element averages and extreme) once. The
-/// values are those a fresh evaluation gives, bit for bit.
-#[derive(Debug, Default)]
-pub struct ProfileCache {
-    entries: HashMap<ProfileKey, (Vec<f64>, f64)>,
+/// A case's integration before its comparison with the reference.
+struct Integration {
+    output: RunOutput,
+    status: Status,
+    wall_time: Duration,
 }
 
-type ProfileKey = (&'static str, u64, Vec<u64>, u64);
-
-impl ProfileCache {
-    fn exact(&mut self, reference: &Reference, mesh: &Mesh, t: f64) -> (Vec<f64>, f64) {
-        let key = (
-            reference.name(),
-            reference.stress_scale().to_bits(),
-            mesh.nodes().iter().map(|x| x.to_bits()).collect(),
-            t.to_bits(),
-        );
-        self.entries
-            .entry(key)
-            .or_insert_with(|| (reference.element_averages(mesh, t), reference.extreme(t)))
-            .clone()
-    }
-}
-
-/// Run a case and compare it with its reference. A divergence (allowed unstable runs only) is a
-/// status, not an error: its partial outputs are kept.
-pub fn run_case(case: &Case) -> Result<CaseResult, RunError> {
-    run_case_with(case, &mut ProfileCache::default())
-}
-
-/// [`run_case`] with exact profiles taken from (and added to) `cache`.
-pub fn run_case_with(case: &Case, cache: &mut ProfileCache) -> Result<CaseResult, RunError> {
+/// Integrate a case. A divergence (allowed unstable runs only) is a status, not an error: its
+/// partial outputs are kept.
+fn integrate(case: &Case) -> Result<Integration, RunError> {
     let started = Instant::now();
     let outcome = case
         .integrator
@@ -147,7 +126,90 @@ pub fn run_case_with(case: &Case, cache: &mut ProfileCache) -> Result<CaseResult
         Err(RunError::Diverged { error, partial }) => (*partial, Status::Diverged(error)),
         Err(other) => return Err(other),
     };
-    Ok(compare(case, output, status, wall_time, cache))
+    Ok(Integration {
+        output,
+        status,
+        wall_time,
+    })
+}
+
+/// One exact profile: a reference on a mesh at a time, compared by value (the reference's
+/// parameters, the node coordinates and the time bit for bit).
+struct ProfileKey<'a> {
+    reference: &'a Reference,
+    mesh: &'a Mesh,
+    time: f64,
+}
+
+impl ProfileKey<'_> {
+    fn matches(&self, reference: &Reference, mesh: &Mesh, time: f64) -> bool {
+        let (a, b) = (self.mesh.nodes(), mesh.nodes());
+        self.time.to_bits() == time.to_bits()
+            && a.len() == b.len()
+            && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+            && self.reference == reference
+    }
+}
+
+/// Exact profiles (element averages and extreme) evaluated once for all cases of a scene: the
+/// cases share their reference, so a Courant or scheme sweep needs each exact profile once. The
+/// cache is filled before any comparison, every distinct profile evaluated in parallel, and only
+/// read afterwards; each value is a pure function of its key (the references use no threads),
+/// so results are bit-identical whatever the thread count and whether or not a value came from
+/// the cache.
+#[derive(Default)]
+struct ProfileCache<'a> {
+    entries: Vec<(ProfileKey<'a>, (Vec<f64>, f64))>,
+}
+
+impl<'a> ProfileCache<'a> {
+    /// Evaluate every distinct exact profile that `runs` recorded, in parallel, in the order of
+    /// first appearance.
+    fn for_runs(runs: &[(&'a Case, &Integration)]) -> Self {
+        let mut keys: Vec<ProfileKey<'a>> = Vec::new();
+        for (case, run) in runs {
+            let Some(reference) = case.reference.as_ref() else {
+                continue;
+            };
+            let mesh = case.model.bar().mesh();
+            for p in &run.output.profiles {
+                if !keys.iter().any(|k| k.matches(reference, mesh, p.time)) {
+                    keys.push(ProfileKey {
+                        reference,
+                        mesh,
+                        time: p.time,
+                    });
+                }
+            }
+        }
+        let values: Vec<(Vec<f64>, f64)> = keys
+            .par_iter()
+            .map(|k| evaluate(k.reference, k.mesh, k.time))
+            .collect();
+        Self {
+            entries: keys.into_iter().zip(values).collect(),
+        }
+    }
+
+    /// The exact profile: from the cache, or evaluated now when it is not there.
+    fn exact(&self, reference: &Reference, mesh: &Mesh, t: f64) -> (Vec<f64>, f64) {
+        self.entries
+            .iter()
+            .find(|(k, _)| k.matches(reference, mesh, t))
+            .map_or_else(|| evaluate(reference, mesh, t), |(_, v)| v.clone())
+    }
+}
+
+/// Exact element averages of the stress at `t` and the extreme stress of the field.
+fn evaluate(reference: &Reference, mesh: &Mesh, t: f64) -> (Vec<f64>, f64) {
+    (reference.element_averages(mesh, t), reference.extreme(t))
+}
+
+/// Run a case and compare it with its reference. A divergence (allowed unstable runs only) is a
+/// status, not an error: its partial outputs are kept.
+pub fn run_case(case: &Case) -> Result<CaseResult, RunError> {
+    let run = integrate(case)?;
+    Ok(compare(case, run, &ProfileCache::default()))
 }
 
 /// What [`CaseResult::scheme`] says of an integrator.
@@ -158,13 +220,12 @@ pub fn scheme_label(integrator: &CentralDifference) -> String {
     )
 }
 
-fn compare(
-    case: &Case,
-    output: RunOutput,
-    status: Status,
-    wall_time: Duration,
-    cache: &mut ProfileCache,
-) -> CaseResult {
+fn compare(case: &Case, run: Integration, cache: &ProfileCache<'_>) -> CaseResult {
+    let Integration {
+        output,
+        status,
+        wall_time,
+    } = run;
     let mesh = case.model.bar().mesh();
     let reference = case.reference.as_ref();
     let x: Vec<f64> = (0..mesh.element_count())
@@ -226,6 +287,7 @@ fn compare(
         steps_planned: case.plan.steps,
         steps: output.steps,
         critical: case.critical,
+        limit: case.limit,
         profiles_requested: {
             let mut steps = case.request.profile_steps.clone();
             steps.sort_unstable();
@@ -266,34 +328,48 @@ impl SceneOutcome {
     }
 }
 
-/// Run every case of a scene and check its expectations.
+/// Run every case of a scene and check its expectations. The cases are independent: each list
+/// (time-stepping cases, spectra, dispersion, contact cases, sweeps) runs in parallel (rayon),
+/// results keep the case order, and an error is that of the first failing case in that order,
+/// so the outcome does not depend on the thread count.
 pub fn run_scene(scene: &crate::Scene) -> Result<SceneOutcome, RunError> {
-    let mut cache = ProfileCache::default();
+    let runs = in_order(scene.cases.par_iter().map(integrate).collect())?;
+    let pairs: Vec<(&Case, &Integration)> = scene.cases.iter().zip(&runs).collect();
+    let cache = ProfileCache::for_runs(&pairs);
     let results = scene
         .cases
-        .iter()
-        .map(|case| run_case_with(case, &mut cache))
-        .collect::<Result<Vec<_>, _>>()?;
-    let spectra = scene
-        .spectra
-        .iter()
-        .map(crate::spectra::run_spectrum)
-        .collect::<Result<Vec<_>, _>>()?;
-    let dispersion = scene
-        .dispersion
-        .iter()
-        .map(crate::dispersion::run_dispersion)
-        .collect::<Result<Vec<_>, _>>()?;
-    let contact = scene
-        .contact
-        .iter()
-        .map(crate::contact_study::run_contact)
-        .collect::<Result<Vec<_>, _>>()?;
-    let sweeps = scene
-        .contact_sweeps
-        .iter()
-        .map(crate::contact_study::run_sweep)
-        .collect::<Result<Vec<_>, _>>()?;
+        .par_iter()
+        .zip(runs)
+        .map(|(case, run)| compare(case, run, &cache))
+        .collect();
+    let spectra = in_order(
+        scene
+            .spectra
+            .par_iter()
+            .map(crate::spectra::run_spectrum)
+            .collect(),
+    )?;
+    let dispersion = in_order(
+        scene
+            .dispersion
+            .par_iter()
+            .map(crate::dispersion::run_dispersion)
+            .collect(),
+    )?;
+    let contact = in_order(
+        scene
+            .contact
+            .par_iter()
+            .map(crate::contact_study::run_contact)
+            .collect(),
+    )?;
+    let sweeps = in_order(
+        scene
+            .contact_sweeps
+            .par_iter()
+            .map(crate::contact_study::run_sweep)
+            .collect(),
+    )?;
     let mut outcome = SceneOutcome {
         results,
         spectra,
@@ -304,4 +380,9 @@ pub fn run_scene(scene: &crate::Scene) -> Result<SceneOutcome, RunError> {
     };
     outcome.verdicts = crate::expect::evaluate(scene, &outcome);
     Ok(outcome)
+}
+
+/// The values in order, or the first error in order (not whichever thread failed first).
+fn in_order<T, E>(results: Vec<Result<T, E>>) -> Result<Vec<T>, E> {
+    results.into_iter().collect()
 }

@@ -3,6 +3,12 @@
 //! meshes — "which scheme gives me this accuracy cheapest". Time-stepping studies measure the
 //! normalised L1 error of a stress profile; contact studies the L1-in-time error of the contact
 //! force over the exact impulse (1D wave theory, methods.md §7).
+//!
+//! A scheme whose stable step is far below the others' runs at its own Courant number: a study
+//! may split its schemes into [`CourantVariant`]s, each with its own Courant setting, and the
+//! labels of the points state the setting (CD with penalty at 0.9 of its exact critical step
+//! beside the bipenalty schemes at Co = 0.5, so the reader sees what the penalty costs in steps
+//! for the same error).
 
 use crate::document::Block;
 use crate::plot::{Axes, Series, SeriesStyle, line_chart};
@@ -24,8 +30,21 @@ pub struct WorkPrecisionStudy {
     /// Contact studies: the striker's element counts, one derived scene each (a contact scene
     /// has one mesh). Empty for time-stepping studies.
     pub contact_meshes: &'static [usize],
+    /// Schemes run at their own Courant setting, one derived scene each (per mesh in a contact
+    /// study); empty: the scene's schemes at the scene's (or the study's) Courant number.
+    pub variants: &'static [CourantVariant],
     /// What the error column measures.
     pub error: &'static str,
+}
+
+/// Schemes of a study run at one Courant setting.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CourantVariant {
+    /// The setting as the labels of its points state it, e.g. `Co = 0.5` (relative to the
+    /// stiffest element) or `Co = 0.9 Co_crit` (of each case's exact critical step).
+    pub courant: &'static str,
+    /// Substitutions applied after the study's: the scheme list and its Courant number.
+    pub replacements: &'static [(&'static str, &'static str)],
 }
 
 /// Error label of time-stepping studies.
@@ -47,6 +66,7 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
             ("history_points = [0.0, 0.5]", "history_points = []"),
         ],
         contact_meshes: &[],
+        variants: &[],
         error: STRESS_L1,
     },
     WorkPrecisionStudy {
@@ -58,11 +78,12 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
             ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
         ],
         contact_meshes: &[],
+        variants: &[],
         error: STRESS_L1,
     },
     WorkPrecisionStudy {
         name: "fig5_contact",
-        title: "Fig. 5 impact, contact schemes (beta_s = 2500, r = 1, Co = 0.5)",
+        title: "Fig. 5 impact, contact schemes (beta_s = 2500, r = 1)",
         scene: "fig5",
         replacements: &[
             (
@@ -73,42 +94,131 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
                 "target = { length = 2.0, elements = 200 }",
                 "target = { length = 2.0, elements = {2n} }",
             ),
-            (
-                "schemes = [\"cd-penalty\", \"cd-bipenalty\", \"predictor-corrector\", \"lagrange-multiplier\"]",
-                "schemes = [\"cd-bipenalty\", \"predictor-corrector\", \"lagrange-multiplier\"]",
-            ),
             ("beta_s = [0.25, 25.0, 2500.0, 2.5e7]", "beta_s = 2500.0"),
+            // Every variant runs below its critical step: refuse it otherwise.
+            ("allow_unstable = true", "allow_unstable = false"),
         ],
         contact_meshes: &[25, 50, 100, 200, 400, 800],
+        variants: &[
+            CourantVariant {
+                courant: "Co = 0.5",
+                replacements: &[(
+                    FIG5_SCHEMES,
+                    "schemes = [\"cd-bipenalty\", \"predictor-corrector\", \"lagrange-multiplier\"]",
+                )],
+            },
+            // Penalty only: Cr = 0.0200 at beta_s = 2500 (two bars, methods.md §7), unstable at
+            // Co = 0.5; at 0.9 of its exact critical step it needs about 28 times the steps.
+            CourantVariant {
+                courant: "Co = 0.9 Co_crit",
+                replacements: &[
+                    (FIG5_SCHEMES, "schemes = [\"cd-penalty\"]"),
+                    (
+                        "courant = 0.5",
+                        "courant = 0.9\ncourant_unit = \"critical\"",
+                    ),
+                ],
+            },
+        ],
         error: "L1 force error / impulse",
     },
 ];
+
+/// The scheme list of the built-in fig5 scene.
+const FIG5_SCHEMES: &str = "schemes = [\"cd-penalty\", \"cd-bipenalty\", \"predictor-corrector\", \"lagrange-multiplier\"]";
 
 /// One run of a study.
 #[derive(Debug, Clone, PartialEq)]
 pub struct WorkPoint {
     /// Scheme or mass label (the case name without its mesh and Courant parts).
     pub method: String,
+    /// The Courant setting of its variant ([`CourantVariant::courant`]), when the study has
+    /// several.
+    pub setting: Option<&'static str>,
+    /// Courant number of the run relative to the stiffest element, `c dt / h_min`.
+    pub courant: f64,
+    /// The critical Courant number of the case's scheme (exact, methods.md §5 and §7).
+    pub critical_courant: f64,
     /// Elements.
     pub elements: usize,
     /// Steps.
     pub steps: usize,
     /// Normalised L1 error of the stress.
     pub l1: f64,
-    /// Wall time of the integration [s].
+    /// Wall time of the integration, in seconds.
     pub wall_time: f64,
 }
 
-/// Run a study.
-pub fn run(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
-    if !study.contact_meshes.is_empty() {
-        return run_contact(study);
+impl WorkPoint {
+    /// Legend label: the method, with its Courant setting when the study's schemes run at
+    /// different ones.
+    pub fn label(&self) -> String {
+        match self.setting {
+            Some(setting) => format!("{} ({setting})", self.method),
+            None => self.method.clone(),
+        }
     }
-    let scene = crate::report::derived_scene(study.name, study.scene, study.replacements)?;
-    scene
-        .cases
+}
+
+/// A study's derived scenes: one per contact mesh (one in all for a time-stepping study) and
+/// Courant variant, each with the variant's setting when the study has several.
+fn study_scenes(
+    study: &WorkPrecisionStudy,
+) -> Result<Vec<(Option<&'static str>, crate::Scene)>, String> {
+    let meshes: Vec<Option<usize>> = if study.contact_meshes.is_empty() {
+        vec![None]
+    } else {
+        study.contact_meshes.iter().copied().map(Some).collect()
+    };
+    let no_variant = [CourantVariant {
+        courant: "",
+        replacements: &[],
+    }];
+    let variants = if study.variants.is_empty() {
+        &no_variant[..]
+    } else {
+        study.variants
+    };
+    let mut scenes = Vec::new();
+    for n in meshes {
+        for variant in variants {
+            let replacements: Vec<(&str, String)> = study
+                .replacements
+                .iter()
+                .chain(variant.replacements)
+                .map(|(from, to)| {
+                    let to = match n {
+                        Some(n) => to
+                            .replace("{2n}", &(2 * n).to_string())
+                            .replace("{n}", &n.to_string()),
+                        None => to.to_string(),
+                    };
+                    (*from, to)
+                })
+                .collect();
+            let borrowed: Vec<(&str, &str)> =
+                replacements.iter().map(|(f, t)| (*f, t.as_str())).collect();
+            let scene = crate::report::derived_scene(study.name, study.scene, &borrowed)?;
+            let setting = (study.variants.len() > 1).then_some(variant.courant);
+            scenes.push((setting, scene));
+        }
+    }
+    Ok(scenes)
+}
+
+/// Run a study: every case of its derived scenes, in parallel, in order.
+pub fn run(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
+    let scenes = study_scenes(study)?;
+    if !study.contact_meshes.is_empty() {
+        return run_contact(study, &scenes);
+    }
+    let cases: Vec<(Option<&'static str>, &crate::scene::Case)> = scenes
+        .iter()
+        .flat_map(|(setting, scene)| scene.cases.iter().map(move |c| (*setting, c)))
+        .collect();
+    cases
         .par_iter()
-        .map(|case| {
+        .map(|&(setting, case)| {
             let r = crate::run_case(case).map_err(|e| e.to_string())?;
             let l1 = r
                 .profiles
@@ -126,38 +236,35 @@ pub fn run(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
                 .join("-");
             Ok(WorkPoint {
                 method,
+                setting,
+                courant: r.courant,
+                // Co_crit = Co dt_crit/dt (the summary's Co_crit column).
+                critical_courant: r.courant * r.critical.exact / r.dt,
                 elements: r.elements,
                 steps: r.steps,
                 l1,
                 wall_time: r.wall_time.as_secs_f64(),
             })
         })
+        .collect::<Vec<Result<_, String>>>()
+        .into_iter()
         .collect()
 }
 
-/// A contact study: one derived scene per striker mesh, every case of each; `elements` counts
-/// the elements of all bodies, the error is [`crate::contact_study::ContactResult::force_l1_error`].
-fn run_contact(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
-    let scenes = study
-        .contact_meshes
+/// A contact study: one derived scene per striker mesh and variant, every case of each;
+/// `elements` counts the elements of all bodies, the error is
+/// [`crate::contact_study::ContactResult::force_l1_error`].
+fn run_contact(
+    study: &WorkPrecisionStudy,
+    scenes: &[(Option<&'static str>, crate::Scene)],
+) -> Result<Vec<WorkPoint>, String> {
+    let cases: Vec<(Option<&'static str>, &crate::scene::contact::ContactCase)> = scenes
         .iter()
-        .map(|n| {
-            let (n, n2) = (n.to_string(), (2 * n).to_string());
-            let replacements: Vec<(&str, String)> = study
-                .replacements
-                .iter()
-                .map(|(from, to)| (*from, to.replace("{2n}", &n2).replace("{n}", &n)))
-                .collect();
-            let borrowed: Vec<(&str, &str)> =
-                replacements.iter().map(|(f, t)| (*f, t.as_str())).collect();
-            crate::report::derived_scene(study.name, study.scene, &borrowed)
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    let cases: Vec<&crate::scene::contact::ContactCase> =
-        scenes.iter().flat_map(|s| &s.contact).collect();
+        .flat_map(|(setting, scene)| scene.contact.iter().map(move |c| (*setting, c)))
+        .collect();
     cases
         .par_iter()
-        .map(|case| {
+        .map(|&(setting, case)| {
             let r = crate::contact_study::run_contact(case).map_err(|e| e.to_string())?;
             if let Some(d) = &r.diverged {
                 return Err(format!(
@@ -167,6 +274,9 @@ fn run_contact(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
             }
             Ok(WorkPoint {
                 method: case.name.clone(),
+                setting,
+                courant: r.run.courant,
+                critical_courant: r.run.critical.critical_courant(),
                 elements: case
                     .problem
                     .bodies()
@@ -178,15 +288,20 @@ fn run_contact(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
                 wall_time: r.wall_time.as_secs_f64(),
             })
         })
+        .collect::<Vec<Result<_, String>>>()
+        .into_iter()
         .collect()
 }
 
-/// Deterministic table: `method, N, steps, node_steps, l1`.
+/// Deterministic table: `method, Co, Co_crit, N, steps, node_steps, l1` (`Co` relative to the
+/// stiffest element, `Co_crit` the exact critical Courant number of the case's scheme).
 pub fn table(points: &[WorkPoint]) -> Table {
-    let mut t = Table::new(&["method", "N", "steps", "node_steps", "l1"]);
+    let mut t = Table::new(&["method", "Co", "Co_crit", "N", "steps", "node_steps", "l1"]);
     for p in points {
         t.push(vec![
             p.method.as_str().into(),
+            p.courant.into(),
+            p.critical_courant.into(),
             p.elements.into(),
             p.steps.into(),
             (p.elements * p.steps).into(),
@@ -196,43 +311,90 @@ pub fn table(points: &[WorkPoint]) -> Table {
     t
 }
 
-/// Report blocks (figure of L1 against node-steps per method, and the table) and files.
+/// One series per label ([`WorkPoint::label`]), in order of first appearance, of the points
+/// `(x(p), l1)` kept by `keep` (labels with no point kept are left out).
+fn series_by_label(
+    points: &[WorkPoint],
+    keep: impl Fn(&WorkPoint) -> bool,
+    x: impl Fn(&WorkPoint) -> f64,
+    style: SeriesStyle,
+) -> Vec<Series> {
+    let mut labels: Vec<String> = Vec::new();
+    for p in points {
+        let label = p.label();
+        if !labels.contains(&label) {
+            labels.push(label);
+        }
+    }
+    labels
+        .into_iter()
+        .map(|label| {
+            let pts = points
+                .iter()
+                .filter(|p| p.label() == label && keep(p))
+                .map(|p| (x(p), p.l1))
+                .collect();
+            Series::new(label, pts, style)
+        })
+        .filter(|s| !s.points.is_empty())
+        .collect()
+}
+
+/// The abscissa of a work-precision chart.
+type Abscissa = fn(&WorkPoint) -> f64;
+
+/// Report blocks (figures of the L1 error against elements x steps and against steps, per
+/// method, and the table) and files.
 pub fn blocks(
     study: &WorkPrecisionStudy,
     points: &[WorkPoint],
     shown: Precision,
     stored: Precision,
 ) -> (Vec<Block>, Vec<(String, String)>) {
-    let mut methods: Vec<String> = Vec::new();
-    for p in points {
-        if !methods.contains(&p.method) {
-            methods.push(p.method.clone());
-        }
-    }
-    let series: Vec<Series> = methods
-        .iter()
-        .map(|m| {
-            let pts = points
-                .iter()
-                .filter(|p| &p.method == m)
-                .map(|p| ((p.elements * p.steps) as f64, p.l1))
-                .collect();
-            Series::new(m.clone(), pts, SeriesStyle::Line)
-        })
-        .collect();
     let mut blocks = vec![Block::Heading(3, study.title.into())];
     let mut files = Vec::new();
-    if let Ok(svg) = line_chart(
-        &Axes::log_log(study.title, "work: elements x steps", study.error),
-        &series,
-    ) {
-        let file = format!("work_precision/{}.svg", study.name);
-        files.push((file.clone(), svg.clone()));
-        blocks.push(Block::Figure {
-            svg,
-            file,
-            caption: format!("Error against work: {}", study.title),
-        });
+    let settings = if study.variants.len() > 1 {
+        "; each scheme at the Courant setting in its label (Co relative to the stiffest element, \
+         Co_crit the exact critical Courant number of its scheme; both in the table)"
+    } else {
+        ""
+    };
+    let charts: [(&str, &str, Abscissa, &str); 2] = [
+        (
+            "",
+            "work: elements x steps",
+            |p| (p.elements * p.steps) as f64,
+            "Error against work (elements x steps)",
+        ),
+        (
+            ".steps",
+            "steps",
+            |p| p.steps as f64,
+            "Error against the number of steps",
+        ),
+    ];
+    for (suffix, x_label, x, what) in charts {
+        // A line per label and its meshes as dots of the same colour.
+        let lines = series_by_label(points, |_| true, x, SeriesStyle::Line);
+        let dots: Vec<Series> = lines
+            .iter()
+            .enumerate()
+            .map(|(i, line)| {
+                Series::new(line.name.clone(), line.points.clone(), SeriesStyle::Points)
+                    .with_colour(i)
+                    .without_legend()
+            })
+            .collect();
+        let series: Vec<Series> = lines.into_iter().chain(dots).collect();
+        if let Ok(svg) = line_chart(&Axes::log_log(study.title, x_label, study.error), &series) {
+            let file = format!("work_precision/{}{suffix}.svg", study.name);
+            files.push((file.clone(), svg.clone()));
+            blocks.push(Block::Figure {
+                svg,
+                file,
+                caption: format!("{what}: {}{settings}", study.title),
+            });
+        }
     }
     let t = table(points);
     let csv = format!("work_precision/{}.csv", study.name);
@@ -246,27 +408,16 @@ pub fn blocks(
 }
 
 /// Machine-dependent companion of [`blocks`]: the error against the CPU time of each run (wall
-/// time of the integration, one thread), as a log-log SVG per study; `None` when no point has a
-/// positive time.
+/// time of the integration, one thread), as a log-log SVG per study, labelled as in [`blocks`];
+/// `None` when no point has a positive time.
 pub fn cpu_chart(study: &WorkPrecisionStudy, points: &[WorkPoint]) -> Option<String> {
-    let mut methods: Vec<&str> = Vec::new();
-    for p in points {
-        if !methods.contains(&p.method.as_str()) {
-            methods.push(&p.method);
-        }
-    }
-    let series: Vec<Series> = methods
-        .iter()
-        .map(|m| {
-            let pts = points
-                .iter()
-                .filter(|p| p.method == *m && p.wall_time > 0.0)
-                .map(|p| (p.wall_time, p.l1))
-                .collect();
-            // Points, not a line: timings of short runs are noisy and need not grow with N.
-            Series::new(m.to_string(), pts, SeriesStyle::Points)
-        })
-        .collect();
+    // Points, not a line: timings of short runs are noisy and need not grow with N.
+    let series = series_by_label(
+        points,
+        |p| p.wall_time > 0.0,
+        |p| p.wall_time,
+        SeriesStyle::Points,
+    );
     line_chart(
         &Axes::log_log(study.title, "CPU time of the run [s]", study.error),
         &series,
@@ -274,14 +425,15 @@ pub fn cpu_chart(study: &WorkPrecisionStudy, points: &[WorkPoint]) -> Option<Str
     .ok()
 }
 
-/// `study, method, N, steps, l1, wall_time_s` of every study's runs (machine-dependent).
+/// `study, method, Co, N, steps, l1, wall_time_s` of every study's runs (machine-dependent).
 pub fn cpu_table(studies: &[WorkPrecisionStudy], work: &[Vec<WorkPoint>]) -> Table {
-    let mut t = Table::new(&["study", "method", "N", "steps", "l1", "wall_time_s"]);
+    let mut t = Table::new(&["study", "method", "Co", "N", "steps", "l1", "wall_time_s"]);
     for (study, points) in studies.iter().zip(work) {
         for p in points {
             t.push(vec![
                 study.name.into(),
                 p.method.as_str().into(),
+                p.courant.into(),
                 p.elements.into(),
                 p.steps.into(),
                 p.l1.into(),

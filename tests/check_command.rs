@@ -3,17 +3,22 @@
 //! expectations, prints each with its measured value, bound, verdict and source, and exits 0
 //! when all hold, 1 when any fails, 2 on bad input (nothing written); `--junit` writes JUnit XML
 //! (one testsuite per scene, one testcase per expectation, a `<failure>` for each failed one);
-//! `--baseline` compares the fresh CSVs with a previous `courant run --out DIR` under per-column
-//! tolerances (relative with an absolute floor, peak-relative for stress profiles, exact
-//! integers, ignored wall times) and fails naming the file and column that moved.
+//! `--baseline` compares the fresh CSVs with a previous report (`courant report --out DIR`, e.g.
+//! the committed `reports/`) or a previous `courant run --out DIR` under per-column tolerances
+//! (relative with an absolute floor, peak-relative for stress profiles, exact integers, ignored
+//! wall times; each settable with `--rel`, `--abs`, `--peak-rel`, `--peak-abs`, `--column`) and
+//! fails naming the file and column that moved.
 //!
 //! Proves, with the built binary on the fig1 scene (milliseconds per run): the committed
 //! expectations pass; a deliberately broken expectation exits 1 and appears as a `<failure>` in
 //! a well-formed JUnit file (checked by the shared XML parser `tests/common/xml.rs`: balanced tags, quoted
 //! attributes, valid entities, `testsuites/testsuite/testcase/failure` nesting, consistent
 //! counts); a baseline from a fresh run passes, survives round-off-sized edits and wall-time
-//! changes, and fails on a stress change beyond tolerance or a missing file, naming them; a bad
-//! scene exits 2 and writes neither the JUnit file nor the output directories.
+//! changes, and fails on a stress change beyond tolerance or a missing file, naming them; the
+//! committed report is a baseline that passes (per-case files it does not keep are JUnit
+//! `<skipped>`), a changed report column fails until `--column` loosens exactly that column; a
+//! bad scene or a bad tolerance exits 2 and writes neither the JUnit file nor the output
+//! directories.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -54,11 +59,10 @@ fn junit(path: &Path) -> Element {
     let doc = std::fs::read_to_string(path).unwrap();
     let root = parse_xml(&doc).unwrap_or_else(|e| panic!("not well-formed XML: {e}\n{doc}"));
     assert_eq!(root.name, "testsuites");
-    let (mut tests, mut failures) = (0, 0);
+    let (mut tests, mut failures, mut skips) = (0, 0, 0);
     for suite in &root.children {
         assert_eq!(suite.name, "testsuite");
-        let mut cases = 0;
-        let mut failed = 0;
+        let (mut cases, mut failed, mut skipped) = (0, 0, 0);
         for child in &suite.children {
             match child.name.as_str() {
                 "properties" => assert!(child.children.iter().all(|p| p.name == "property")),
@@ -67,24 +71,43 @@ fn junit(path: &Path) -> Element {
                     assert_eq!(child.value("classname"), suite.value("name"));
                     for grandchild in &child.children {
                         assert!(
-                            ["failure", "system-out"].contains(&grandchild.name.as_str()),
+                            ["failure", "skipped", "system-out"]
+                                .contains(&grandchild.name.as_str()),
                             "unexpected <{}> in a testcase",
                             grandchild.name
                         );
                         assert!(grandchild.children.is_empty());
                     }
                     failed += usize::from(child.child("failure").is_some());
+                    skipped += usize::from(child.child("skipped").is_some());
+                    assert!(
+                        !(child.child("failure").is_some() && child.child("skipped").is_some())
+                    );
                 }
                 other => panic!("unexpected <{other}> in a testsuite"),
             }
         }
         assert_eq!(suite.value("tests"), cases.to_string());
         assert_eq!(suite.value("failures"), failed.to_string());
+        assert_eq!(suite.value("errors"), "0");
+        assert_eq!(suite.value("skipped"), skipped.to_string());
+        // Ant schema: time in seconds, timestamp ISO 8601 without a zone, a hostname.
+        let time: f64 = suite.value("time").parse().expect("time is a number");
+        assert!(time >= 0.0);
+        let stamp = suite.value("timestamp");
+        let shape: String = stamp
+            .chars()
+            .map(|c| if c.is_ascii_digit() { '9' } else { c })
+            .collect();
+        assert_eq!(shape, "9999-99-99T99:99:99", "timestamp {stamp}");
+        assert!(!suite.value("hostname").is_empty());
         tests += cases;
         failures += failed;
+        skips += skipped;
     }
     assert_eq!(root.value("tests"), tests.to_string());
     assert_eq!(root.value("failures"), failures.to_string());
+    assert_eq!(root.value("skipped"), skips.to_string());
     root
 }
 
@@ -93,6 +116,14 @@ fn testcases(root: &Element) -> Vec<&Element> {
         .iter()
         .flat_map(|s| &s.children)
         .filter(|c| c.name == "testcase")
+        .collect()
+}
+
+/// The lines of `courant check`'s table whose verdict is FAIL.
+fn failed_lines(stdout: &str) -> Vec<&str> {
+    stdout
+        .lines()
+        .filter(|l| l.trim_start().starts_with("FAIL"))
         .collect()
 }
 
@@ -244,10 +275,7 @@ fn baseline_of_a_fresh_run_passes_and_a_changed_number_fails_naming_file_and_col
     let out = check(&dir.join("changed.xml"));
     assert_eq!(out.status.code(), Some(1), "{}", text(&out));
     let stdout = String::from_utf8(out.stdout).unwrap();
-    let failed: Vec<&str> = stdout
-        .lines()
-        .filter(|l| l.trim_start().starts_with("FAIL"))
-        .collect();
+    let failed = failed_lines(&stdout);
     assert_eq!(failed.len(), 1, "only the edited file fails: {stdout}");
     assert!(failed[0].contains("co0.5.csv") && failed[0].contains("stress"));
     assert!(stdout.contains("line 52"), "names the line: {stdout}");
@@ -276,6 +304,87 @@ fn baseline_of_a_fresh_run_passes_and_a_changed_number_fails_naming_file_and_col
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// The committed report (`reports/`, regenerated by CI) as a baseline: its tables are compared,
+/// the per-case files it does not keep are skipped; a copy with one `l1` cell moved by 1e-6
+/// relative fails naming `summary.csv` and `l1`, and passes again once `--column l1=rel:1e-5`
+/// allows exactly that.
+#[test]
+fn the_committed_report_is_a_baseline_and_a_moved_report_column_fails_until_allowed() {
+    let dir = scratch("report-baseline");
+    let committed = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports");
+    let junit_file = dir.join("report.xml");
+    let out = courant(&[
+        "check",
+        "fig1",
+        "fig6",
+        "contact_wall",
+        "--baseline",
+        s(&committed),
+        "--junit",
+        s(&junit_file),
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("(report):"), "{stdout}");
+    let root = junit(&junit_file);
+    let cases = testcases(&root);
+    let named = |name: &str| {
+        cases
+            .iter()
+            .copied()
+            .find(|c| c.value("classname") == "fig1" && c.value("name") == name)
+            .unwrap_or_else(|| panic!("no testcase {name}"))
+    };
+    assert!(named("baseline co0.5.csv").child("skipped").is_some());
+    for table in ["summary.csv", "norms.csv", "expectations.csv"] {
+        let case = named(&format!("baseline {table}"));
+        assert!(case.child("skipped").is_none() && case.child("failure").is_none());
+    }
+
+    // A report-shaped copy of fig1 with one l1 cell moved by 1e-6 relative.
+    let copy = dir.join("report");
+    std::fs::create_dir_all(copy.join("fig1")).unwrap();
+    std::fs::copy(committed.join("index.md"), copy.join("index.md")).unwrap();
+    for table in ["summary.csv", "norms.csv", "expectations.csv"] {
+        std::fs::copy(
+            committed.join("fig1").join(table),
+            copy.join("fig1").join(table),
+        )
+        .unwrap();
+    }
+    let summary = copy.join("fig1").join("summary.csv");
+    let header = std::fs::read_to_string(&summary).unwrap();
+    let l1 = header
+        .lines()
+        .next()
+        .unwrap()
+        .split(',')
+        .position(|c| c == "l1")
+        .unwrap();
+    edit_cell(&summary, 3, l1, |x| x * (1.0 + 1e-6));
+    let out = courant(&["check", "fig1", "--baseline", s(&copy)]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let failed = failed_lines(&stdout);
+    assert_eq!(failed.len(), 1, "{stdout}");
+    assert!(failed[0].contains("summary.csv") && failed[0].contains("l1"));
+    let out = courant(&[
+        "check",
+        "fig1",
+        "--baseline",
+        s(&copy),
+        "--column",
+        "l1=rel:1e-5",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("l1: relative (rel 1e-5"));
+    // A table the report keeps but the copy lost fails.
+    std::fs::remove_file(copy.join("fig1").join("norms.csv")).unwrap();
+    let out = courant(&["check", "fig1", "--baseline", s(&copy), "--rel", "1e-3"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 #[test]
 fn bad_input_exits_2_and_writes_nothing() {
     let dir = scratch("bad");
@@ -286,13 +395,25 @@ fn bad_input_exits_2_and_writes_nothing() {
     std::fs::write(&bad, text_in).unwrap();
     let (report, results) = (dir.join("report.xml"), dir.join("out"));
     let nowhere = dir.join("nowhere");
-    let attempts: [&[&str]; 3] = [
+    let here = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports");
+    let attempts: [&[&str]; 6] = [
         // a scene that does not parse, after a good one
         &["check", "fig1", s(&bad)],
         // no such scene
         &["check", "no_such_scene"],
         // a baseline that is not a directory
         &["check", "fig1", "--baseline", s(&nowhere)],
+        // a negative tolerance, a malformed column rule, a tolerance without a baseline
+        &["check", "fig1", "--baseline", s(&here), "--rel", "-1"],
+        &[
+            "check",
+            "fig1",
+            "--baseline",
+            s(&here),
+            "--column",
+            "l1=rel",
+        ],
+        &["check", "fig1", "--abs", "1e-9"],
     ];
     for args in attempts {
         let mut args = args.to_vec();
@@ -303,6 +424,12 @@ fn bad_input_exits_2_and_writes_nothing() {
         assert!(!report.exists(), "{args:?} wrote the JUnit file");
         assert!(!results.exists(), "{args:?} wrote results");
     }
+    let out = courant(&["check", "fig1", "--baseline", s(&here), "--rel", "-1"]);
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        stderr.contains("--rel") && stderr.contains("-1") && stderr.contains(">= 0"),
+        "names the flag, the value and the rule: {stderr}"
+    );
     let out = courant(&["check", s(&bad)]);
     let stderr = String::from_utf8(out.stderr).unwrap();
     assert!(

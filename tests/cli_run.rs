@@ -3,8 +3,12 @@
 //! `t, element, x, stress, reference, error`, histories, energy logs and a `summary.csv` with cost and
 //! error per case; exit status 0 when every expectation holds, 1 when one fails.
 //!
-//! Proves: the files exist with their headers, the same scene gives bit-identical results on a
-//! second run (only the wall-time column differs), and a failed expectation fails the command.
+//! Proves: the files exist with their headers; the same scenes give bit-identical results on a
+//! second run with another thread count (1 and 4 rayon threads: the cases of a scene, the
+//! distinct exact profiles and the rows of a stability sweep run in parallel, so this catches
+//! any result that depends on scheduling) — fig1 (shared d'Alembert profiles), fig2 (graded
+//! reference, Park), fig5 (13 contact cases) and fig3 (the stability sweep), only the wall-time
+//! column differs; and a failed expectation fails the command.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -49,11 +53,19 @@ fn list_names_every_built_in_scene_with_its_description() {
 }
 
 #[test]
-fn run_writes_profiles_histories_energy_and_summary_and_is_deterministic() {
+fn run_writes_profiles_histories_energy_and_summary_identically_with_1_and_4_threads() {
     let dir = scratch("fig1");
     let (a, b) = (dir.join("a"), dir.join("b"));
-    for out in [&a, &b] {
-        let status = courant(&["run", "fig1", "--out", out.to_str().unwrap()]);
+    let scenes = ["fig1", "fig2", "fig5", "fig3"];
+    for (out, threads) in [(&a, "1"), (&b, "4")] {
+        let mut args = vec!["run"];
+        args.extend(scenes);
+        args.extend(["--out", out.to_str().unwrap()]);
+        let status = Command::new(env!("CARGO_BIN_EXE_courant"))
+            .args(&args)
+            .env("RAYON_NUM_THREADS", threads)
+            .output()
+            .unwrap();
         assert!(
             status.status.success(),
             "{}",
@@ -79,26 +91,36 @@ fn run_writes_profiles_histories_energy_and_summary_and_is_deterministic() {
         header(&scene.join("summary.csv")),
         "case,N,scheme,mass,Co,Co_crit,dt,dt_crit,dt_crit_element,dt_crit_gershgorin,steps,l1,l2,linf,overshoot,tv_ratio,energy_balance,energy_lost,status,wall_time_s"
     );
-    let mut files: Vec<_> = std::fs::read_dir(&scene)
-        .unwrap()
-        .map(|e| e.unwrap().file_name())
-        .collect();
-    files.sort();
-    for file in files {
-        let (x, y) = (
-            std::fs::read_to_string(scene.join(&file)).unwrap(),
-            std::fs::read_to_string(b.join("fig1").join(&file)).unwrap(),
-        );
-        if file == "summary.csv" {
-            // Everything but the last column (wall time) must match.
-            let strip = |s: &str| {
-                s.lines()
-                    .map(|l| l.rsplit_once(',').unwrap().0.to_string())
-                    .collect::<Vec<_>>()
-            };
-            assert_eq!(strip(&x), strip(&y));
-        } else {
-            assert_eq!(x, y, "{file:?} differs between two runs");
+    for name in scenes {
+        let mut files: Vec<_> = std::fs::read_dir(a.join(name))
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        files.sort();
+        let mut others: Vec<_> = std::fs::read_dir(b.join(name))
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        others.sort();
+        assert_eq!(files, others, "{name}: different files");
+        assert!(files.len() >= 2, "{name}: {files:?}");
+        for file in files {
+            let (x, y) = (
+                std::fs::read_to_string(a.join(name).join(&file)).unwrap(),
+                std::fs::read_to_string(b.join(name).join(&file)).unwrap(),
+            );
+            if file == "summary.csv" {
+                // Everything but the last column (wall time) must match.
+                assert!(x.lines().next().unwrap().ends_with(",wall_time_s"));
+                let strip = |s: &str| {
+                    s.lines()
+                        .map(|l| l.rsplit_once(',').unwrap().0.to_string())
+                        .collect::<Vec<_>>()
+                };
+                assert_eq!(strip(&x), strip(&y), "{name}/summary.csv");
+            } else {
+                assert_eq!(x, y, "{name}/{file:?} differs between 1 and 4 threads");
+            }
         }
     }
     std::fs::remove_dir_all(&dir).unwrap();

@@ -4,7 +4,8 @@
 //! or not at all; the closed-form contact critical Courant numbers of `courant-references`.
 //!
 //! Proves: on a reduced set (two scenes, one study) the report has the expected files with CSV
-//! headers, `index.html` and every generated SVG are well-formed XML (checker in
+//! headers (each scene's CSV tables are the ones a report baseline compares), `index.html` and
+//! every generated SVG are well-formed XML (checker in
 //! `tests/common/xml.rs`, itself shown to reject malformed markup), the stability section carries
 //! the closed-form contact table for beta_s = 1e6 … 1e12, its deterministic files are identical
 //! from one generation to the next (timings apart), an expectation failure is flagged, and
@@ -50,6 +51,18 @@ fn report_has_sections_tables_and_deterministic_content() {
             "{expected} missing from {names:?}"
         );
     }
+    // Every scene table is one `courant check --baseline <report>` compares (REPORT_TABLES).
+    for scene in ["fig1", "fig6"] {
+        assert!(names.contains(&format!("{scene}/expectations.csv").as_str()));
+        for name in &names {
+            if let Some(file) = name.strip_prefix(&format!("{scene}/")) {
+                assert!(
+                    file.ends_with(".svg") || courant::baseline::REPORT_TABLES.contains(&file),
+                    "{name} is a scene table a report baseline would not compare"
+                );
+            }
+        }
+    }
     let index = &a.files.iter().find(|f| f.0 == "index.md").unwrap().1;
     assert!(
         index.contains("## fig1")
@@ -64,9 +77,10 @@ fn report_has_sections_tables_and_deterministic_content() {
         .find(|f| f.0 == "timing.work_precision.csv")
         .unwrap()
         .1;
-    assert!(cpu.starts_with("study,method,N,steps,l1,wall_time_s\n"));
+    assert!(cpu.starts_with("study,method,Co,N,steps,l1,wall_time_s\n"));
     assert!(
-        cpu.contains("fig5_contact,lagrange-multiplier,"),
+        cpu.contains("fig5_contact,lagrange-multiplier,")
+            && cpu.contains("fig5_contact,cd-penalty-bs2500,"),
         "contact schemes timed"
     );
     let html = &a.files.iter().find(|f| f.0 == "index.html").unwrap().1;

@@ -41,7 +41,8 @@ pub enum Start {
 /// What to do about the stability limit.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StabilityPolicy {
-    /// Run even when `dt` exceeds the exact critical step.
+    /// Run even when `dt` exceeds the exact critical step (for Park's scheme also
+    /// `alpha_e > 1`, run with the true `alpha_e`: [`ParkScheme::allowing_unstable`]).
     pub allow_unstable: bool,
     /// A run stops as diverged when `kinetic + strain` exceeds this multiple of its energy
     /// reference (largest of the initial energy and the external work so far).
@@ -97,6 +98,57 @@ pub struct CentralDifference {
     pub park: Option<ParkOptions>,
 }
 
+/// The stability limit of the scheme a [`CentralDifference`] runs: the largest stable step and
+/// where it comes from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SchemeLimit {
+    /// Central difference (any mass): `dt <= 2/omega_max` of the assembled `(K, M)`
+    /// ([`CriticalStep::exact`]; Hughes, *The Finite Element Method*, 2000, §9.3).
+    CentralDifference {
+        /// `2/omega_max`.
+        dt: f64,
+    },
+    /// Park's scheme: `alpha_e = dt/dt_e <= 1` in every element (methods.md §6), i.e.
+    /// `dt <= min_e dt_e` ([`ParkScheme::limit_step`]).
+    Park {
+        /// `min_e dt_e`.
+        dt: f64,
+        /// The element with the smallest `dt_e` (the first whose `alpha_e` exceeds 1).
+        element: usize,
+    },
+}
+
+impl SchemeLimit {
+    /// The limit of central difference (`park = None`) or of Park's scheme with `park` on
+    /// `model`, given the critical steps of its mass: CD's `critical.exact`, or Park's
+    /// `alpha_e <= 1` (at or below CD's for the lumped mass: Fried's bound
+    /// `omega_max <= max_e 2 c_e/h_e` gives `2/omega_max >= min_e h_e/c_e`).
+    pub fn of(park: Option<&ParkOptions>, model: &Model, critical: &CriticalStep) -> Self {
+        match park {
+            None => SchemeLimit::CentralDifference { dt: critical.exact },
+            Some(_) => SchemeLimit::Park {
+                dt: ParkScheme::limit_step(model),
+                element: model.bar().stiffest_element().0,
+            },
+        }
+    }
+
+    /// The largest stable step.
+    pub fn dt(&self) -> f64 {
+        match *self {
+            SchemeLimit::CentralDifference { dt } | SchemeLimit::Park { dt, .. } => dt,
+        }
+    }
+
+    /// What the limit is, for tables: `2/omega_max` or `alpha_e <= 1`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            SchemeLimit::CentralDifference { .. } => "2/omega_max",
+            SchemeLimit::Park { .. } => "alpha_e <= 1",
+        }
+    }
+}
+
 /// Why a run did not complete.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum RunError {
@@ -134,6 +186,12 @@ impl CentralDifference {
     pub fn check_stability(&self, model: &Model) -> Result<CriticalStep, RunError> {
         let operator = MassOperator::new(model, self.mass)?;
         Ok(self.check_stability_with(model, &operator)?)
+    }
+
+    /// The stability limit of this integrator's scheme on `model`, given the critical steps of
+    /// its mass (from [`CentralDifference::check_stability`]): [`SchemeLimit::of`].
+    pub fn limit(&self, model: &Model, critical: &CriticalStep) -> SchemeLimit {
+        SchemeLimit::of(self.park.as_ref(), model, critical)
     }
 
     fn check_stability_with(
@@ -220,7 +278,11 @@ impl CentralDifference {
 
         let mut kernel = match (self.park, self.mass) {
             (Some(options), MassKind::Lumped) => {
-                let mut park = ParkScheme::new(model, dt, options)?;
+                let mut park = if self.stability.allow_unstable {
+                    ParkScheme::allowing_unstable(model, dt, options)?
+                } else {
+                    ParkScheme::new(model, dt, options)?
+                };
                 park.start(model);
                 Kernel::Park(Box::new(park))
             }

@@ -30,7 +30,9 @@ pub mod stability;
 pub mod time_step;
 
 pub use bar::{Bar, Field};
-pub use central_difference::{CentralDifference, OutputRequest, RunError, StabilityPolicy, Start};
+pub use central_difference::{
+    CentralDifference, OutputRequest, RunError, SchemeLimit, StabilityPolicy, Start,
+};
 pub use error::{DivergenceError, InputError, UnstableStepError};
 pub use load::{End, Load, NodalLoad, TimeFunction};
 pub use mass::{MassKind, MassOperator};
@@ -39,4 +41,4 @@ pub use model::{InitialConditions, Model, Support, Supports};
 pub use output::{EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput, StressProfile};
 pub use park::{ParkOptions, ParkScheme, ParkVariant};
 pub use stability::CriticalStep;
-pub use time_step::{TimePlan, plan};
+pub use time_step::{TimePlan, plan, plan_keeping_step};

@@ -179,6 +179,34 @@ impl ParkScheme {
     /// Set up for `model` with step `dt`; `alpha_e = dt/dt_e > 1` in any element is refused
     /// (the scheme is unstable there), naming the element.
     pub fn new(model: &Model, dt: f64, options: ParkOptions) -> Result<Self, InputError> {
+        Self::build(model, dt, options, false)
+    }
+
+    /// As [`ParkScheme::new`], but `alpha_e = dt/dt_e > 1` is run, not refused: every element
+    /// steps with its true `alpha_e` (no clamping to 1) in `beta1`, `beta2`. Above `alpha = 1`
+    /// the spectral radius exceeds 1 (methods.md §6): this is for studies of the limit, whose
+    /// runs rely on the divergence guard (`StabilityPolicy::allow_unstable`).
+    pub fn allowing_unstable(
+        model: &Model,
+        dt: f64,
+        options: ParkOptions,
+    ) -> Result<Self, InputError> {
+        Self::build(model, dt, options, true)
+    }
+
+    /// The largest step with `alpha_e = dt/dt_e <= 1` in every element, `min_e dt_e`: the
+    /// stiffest element's transit time `min_e h_e/c_e`, with and without local stepping
+    /// (without, every element takes that `dt_e`). Park's stability limit (methods.md §6).
+    pub fn limit_step(model: &Model) -> f64 {
+        model.bar().stiffest_element().1
+    }
+
+    fn build(
+        model: &Model,
+        dt: f64,
+        options: ParkOptions,
+        allow_unstable: bool,
+    ) -> Result<Self, InputError> {
         if !(0.0..=1.0).contains(&options.theta) {
             return Err(InputError::Parameter {
                 field: "theta",
@@ -205,13 +233,18 @@ impl ParkScheme {
                 stiffest
             };
             let alpha = dt / dt_e;
-            if alpha > 1.0 + crate::time_step::ROUNDING_SLACK {
+            if alpha > 1.0 + crate::time_step::ROUNDING_SLACK && !allow_unstable {
                 return Err(InputError::Other(format!(
                     "Park's scheme needs alpha_e = dt/dt_e <= 1 in every element; element {e} has alpha = {alpha:.6} \
                      (dt = {dt:e}, dt_e = {dt_e:e}): lower the Courant number"
                 )));
             }
-            let alpha = alpha.min(1.0);
+            // Refusing: alpha within the plan's rounding slack of 1 is 1. Allowing: the true alpha.
+            let alpha = if allow_unstable {
+                alpha
+            } else {
+                alpha.min(1.0)
+            };
             let beta1 = alpha * (1.0 + 3.0 * alpha - alpha * alpha) / 6.0;
             let beta2 = alpha * (alpha * alpha - 1.0) / 6.0;
             let (pull_a, pull_at) = (dt_e * dt_e * beta1, dt_e * dt_e * beta2);
@@ -613,6 +646,8 @@ mod tests {
     use crate::fixtures::graded_seed_bar;
 
     /// The unfolded step, element by element as in the module doc's steps 1-4.
+    /// `clamp`: alpha limited to 1 (as [`ParkScheme::new`] does), else the true alpha (as
+    /// [`ParkScheme::allowing_unstable`]).
     fn reference_step(
         model: &Model,
         scheme: &ParkScheme,
@@ -620,6 +655,7 @@ mod tests {
         v: &mut [f64],
         a: &mut [f64],
         t: f64,
+        clamp: bool,
     ) -> StepEnergy {
         let (dt, options) = (scheme.dt, scheme.options);
         let theta = options.theta;
@@ -635,7 +671,11 @@ mod tests {
             } else {
                 bar.stiffest_element().1
             };
-            let alpha = (dt / dt_e).min(1.0);
+            let alpha = if clamp {
+                (dt / dt_e).min(1.0)
+            } else {
+                dt / dt_e
+            };
             let beta1 = alpha * (1.0 + 3.0 * alpha - alpha * alpha) / 6.0;
             let beta2 = alpha * (alpha * alpha - 1.0) / 6.0;
             let m_e = 0.5 * masses[e];
@@ -720,7 +760,8 @@ mod tests {
                     let t = step as f64 * dt;
                     let fast = scheme.step(&model, t);
                     let slow = portable.step(&model, t);
-                    let reference = reference_step(&model, &scheme, &mut u, &mut v, &mut a, t);
+                    let reference =
+                        reference_step(&model, &scheme, &mut u, &mut v, &mut a, t, true);
                     let scale_u = u.iter().fold(1e-300f64, |m, x| m.max(x.abs()));
                     let scale_v = v.iter().fold(1e-300f64, |m, x| m.max(x.abs()));
                     let scale_a = a.iter().fold(1e-300f64, |m, x| m.max(x.abs()));
@@ -740,6 +781,34 @@ mod tests {
                     // The AVX2 copy does the same IEEE operations in the same order.
                     assert_eq!(fast, slow);
                     assert_eq!(scheme.u, portable.u);
+                }
+            }
+        }
+    }
+
+    /// Source of truth: the element-by-element formulas of the module doc with the true
+    /// `alpha_e = dt/dt_e`. Proves: [`ParkScheme::allowing_unstable`] runs alpha > 1 without
+    /// clamping (beta2 > 0), where [`ParkScheme::new`] refuses it.
+    #[test]
+    fn allowing_unstable_steps_with_the_true_alpha() {
+        let model = graded_seed_bar(103).unwrap();
+        let dt = 1.05 * model.bar().stiffest_element().1;
+        for local_stepping in [true, false] {
+            let options = ParkOptions {
+                local_stepping,
+                ..ParkOptions::default()
+            };
+            assert!(ParkScheme::new(&model, dt, options).is_err());
+            let mut scheme = ParkScheme::allowing_unstable(&model, dt, options).unwrap();
+            scheme.start(&model);
+            let (mut u, mut v, mut a) = (scheme.u.clone(), scheme.v.clone(), scheme.a.clone());
+            for step in 0..20 {
+                let t = step as f64 * dt;
+                scheme.step(&model, t);
+                reference_step(&model, &scheme, &mut u, &mut v, &mut a, t, false);
+                let scale = u.iter().fold(1e-300f64, |m, x| m.max(x.abs()));
+                for (i, (&x, &y)) in scheme.u.iter().zip(&u).enumerate() {
+                    assert!(close(x, y, scale), "{options:?} u[{i}]");
                 }
             }
         }

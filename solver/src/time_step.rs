@@ -1,4 +1,5 @@
-//! Choosing the time step so that every output time is hit exactly (methods.md §1).
+//! Choosing the time step so that every output time is hit exactly (methods.md §1), or keeping
+//! a given step exactly and snapping the output times to it ([`plan_keeping_step`]).
 //!
 //! The output times (and the end time) must be integer multiples of a common interval `tau`.
 //! With the nominal step `dt_0` (from a Courant number or given directly),
@@ -33,22 +34,7 @@ pub struct TimePlan {
 /// give a small `tau`, hence a small step: the plan's `dt` and step count say so, and
 /// [`MAX_STEPS`] bounds the run.
 pub fn plan(nominal_dt: f64, output_times: &[f64], end_time: f64) -> Result<TimePlan, InputError> {
-    crate::mesh::positive("dt", nominal_dt)?;
-    crate::mesh::positive("end time", end_time)?;
-    for &t in output_times {
-        if !(t.is_finite() && t >= 0.0) {
-            return Err(InputError::Parameter {
-                field: "output time",
-                value: t,
-                rule: "must be finite and not negative",
-            });
-        }
-        if t > end_time * (1.0 + ROUNDING_SLACK) {
-            return Err(InputError::Other(format!(
-                "output time {t} is after the end time {end_time}"
-            )));
-        }
-    }
+    validate(nominal_dt, output_times, end_time)?;
     let positive_times = || {
         output_times
             .iter()
@@ -82,6 +68,64 @@ pub fn plan(nominal_dt: f64, output_times: &[f64], end_time: f64) -> Result<Time
             .map(|&t| (t / dt).round() as usize)
             .collect(),
     })
+}
+
+/// Plan a run that keeps the step `dt` exactly (no shrinking), for runs whose step is the point,
+/// such as a step at exactly 1.00 of a critical step: the run takes `n = round(end_time/dt)`
+/// steps and each output time `t` is recorded at its nearest step `round(t/dt)`. The run then
+/// ends at `n dt` and each output falls at `round(t/dt) dt`, both within `dt/2` of the time asked
+/// for; outputs carry the step's actual time, so references compared with them must be
+/// evaluated there (the scene runner does). Refused: an end time shorter than half a step
+/// (no step at all), or more than [`MAX_STEPS`] steps.
+pub fn plan_keeping_step(
+    dt: f64,
+    output_times: &[f64],
+    end_time: f64,
+) -> Result<TimePlan, InputError> {
+    validate(dt, output_times, end_time)?;
+    let steps_f = (end_time / dt).round();
+    if steps_f < 1.0 {
+        return Err(InputError::Other(format!(
+            "the end time {end_time} is shorter than half a step (dt = {dt:e}): keeping the step, the run would take no step"
+        )));
+    }
+    if steps_f > MAX_STEPS as f64 {
+        return Err(InputError::Other(format!(
+            "the run needs {steps_f:.3e} steps of dt = {dt:e} to reach {end_time}; at most {MAX_STEPS} are allowed: \
+             raise the step or shorten the run"
+        )));
+    }
+    let steps = steps_f as usize;
+    Ok(TimePlan {
+        dt,
+        steps,
+        output_steps: output_times
+            .iter()
+            .map(|&t| ((t / dt).round() as usize).min(steps))
+            .collect(),
+    })
+}
+
+/// The checks every plan makes: `dt` and the end time positive and finite, output times finite,
+/// not negative and not after the end time (within the relative slack).
+fn validate(dt: f64, output_times: &[f64], end_time: f64) -> Result<(), InputError> {
+    crate::mesh::positive("dt", dt)?;
+    crate::mesh::positive("end time", end_time)?;
+    for &t in output_times {
+        if !(t.is_finite() && t >= 0.0) {
+            return Err(InputError::Parameter {
+                field: "output time",
+                value: t,
+                rule: "must be finite and not negative",
+            });
+        }
+        if t > end_time * (1.0 + ROUNDING_SLACK) {
+            return Err(InputError::Other(format!(
+                "output time {t} is after the end time {end_time}"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// Largest number of steps a plan may have.
@@ -162,6 +206,42 @@ mod tests {
     fn a_plan_beyond_the_step_limit_is_refused() {
         let err = plan(1e-9, &[], 1.0).unwrap_err();
         assert!(err.to_string().contains("at most 100000000"), "{err}");
+    }
+
+    /// Keeping the step: dt is returned bit for bit, the end and output times snap to their
+    /// nearest steps (source of truth: the definition, n = round(t/dt)).
+    #[test]
+    fn keeping_the_step_snaps_times_to_the_nearest_step() {
+        let dt = 0.010_000_308_433_064_905; // 2/omega_max of the N = 100 free-fixed bar
+        let p = plan_keeping_step(dt, &[0.5, 1.5], 100.0).unwrap();
+        assert_eq!(p.dt.to_bits(), dt.to_bits());
+        assert_eq!(p.steps, 10_000); // 100/dt = 9999.69
+        assert_eq!(p.output_steps, vec![50, 150]); // 49.998, 149.995
+        assert!((p.steps as f64 * dt - 100.0).abs() <= 0.5 * dt);
+        let p = plan_keeping_step(0.3, &[1.0], 1.0).unwrap();
+        assert_eq!((p.dt, p.steps, p.output_steps), (0.3, 3, vec![3]));
+    }
+
+    /// An end time below half a step would take no step: refused, saying so.
+    #[test]
+    fn keeping_the_step_refuses_a_run_without_a_step() {
+        let err = plan_keeping_step(1.0, &[], 0.4).unwrap_err();
+        assert!(
+            err.to_string().contains("shorter than half a step"),
+            "{err}"
+        );
+        assert!(
+            plan_keeping_step(1e-9, &[], 1.0)
+                .unwrap_err()
+                .to_string()
+                .contains("at most 100000000")
+        );
+        assert!(
+            plan_keeping_step(0.1, &[2.0], 1.0)
+                .unwrap_err()
+                .to_string()
+                .contains("after the end time")
+        );
     }
 
     #[test]

@@ -13,8 +13,8 @@ pub mod spectrum;
 use crate::reference::Reference;
 use courant_solver::{
     Bar, CentralDifference, CriticalStep, End, Field, InitialConditions, InputError, Load,
-    MassKind, Mesh, Model, OutputRequest, ParkOptions, ParkVariant, StabilityPolicy, Start,
-    Support, Supports, TimeFunction, TimePlan,
+    MassKind, Mesh, Model, OutputRequest, ParkOptions, ParkVariant, SchemeLimit, StabilityPolicy,
+    Start, Support, Supports, TimeFunction, TimePlan,
 };
 pub use error::{SceneError, Source};
 use schema::*;
@@ -115,6 +115,8 @@ pub struct Case {
     pub request: OutputRequest,
     /// Critical-step estimates of the model.
     pub critical: CriticalStep,
+    /// The stability limit of the case's scheme (CD's `2/omega_max` or Park's `alpha_e <= 1`).
+    pub limit: SchemeLimit,
     /// Analytic reference, if the scene names one.
     pub reference: Option<Reference>,
     /// Transit time of the bar, `T = sum_e h_e/c_e`.
@@ -412,17 +414,11 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                 if stepping.masses.len() > 1 {
                     case_name += &format!("{}-", mass_name(mass));
                 }
-                let nominal_dt = if stepping.by_courant {
+                if stepping.by_courant {
                     case_name += &format!("co{value}");
-                    let unit = match integrator.courant_unit {
-                        RawCourantUnit::StiffestElement => 1.0,
-                        RawCourantUnit::Critical => mass.critical_courant(),
-                    };
-                    value * unit * element_dt
                 } else {
                     case_name += &format!("dt{value}");
-                    value
-                };
+                }
                 let fail = |msg: String| {
                     src.error(
                         Some(stepping.span.clone()),
@@ -430,9 +426,25 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                         format!("case {case_name}: {msg}"),
                     )
                 };
-                let plan =
+                let nominal_dt = match (stepping.by_courant, stepping.unit) {
+                    (false, _) => value,
+                    (true, RawCourantUnit::StiffestElement) => value * element_dt,
+                    (true, RawCourantUnit::Critical) => {
+                        value * mass.critical_courant() * element_dt
+                    }
+                    (true, RawCourantUnit::Exact) => {
+                        let operator = courant_solver::MassOperator::new(&model, mass)
+                            .map_err(|e| fail(e.to_string()))?;
+                        let critical = CriticalStep::of(&model, mass, &operator);
+                        value * SchemeLimit::of(park.as_ref(), &model, &critical).dt()
+                    }
+                };
+                let plan = if stepping.keep_step {
+                    keep_step_plan(src, &outputs, nominal_dt, &case_name)?
+                } else {
                     courant_solver::plan(nominal_dt, &outputs.profile_times, outputs.end_time)
-                        .map_err(|e| fail(e.to_string()))?;
+                        .map_err(|e| fail(e.to_string()))?
+                };
                 let integrator = CentralDifference {
                     dt: plan.dt,
                     start: stepping.start,
@@ -465,6 +477,7 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                     history_every: outputs.history_every.unwrap_or(thinned),
                     energy_every: outputs.energy_every.unwrap_or(thinned),
                 };
+                let limit = integrator.limit(&model, &critical);
                 cases.push(Case {
                     name: case_name,
                     model: model.clone(),
@@ -472,6 +485,7 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                     plan,
                     request,
                     critical,
+                    limit,
                     reference: reference.clone(),
                     transit_time: transit,
                 });
@@ -995,6 +1009,10 @@ struct Stepping {
     span: Range<usize>,
     values: Vec<f64>,
     by_courant: bool,
+    /// What `courant` values are relative to.
+    unit: RawCourantUnit,
+    /// `keep_step = true`: the step is kept exactly, output times snap to it.
+    keep_step: bool,
     masses: Vec<MassKind>,
     /// (case-name prefix, Park options or `None` for CD).
     schemes: Vec<(&'static str, Option<ParkOptions>)>,
@@ -1154,17 +1172,68 @@ impl Stepping {
                 "Park's scheme runs with the lumped mass only",
             ));
         }
+        let unit = match (&raw.courant_unit, by_courant) {
+            (None, _) => RawCourantUnit::StiffestElement,
+            (Some(u), true) => *u.get_ref(),
+            (Some(u), false) => {
+                return Err(src.error(
+                    Some(u.span()),
+                    "integrator.courant_unit",
+                    "applies to `courant` only; a `dt` is a time step in the scene's own unit",
+                ));
+            }
+        };
+        let keep_step = raw.keep_step.unwrap_or(false);
         Ok(Self {
             key,
             span,
             values,
             by_courant,
+            unit,
+            keep_step,
             masses,
             schemes,
             start,
             stability,
         })
     }
+}
+
+/// The plan of a `keep_step` case: the step as given, end and profile times snapped to their
+/// nearest steps ([`courant_solver::plan_keeping_step`]); two profile times on one step are
+/// refused (each needs its own profile).
+fn keep_step_plan(
+    src: &Source,
+    outputs: &Outputs,
+    dt: f64,
+    case_name: &str,
+) -> Result<TimePlan, SceneError> {
+    let end_span = outputs.raw.end_time.as_ref().map(|e| e.span());
+    let plan = courant_solver::plan_keeping_step(dt, &outputs.profile_times, outputs.end_time)
+        .map_err(|e| {
+            src.error(
+                end_span,
+                "output.end_time",
+                format!("case {case_name}: {e}"),
+            )
+        })?;
+    let mut taken: Vec<(usize, f64)> = Vec::with_capacity(plan.output_steps.len());
+    for (&t, &n) in outputs.profile_times.iter().zip(&plan.output_steps) {
+        if let Some(&(_, other)) = taken.iter().find(|(m, u)| *m == n && *u != t) {
+            return Err(src.error(
+                outputs.raw.profile_times.as_ref().map(|p| p.span()),
+                "output.profile_times",
+                format!(
+                    "case {case_name}: {} and {} fall on the same step {n} (dt = {dt:e}); with keep_step = true \
+                     each profile time needs its own step",
+                    other / outputs.unit,
+                    t / outputs.unit
+                ),
+            ));
+        }
+        taken.push((n, t));
+    }
+    Ok(plan)
 }
 
 /// The output settings, with times converted to absolute time.

@@ -241,8 +241,13 @@ pub enum RawCourantUnit {
     #[default]
     StiffestElement,
     /// Multiples of the mass kind's closed-form critical Courant number (1 for LMM,
-    /// 1/sqrt(3) for CMM, sqrt((1 + 2 beta)/3) for AMM and RMM).
+    /// 1/sqrt(3) for CMM, sqrt((1 + 2 beta)/3) for AMM and RMM): the infinite uniform mesh's
+    /// limit, a hair below a finite mesh's exact one.
     Critical,
+    /// Multiples of the exact critical step of the case's scheme on the assembled mesh: CD's
+    /// `2/omega_max` (`CriticalStep::exact`, any mass), Park's `min_e dt_e` (`alpha_e <= 1`,
+    /// methods.md §6). With `keep_step = true`, 1.00 is that step to round-off.
+    Exact,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
@@ -266,9 +271,14 @@ pub struct RawIntegrator {
     /// Mass matrix or matrices (one case each): `lmm`, `cmm`, `amm`, `rmm` (beta = 1/2), or
     /// `amm(beta)`, `rmm(beta)`. Default `lmm`.
     pub mass: Option<Spanned<OneOrManyStrings>>,
-    /// What the `courant` values are relative to. Default `stiffest-element`.
-    #[serde(default)]
-    pub courant_unit: RawCourantUnit,
+    /// What the `courant` values are relative to: `stiffest-element` (default), `critical` or
+    /// `exact`. Applies to `courant` only.
+    pub courant_unit: Option<Spanned<RawCourantUnit>>,
+    /// Keep the step exactly as `courant` or `dt` gives it (default false: the step is shrunk
+    /// until a whole number of steps lands on every output time). When true, the end time and
+    /// each profile time snap to their nearest step (each profile time needs its own step), and
+    /// profiles, histories and references are taken at the step's actual time.
+    pub keep_step: Option<bool>,
     /// Courant number(s) relative to the stiffest element; one case each. Exactly one of
     /// `courant` and `dt`.
     pub courant: Option<Spanned<OneOrMany>>,
