@@ -687,7 +687,7 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
          (contact_extremes, beta_s up to 1e8) take the exact critical step of their scheme; between it and the \
          contact-free limit linear theory of the closed contact predicts growth, which the unilateral contact \
          bounds by opening (`contact-unstable`: the run completes). `stable` promises bounded energy: a \
-         completed run whose energy_ratio (contact: energy of the bars at the end over the initial energy; \
+         completed run whose energy_ratio (contact: the energy central difference conserves, 1/2 v^{{n-1/2}} M v^{{n+1/2}} + 1/2 u K u, left in the bars at the end over the initial energy; \
          time stepping: largest T + U over the largest energy supplied) exceeds {} is observed as `energy \
          growth`, and disagrees where stability was predicted. {agreeing} of {} rows agree with the \
          prediction; {} disagree{}. The contact stability sweep of the solver's eigenvalues against the \

@@ -12,7 +12,10 @@
 //! and the striker's loss to round-off, for all four schemes; (2) the Lagrange multiplier
 //! scheme at Co = 1 holds a bar on a wall exactly (force `Z v0` at every level of the contact
 //! `[0, 2L/c)`); the release level carries 0 instead of the mean `Z v0/2`, so the impulse is
-//! `2 m v0 - Z v0 dt/2` (the method cannot anticipate a release); (3) outputs (histories, profiles) are
+//! `2 m v0 - Z v0 dt/2` (the method cannot anticipate a release); (2b) once the bodies have
+//! separated, `kinetic_staggered + strain` is central difference's conserved energy of the free
+//! bars (Hughes 1987, §9.1): constant to round-off, while the full-step `kinetic + strain`
+//! oscillates; (3) outputs (histories, profiles) are
 //! recorded as requested; (4) bad input is refused with a typed error naming the rule, and a
 //! step above the applicable limit is refused naming dt, dt_crit and the limit that binds.
 
@@ -65,6 +68,48 @@ fn two_body_contact_impulse_equals_the_target_momentum_gain_for_every_scheme() {
         }
         let last = run.history.last().unwrap();
         assert_eq!(last.impulse, run.impulse);
+    }
+}
+
+#[test]
+fn after_separation_the_staggered_energy_is_conserved_and_the_full_step_one_is_not() {
+    let problem = fig5(40);
+    for scheme in schemes(&problem) {
+        // Co = 0.5: below every scheme's limit (as in the impulse test above).
+        let dt = 0.5 / 40.0;
+        let run = ContactIntegrator::new(dt, scheme)
+            .run(&problem, 800, &ContactRequest::default())
+            .unwrap();
+        // The last contact level, then free flight.
+        let last_active = run.history.iter().rposition(|s| s.active).unwrap();
+        let free = &run.history[last_active + 2..];
+        assert!(
+            free.len() > 100,
+            "{}: too short a free flight",
+            scheme.label()
+        );
+        let conserved = |s: &courant_solver::contact::ContactSample| s.kinetic_staggered + s.strain;
+        let full = |s: &courant_solver::contact::ContactSample| s.kinetic + s.strain;
+        let spread = |f: &dyn Fn(&courant_solver::contact::ContactSample) -> f64| {
+            let (lo, hi) = free
+                .iter()
+                .map(f)
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), e| {
+                    (lo.min(e), hi.max(e))
+                });
+            (hi - lo) / hi
+        };
+        let label = scheme.label();
+        assert!(
+            spread(&conserved) < 1e-13,
+            "{label}: conserved energy varies {:e}",
+            spread(&conserved)
+        );
+        assert!(
+            spread(&full) > 1e-6,
+            "{label}: full-step energy constant {:e}",
+            spread(&full)
+        );
     }
 }
 
