@@ -3,15 +3,16 @@
 //! A baseline is either a previous run's output directory, laid out as `courant run --out DIR`
 //! writes it (`DIR/<scene>/<file>.csv`), or a previous *report* (`courant report --out DIR`:
 //! `DIR/index.md` beside `DIR/<scene>/`), which keeps only each scene's deterministic tables
-//! (`summary.csv` without wall times, `norms.csv`, `expectations.csv`, spectra, dispersion and
-//! stability tables) and not the per-case profiles, histories and energy logs ([`BaselineKind`]).
+//! ([`REPORT_TABLES`]: the summary without wall times, norms, expectations, dispersion and contact
+//! stability tables) and not the per-case profiles, histories, energy logs and spectra
+//! ([`BaselineKind`]).
 //! Every fresh file of a scene is compared with the baseline file of the same name, cell by cell,
 //! under the rule [`Tolerances::rule_for`] picks for its column; columns are matched by name (in
-//! any order), and ignored columns (wall times) may be present on one side only. A file missing on either side
-//! (except a fresh file a report does not keep, which is reported as not compared), a changed
-//! header, a changed row count or a cell beyond its tolerance fails the file. The report keeps
-//! the largest change of every column (absolute and relative) so that a passing comparison still
-//! says how close it came.
+//! any order), and ignored columns (wall times) may be present on one side only. A file missing
+//! on either side (except a fresh file a report does not keep, which is reported as not
+//! compared), a changed header, a changed row count or a cell beyond its tolerance fails the
+//! file. The report keeps the largest change of every column (absolute and relative) so that a
+//! passing comparison still says how close it came.
 
 use std::path::Path;
 use thiserror::Error;
@@ -28,14 +29,29 @@ pub enum BaselineKind {
     Report,
 }
 
-/// The scene tables a report keeps (`courant report` writes each scene's deterministic tables
-/// under these names); a fresh file of another name is not kept by a report baseline.
+/// The names of the scene tables a report keeps: `courant report` writes each scene's
+/// deterministic tables under these names (and no others), and a report baseline compares them.
+pub mod report_tables {
+    /// Cases (wall times dropped), or the spectra of a spectrum scene, or the contact runs.
+    pub const SUMMARY: &str = "summary.csv";
+    /// Norms per case and profile time.
+    pub const NORMS: &str = "norms.csv";
+    /// Phase speeds of a dispersion scene.
+    pub const DISPERSION: &str = "dispersion.csv";
+    /// A contact stability sweep.
+    pub const STABILITY: &str = "stability.csv";
+    /// The expectation verdicts.
+    pub const EXPECTATIONS: &str = "expectations.csv";
+}
+
+/// Every name of [`report_tables`]; a fresh file of another name is not kept by a report
+/// baseline.
 pub const REPORT_TABLES: &[&str] = &[
-    "summary.csv",
-    "norms.csv",
-    "dispersion.csv",
-    "stability.csv",
-    "expectations.csv",
+    report_tables::SUMMARY,
+    report_tables::NORMS,
+    report_tables::DISPERSION,
+    report_tables::STABILITY,
+    report_tables::EXPECTATIONS,
 ];
 
 impl BaselineKind {
@@ -142,11 +158,12 @@ impl ColumnRule {
     pub const GRAMMAR: &'static str = "must be COLUMN=RULE with RULE one of ignore, exact, rel:REL[:ABS], peak:REL[:ABS] (REL, ABS finite numbers >= 0)";
 
     /// Parse `COLUMN=RULE` (`courant check --column`): `ignore`, `exact`, `rel:REL[:ABS]`
-    /// (`|a - b| <= max(ABS, REL |b|)`) or `peak:REL[:ABS]` (`|a - b| <= max(ABS, REL peak)`);
-    /// `ABS` defaults to `default_abs`.
+    /// (`|a - b| <= max(ABS, REL |b|)`, `ABS` defaulting to `default_abs`) or `peak:REL[:ABS]`
+    /// (`|a - b| <= max(ABS, REL peak)`, `ABS` defaulting to `default_peak_abs`).
     pub fn parse_override(
         spec: &str,
         default_abs: f64,
+        default_peak_abs: f64,
     ) -> Result<(String, ColumnRule), ToleranceError> {
         let bad = || ToleranceError {
             flag: "--column",
@@ -182,7 +199,7 @@ impl ColumnRule {
             },
             ("peak", [rel]) => ColumnRule::PeakRelative {
                 rel: *rel,
-                abs: default_abs,
+                abs: default_peak_abs,
             },
             ("peak", [rel, abs]) => ColumnRule::PeakRelative {
                 rel: *rel,
@@ -199,9 +216,10 @@ impl ColumnRule {
 /// For the column named `c` of a file, the first rule that applies wins:
 ///
 /// 0. the rule given for `c` in [`overrides`](Self::overrides) (`courant check --column
-///    c=RULE`, see [`ColumnRule::parse`]);
+///    c=RULE`, see [`ColumnRule::parse_override`]);
 /// 1. **ignored** when `c` is in [`ignored_columns`](Self::ignored_columns) (`wall_time_s`) or
-///    ends in one of [`ignored_suffixes`](Self::ignored_suffixes) (`_time_s`: times in seconds; `beta_s` and other `_s` names are compared);
+///    ends in one of [`ignored_suffixes`](Self::ignored_suffixes) (`_time_s`: times in seconds;
+///    `beta_s` and other `_s` names are compared);
 /// 2. **exact** when `c` is in [`exact_columns`](Self::exact_columns) (the integer columns
 ///    `element, node, step, steps, N, mode, active`);
 /// 3. **peak-relative** when the file is a stress profile (`<case>.csv`: its header has every
@@ -327,8 +345,9 @@ pub struct ColumnChange {
     pub peak: Option<f64>,
     /// Largest `|a - b|` over the numeric cells.
     pub max_abs: f64,
-    /// Largest `|a - b| / scale` (`scale = |b|`, or the peak); infinite when a cell changed
-    /// from exactly zero (scale 0).
+    /// Largest `|a - b| / scale` (`scale = |b|`, or the peak) over the cells with a nonzero
+    /// scale: a cell whose baseline is exactly 0 (e.g. a report's value stored as 0 below its
+    /// 1e-12 floor) has no relative change and is judged by the absolute floor alone.
     pub max_rel: f64,
     /// Cells beyond tolerance (including changed text).
     pub beyond: usize,
@@ -698,13 +717,7 @@ fn compare_column<'a>(
             }
             ColumnRule::Exact | ColumnRule::Ignored | ColumnRule::Text => (b.abs(), 0.0),
         };
-        let relative = if diff == 0.0 {
-            0.0
-        } else if scale > 0.0 {
-            diff / scale
-        } else {
-            f64::INFINITY
-        };
+        let relative = if scale > 0.0 { diff / scale } else { 0.0 };
         change.max_abs = change.max_abs.max(diff);
         change.max_rel = change.max_rel.max(relative);
         if diff > allowed {
@@ -877,7 +890,7 @@ mod tests {
     #[test]
     fn overrides_win_and_parse_with_named_errors() {
         let mut t = Tolerances::default();
-        let (c, r) = ColumnRule::parse_override("stress=rel:1e-6", 1e-12).unwrap();
+        let (c, r) = ColumnRule::parse_override("stress=rel:1e-6", 1e-12, 1e-12).unwrap();
         assert_eq!(c, "stress");
         assert_eq!(
             r,
@@ -888,11 +901,11 @@ mod tests {
         );
         t.overrides.push((c, r));
         t.overrides
-            .push(ColumnRule::parse_override("wall_time_s=exact", 0.0).unwrap());
+            .push(ColumnRule::parse_override("wall_time_s=exact", 0.0, 0.0).unwrap());
         t.overrides
-            .push(ColumnRule::parse_override("x=peak:1e-3:1e-8", 0.0).unwrap());
+            .push(ColumnRule::parse_override("x=peak:1e-3:1e-8", 0.0, 0.0).unwrap());
         t.overrides
-            .push(ColumnRule::parse_override(" l1 = ignore ", 0.0).unwrap());
+            .push(ColumnRule::parse_override(" l1 = ignore ", 0.0, 0.0).unwrap());
         assert_eq!(t.rule_for(true, "stress"), r);
         assert_eq!(t.rule_for(false, "wall_time_s"), ColumnRule::Exact);
         assert_eq!(
@@ -903,6 +916,16 @@ mod tests {
             }
         );
         assert_eq!(t.rule_for(false, "l1"), ColumnRule::Ignored);
+        // Without its own ABS a peak rule takes the peak floor, a relative rule the plain one.
+        assert_eq!(
+            ColumnRule::parse_override("s=peak:1e-3", 1e-12, 1e-9)
+                .unwrap()
+                .1,
+            ColumnRule::PeakRelative {
+                rel: 1e-3,
+                abs: 1e-9
+            }
+        );
         assert!(t.describe().contains("; l1: ignored"));
         for bad in [
             "stress",
@@ -914,7 +937,7 @@ mod tests {
             "stress=relative:1",
             "stress=rel:nan",
         ] {
-            let e = ColumnRule::parse_override(bad, 0.0).unwrap_err();
+            let e = ColumnRule::parse_override(bad, 0.0, 0.0).unwrap_err();
             assert_eq!(e.flag, "--column");
             assert_eq!(e.value, bad);
             assert!(e.to_string().contains("COLUMN=RULE"), "{e}");

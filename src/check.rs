@@ -56,7 +56,7 @@ pub struct SceneCheck {
     pub baseline: Option<Vec<FileComparison>>,
     /// When the scene started running, ISO 8601 UTC.
     pub started: String,
-    /// Wall time of running and comparing the scene [s].
+    /// Wall time of running and comparing the scene, in seconds.
     pub wall_time: f64,
 }
 
@@ -78,7 +78,7 @@ pub fn check_scene(
     baseline: Option<(&Path, BaselineKind)>,
     tolerances: &Tolerances,
 ) -> Result<SceneCheck, RunError> {
-    let started = crate::report::date();
+    let started = crate::clock::date();
     let clock = std::time::Instant::now();
     let outcome = crate::run_scene(scene)?;
     let files = crate::results::scene_files(&outcome);
@@ -148,6 +148,8 @@ pub struct CheckReport {
     pub baseline: Option<(PathBuf, BaselineKind)>,
     /// The tolerance rules of the baseline comparison.
     pub tolerances: Tolerances,
+    /// Wall time of the whole check (scenes run in parallel), in seconds.
+    pub wall_time: f64,
 }
 
 /// Counts of checks.
@@ -170,6 +172,7 @@ impl CheckReport {
         baseline: Option<&Path>,
         tolerances: Tolerances,
     ) -> Result<CheckReport, (String, RunError)> {
+        let clock = std::time::Instant::now();
         let baseline = baseline.map(|root| (root.to_path_buf(), BaselineKind::detect(root)));
         let base = baseline
             .as_ref()
@@ -187,7 +190,33 @@ impl CheckReport {
             scenes,
             baseline,
             tolerances,
+            wall_time: clock.elapsed().as_secs_f64(),
         })
+    }
+
+    /// The `--column` overrides whose column appears in no compared file (a misspelt name
+    /// loosens nothing and must not pass silently).
+    pub fn unmatched_overrides(&self) -> Vec<&str> {
+        let seen = |name: &str| {
+            self.scenes
+                .iter()
+                .flat_map(|s| s.baseline.iter().flatten())
+                .any(|f| match &f.outcome {
+                    FileOutcome::Compared {
+                        columns, ignored, ..
+                    } => {
+                        columns.iter().any(|c| c.column == name)
+                            || ignored.iter().any(|c| c == name)
+                    }
+                    _ => false,
+                })
+        };
+        self.tolerances
+            .overrides
+            .iter()
+            .map(|(c, _)| c.as_str())
+            .filter(|c| !seen(c))
+            .collect()
     }
 
     /// True when every check holds.
@@ -327,7 +356,7 @@ impl CheckReport {
 
     /// The JUnit XML document.
     pub fn junit(&self) -> String {
-        crate::junit::render("courant check", &self.junit_suites())
+        crate::junit::render("courant check", &self.junit_suites(), self.wall_time)
     }
 }
 

@@ -10,6 +10,7 @@ pub mod baseline;
 pub mod bench_table;
 pub mod builtin;
 pub mod check;
+pub mod clock;
 pub mod contact_study;
 pub mod dispersion;
 pub mod document;

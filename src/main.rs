@@ -91,13 +91,18 @@ struct ToleranceArgs {
 }
 
 impl ToleranceArgs {
-    /// True when any tolerance was given.
-    fn given(&self) -> bool {
-        self.rel.is_some()
-            || self.abs.is_some()
-            || self.peak_rel.is_some()
-            || self.peak_abs.is_some()
-            || !self.columns.is_empty()
+    /// The first tolerance flag given, with its value, if any.
+    fn first_given(&self) -> Option<(&'static str, String)> {
+        let numbers = [
+            ("--rel", self.rel),
+            ("--abs", self.abs),
+            ("--peak-rel", self.peak_rel),
+            ("--peak-abs", self.peak_abs),
+        ];
+        numbers
+            .into_iter()
+            .find_map(|(flag, v)| v.map(|v| (flag, v.to_string())))
+            .or_else(|| self.columns.first().map(|c| ("--column", c.clone())))
     }
 
     /// The tolerances: the defaults with every given value checked and applied.
@@ -116,7 +121,8 @@ impl ToleranceArgs {
         set("--peak-rel", self.peak_rel, &mut t.peak_rel)?;
         set("--peak-abs", self.peak_abs, &mut t.peak_abs)?;
         for spec in &self.columns {
-            t.overrides.push(ColumnRule::parse_override(spec, t.abs)?);
+            t.overrides
+                .push(ColumnRule::parse_override(spec, t.abs, t.peak_abs)?);
         }
         Ok(t)
     }
@@ -165,9 +171,21 @@ fn check(
         eprintln!("error: --baseline {}: not a directory", dir.display());
         return ExitCode::from(2);
     }
-    if baseline.is_none() && tolerance_args.given() {
+    if let (None, Some((flag, value))) = (baseline, tolerance_args.first_given()) {
         eprintln!(
-            "error: --rel, --abs, --peak-rel, --peak-abs and --column set baseline tolerances: they need --baseline DIR"
+            "error: {flag} {value:?}: a baseline tolerance needs --baseline DIR (--rel, --abs, --peak-rel, --peak-abs and --column only act on a baseline comparison)"
+        );
+        return ExitCode::from(2);
+    }
+    // A report baseline keeps figures and pages beside its scene tables: writing run output over
+    // it would replace those scene directories.
+    if let (Some(base), Some(out)) = (baseline, out)
+        && courant::baseline::BaselineKind::detect(base) == courant::baseline::BaselineKind::Report
+        && same_directory(base, out)
+    {
+        eprintln!(
+            "error: --out {}: is the report baseline; run output would replace its scene directories (figures included). --out may name a run-output baseline only",
+            out.display()
         );
         return ExitCode::from(2);
     }
@@ -182,7 +200,8 @@ fn check(
         eprintln!("error: --junit {}: is a directory", file.display());
         return ExitCode::from(2);
     }
-    // Everything runs and is compared before anything is written (so --out may be the baseline).
+    // Everything runs and is compared before anything is written (so --out may be a run-output
+    // baseline).
     let report = match CheckReport::run(&scenes, baseline, tolerances) {
         Ok(report) => report,
         Err((scene, e)) => {
@@ -190,6 +209,21 @@ fn check(
             return ExitCode::from(2);
         }
     };
+    let unmatched = report.unmatched_overrides();
+    if !unmatched.is_empty() {
+        eprintln!(
+            "error: --column {}: no compared file has such a column; the rule would loosen nothing",
+            unmatched.join(", --column ")
+        );
+        return ExitCode::from(2);
+    }
+    let counts = (report.expectation_counts(), report.baseline_counts());
+    if counts.0.total == 0 && counts.1.total == 0 {
+        eprintln!(
+            "error: nothing to check: the scenes have no expectations and no --baseline was given"
+        );
+        return ExitCode::from(2);
+    }
     print!("{}", report.render());
     if let Some(out) = out {
         for scene in &report.scenes {
@@ -212,6 +246,15 @@ fn check(
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
+    }
+}
+
+/// True when `a` and `b` name the same existing directory (or the same path, when `b` does not
+/// exist yet).
+fn same_directory(a: &std::path::Path, b: &std::path::Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => a == b,
     }
 }
 

@@ -622,18 +622,6 @@ fn clean_text(s: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-
-    /// Short titles keep 20 px; a 78-character title shrinks to fit 600 px at 0.55 em per
-    /// character; nothing goes below 11 px.
-    #[test]
-    fn long_titles_shrink_to_fit() {
-        assert_eq!(title_font_size("fig1: stress at t = 0.5"), 20);
-        let long = "Fig. 2 graded bar on equal-transit-time meshes, lumped CD at Co = 1, t = 0.5 T";
-        let size = title_font_size(long);
-        assert_eq!(size, 13);
-        assert!(f64::from(size) * 0.55 * long.chars().count() as f64 <= 600.0);
-        assert_eq!(title_font_size(&"x".repeat(500)), 11);
-    }
     use super::*;
 
     #[test]
@@ -673,5 +661,17 @@ mod tests {
         assert_eq!(g(&1e-5), "1e-5");
         assert_eq!(g(&100.0), "100");
         assert_eq!(g(&2.5e6), "2.5e6");
+    }
+
+    /// Short titles keep 20 px; a 78-character title shrinks to fit 600 px at 0.55 em per
+    /// character; nothing goes below 11 px.
+    #[test]
+    fn long_titles_shrink_to_fit() {
+        assert_eq!(title_font_size("fig1: stress at t = 0.5"), 20);
+        let long = "Fig. 2 graded bar on equal-transit-time meshes, lumped CD at Co = 1, t = 0.5 T";
+        let size = title_font_size(long);
+        assert_eq!(size, 13);
+        assert!(f64::from(size) * 0.55 * long.chars().count() as f64 <= 600.0);
+        assert_eq!(title_font_size(&"x".repeat(500)), 11);
     }
 }

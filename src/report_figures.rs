@@ -144,8 +144,9 @@ fn profile_figures(
 }
 
 /// Contact force histories beside 1D wave theory, one figure per scheme or group of schemes of
-/// at most [`MAX_CASES`] cases. Diverged runs and runs that pumped energy into the bars (final
-/// energy above twice the initial) would swamp the axis: the caption names them instead.
+/// at most [`MAX_CASES`] cases. Diverged runs and runs that pumped energy into the bars (more
+/// than [`crate::stability_table::ENERGY_BAND`] times the initial energy left in them, the
+/// measure of the stability table) would swamp the axis: the caption names them instead.
 fn force_figures(
     scene: &Scene,
     outcome: &SceneOutcome,
@@ -154,10 +155,9 @@ fn force_figures(
     if outcome.contact.is_empty() {
         return;
     }
-    let (shown, unstable): (Vec<_>, Vec<_>) = outcome
-        .contact
-        .iter()
-        .partition(|c| c.diverged.is_none() && c.energy_ratio < 2.0);
+    let (shown, unstable): (Vec<_>, Vec<_>) = outcome.contact.iter().partition(|c| {
+        c.diverged.is_none() && c.energy_ratio_conserved <= crate::stability_table::ENERGY_BAND
+    });
     let keyed = shown
         .into_iter()
         .map(|c| (c.run.scheme.label().to_string(), c))
@@ -167,8 +167,9 @@ fn force_figures(
     let mut first_notes = Vec::new();
     if !unstable.is_empty() {
         first_notes.push(format!(
-            "not shown, diverged or final energy above twice the initial (see energy_ratio and \
-             status in the summary): {}",
+            "not shown, diverged or left with more than {} times the initial energy (see \
+             energy_ratio_conserved and status in the summary): {}",
+            crate::stability_table::ENERGY_BAND,
             names(unstable.iter().map(|c| c.case.as_str()))
         ));
     }

@@ -69,6 +69,16 @@ pub fn predicted(ratio: f64) -> &'static str {
     }
 }
 
+/// The predicted verdict for a step ratio against a limit that is only sufficient (Park's
+/// `alpha_e <= 1` on a graded mesh): as [`predicted`] up to the limit, `beyond bound` above it,
+/// where theory predicts nothing.
+pub fn predicted_by_bound(ratio: f64) -> &'static str {
+    match predicted(ratio) {
+        "unstable" => "beyond bound",
+        verdict => verdict,
+    }
+}
+
 /// The predicted verdict of a contact run from `dt / dt_crit` of its scheme and
 /// `dt / dt_free` of the contact-free bodies: as [`predicted`], except that a step above the
 /// contact limit but below the contact-free one is `contact-unstable` (bounded by the opening of
@@ -142,7 +152,11 @@ impl StabilityRow {
             case: r.case.clone(),
             limit: r.limit.name(),
             ratio,
-            predicted: predicted(ratio),
+            predicted: if r.limit.sufficient_only() {
+                predicted_by_bound(ratio)
+            } else {
+                predicted(ratio)
+            },
             completed: caught.is_none(),
             caught,
             steps: r.steps,
@@ -209,13 +223,15 @@ impl StabilityRow {
 
     /// Theory and run agree: a predicted-stable run completes with bounded energy, a
     /// predicted-unstable run is caught by the guard, a contact-unstable run stays bounded
-    /// (completes, whatever energy the contact pumps in); a marginal run may do either.
-    pub fn agrees(&self) -> bool {
+    /// (completes, whatever energy the contact pumps in); a marginal run may do either. `None`
+    /// beyond a sufficient bound, where nothing was predicted.
+    pub fn agrees(&self) -> Option<bool> {
         match self.predicted {
-            "stable" => self.completed && !self.energy_growth(),
-            "contact-unstable" => self.completed,
-            "unstable" => self.caught.is_some(),
-            _ => true,
+            "stable" => Some(self.completed && !self.energy_growth()),
+            "contact-unstable" => Some(self.completed),
+            "unstable" => Some(self.caught.is_some()),
+            "beyond bound" => None,
+            _ => Some(true),
         }
     }
 }
@@ -248,7 +264,12 @@ pub fn stability_table(rows: &[StabilityRow]) -> Table {
             row.steps.into(),
             row.energy_balance.into(),
             row.energy_ratio.into(),
-            if row.agrees() { "yes" } else { "no" }.into(),
+            match row.agrees() {
+                Some(true) => "yes",
+                Some(false) => "no",
+                None => "not predicted",
+            }
+            .into(),
         ]);
     }
     table
@@ -267,6 +288,10 @@ mod tests {
         assert_eq!(predicted(1.0), "marginal");
         assert_eq!(predicted(1.0 + 1e-10), "marginal");
         assert_eq!(predicted(1.01), "unstable");
+        // A sufficient bound (Park's alpha_e <= 1 on a graded mesh) predicts nothing above it.
+        assert_eq!(predicted_by_bound(0.99), "stable");
+        assert_eq!(predicted_by_bound(1.0), "marginal");
+        assert_eq!(predicted_by_bound(1.01), "beyond bound");
     }
 
     fn row(predicted: &'static str, completed: bool, energy_ratio: Option<f64>) -> StabilityRow {
@@ -294,21 +319,29 @@ mod tests {
         let growing = row("stable", true, Some(14.29));
         assert!(growing.energy_growth());
         assert_eq!(growing.observed(), "energy growth x14.290");
-        assert!(!growing.agrees());
+        assert_eq!(growing.agrees(), Some(false));
         for bounded in [Some(0.99), Some(1.104), Some(ENERGY_BAND), None] {
             let r = row("stable", true, bounded);
             assert_eq!(r.observed(), "stable", "{bounded:?}");
-            assert!(r.agrees(), "{bounded:?}");
+            assert_eq!(r.agrees(), Some(true), "{bounded:?}");
         }
         assert!(row("stable", true, Some(f64::NAN)).energy_growth());
-        assert!(row("contact-unstable", true, Some(62.6)).agrees());
-        assert!(!row("contact-unstable", false, Some(62.6)).agrees());
-        assert!(row("marginal", true, Some(29.4)).agrees());
-        assert!(row("marginal", false, None).agrees());
+        assert_eq!(
+            row("contact-unstable", true, Some(62.6)).agrees(),
+            Some(true)
+        );
+        assert_eq!(
+            row("contact-unstable", false, Some(62.6)).agrees(),
+            Some(false)
+        );
+        assert_eq!(row("marginal", true, Some(29.4)).agrees(), Some(true));
+        assert_eq!(row("marginal", false, None).agrees(), Some(true));
+        assert_eq!(row("beyond bound", true, Some(1.0)).agrees(), None);
+        assert_eq!(row("beyond bound", false, None).agrees(), None);
         let caught = row("unstable", false, Some(1e6));
         assert_eq!(caught.observed(), "diverged");
-        assert!(caught.agrees());
-        assert!(!row("unstable", true, Some(1.0)).agrees());
+        assert_eq!(caught.agrees(), Some(true));
+        assert_eq!(row("unstable", true, Some(1.0)).agrees(), Some(false));
     }
 
     fn sample(kinetic: f64, strain: f64, work: f64) -> EnergySample {

@@ -238,8 +238,9 @@ pub fn run(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
                 method,
                 setting,
                 courant: r.courant,
-                // Co_crit = Co dt_crit/dt (the summary's Co_crit column).
-                critical_courant: r.courant * r.critical.exact / r.dt,
+                // Co_crit = Co dt_crit/dt with dt_crit the limit of the case's scheme (CD:
+                // 2/omega_max; Park: alpha_e <= 1).
+                critical_courant: r.courant * r.limit.dt() / r.dt,
                 elements: r.elements,
                 steps: r.steps,
                 l1,

@@ -16,7 +16,8 @@
 //! counts); a baseline from a fresh run passes, survives round-off-sized edits and wall-time
 //! changes, and fails on a stress change beyond tolerance or a missing file, naming them; the
 //! committed report is a baseline that passes (per-case files it does not keep are JUnit
-//! `<skipped>`), a changed report column fails until `--column` loosens exactly that column; a
+//! `<skipped>`), a changed report column fails until `--column` loosens that column (a misspelt
+//! column and `--out` over a report baseline are refused); a
 //! bad scene or a bad tolerance exits 2 and writes neither the JUnit file nor the output
 //! directories.
 
@@ -362,25 +363,35 @@ fn the_committed_report_is_a_baseline_and_a_moved_report_column_fails_until_allo
         .position(|c| c == "l1")
         .unwrap();
     edit_cell(&summary, 3, l1, |x| x * (1.0 + 1e-6));
-    let out = courant(&["check", "fig1", "--baseline", s(&copy)]);
+    let check_copy = |extra: &[&str]| {
+        let mut args = vec!["check", "fig1", "--baseline", s(&copy)];
+        args.extend_from_slice(extra);
+        courant(&args)
+    };
+    let out = check_copy(&[]);
     assert_eq!(out.status.code(), Some(1), "{}", text(&out));
     let stdout = String::from_utf8(out.stdout).unwrap();
     let failed = failed_lines(&stdout);
     assert_eq!(failed.len(), 1, "{stdout}");
     assert!(failed[0].contains("summary.csv") && failed[0].contains("l1"));
-    let out = courant(&[
-        "check",
-        "fig1",
-        "--baseline",
-        s(&copy),
-        "--column",
-        "l1=rel:1e-5",
-    ]);
+    let out = check_copy(&["--column", "l1=rel:1e-5"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out));
     assert!(String::from_utf8_lossy(&out.stdout).contains("l1: relative (rel 1e-5"));
+    // A misspelt column loosens nothing: refused, not passed silently.
+    let out = check_copy(&["--column", "l1x=rel:1e-5"]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("l1x"));
+    // Run output is never written over a report baseline.
+    let before = std::fs::read_dir(copy.join("fig1")).unwrap().count();
+    let out = check_copy(&["--out", s(&copy)]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert_eq!(
+        std::fs::read_dir(copy.join("fig1")).unwrap().count(),
+        before
+    );
     // A table the report keeps but the copy lost fails.
     std::fs::remove_file(copy.join("fig1").join("norms.csv")).unwrap();
-    let out = courant(&["check", "fig1", "--baseline", s(&copy), "--rel", "1e-3"]);
+    let out = check_copy(&["--rel", "1e-3"]);
     assert_eq!(out.status.code(), Some(1), "{}", text(&out));
     std::fs::remove_dir_all(&dir).unwrap();
 }

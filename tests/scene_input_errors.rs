@@ -229,6 +229,13 @@ fn the_minimal_scene_is_valid_and_uses_the_documented_defaults() {
     "expect",
     "above max"
 )]
+#[case::park_above_alpha_one(
+    "courant = 0.5",
+    "scheme = \"park-lts\"\ncourant = 1.002\nkeep_step = true",
+    18,
+    "integrator.courant",
+    "alpha_e = dt/dt_e <= 1"
+)]
 fn bad_input_names_line_key_and_rule(
     #[case] find: &str,
     #[case] replace: &str,

@@ -86,7 +86,7 @@ fn park_at_its_own_limit_is_stable_marginal_then_caught() {
             other => panic!("case {other}"),
         };
         assert!((row.ratio - fraction).abs() <= 1e-15, "{row:?}");
-        assert!(row.agrees(), "{row:?}");
+        assert_eq!(row.agrees(), Some(true), "{row:?}");
         match fraction {
             0.99 => {
                 assert_eq!(row.predicted, "stable");
@@ -123,7 +123,7 @@ fn central_difference_at_exactly_its_critical_step_reads_marginal() {
         assert!((row.ratio - 1.0).abs() <= 1e-15, "{row:?}");
         assert_eq!(row.predicted, "marginal", "{row:?}");
         assert_eq!(r.steps, r.steps_planned, "{row:?}");
-        assert!(row.agrees());
+        assert_eq!(row.agrees(), Some(true));
     }
     // The closed-form unit does not reach the finite mesh's limit; without keep_step the plan
     // shrinks the exact step to land on the end time: neither reads marginal.
@@ -227,4 +227,40 @@ fn bad_exact_unit_and_keep_step_input_names_the_key_and_line() {
         assert_eq!(err.line, line, "{err}");
         assert!(err.message.contains(message), "{err}");
     }
+}
+
+/// Source of truth: Park's `alpha_e <= 1` is the kh = pi bound of the uniform-mesh analysis
+/// (methods.md §6), only sufficient on a graded mesh. Proves: on the `graded_1e4` bar the Park
+/// rows name the bound as sufficient, predict nothing above it (the global step at 1.01 stays
+/// bounded, local stepping diverges; both `not predicted`), while CD's exact 2/omega_max rows
+/// keep a prediction that holds.
+#[test]
+fn park_on_a_graded_mesh_is_held_to_a_sufficient_bound_only() {
+    let scene = courant::builtin::builtin_scene("graded_1e4")
+        .unwrap()
+        .unwrap();
+    let outcome = run_scene(&scene).unwrap();
+    let rows: Vec<StabilityRow> = outcome
+        .results
+        .iter()
+        .map(|r| StabilityRow::new(&scene.name, r))
+        .collect();
+    for row in &rows {
+        let above = row.case.ends_with("-co1.01");
+        if row.case.starts_with("park") {
+            assert_eq!(row.limit, "alpha_e <= 1 (sufficient)", "{row:?}");
+            if above {
+                assert_eq!(row.predicted, "beyond bound", "{row:?}");
+                assert_eq!(row.agrees(), None, "{row:?}");
+            } else {
+                assert_eq!(row.agrees(), Some(true), "{row:?}");
+            }
+        } else {
+            assert_eq!(row.limit, "2/omega_max", "{row:?}");
+            assert_eq!(row.agrees(), Some(true), "{row:?}");
+        }
+    }
+    let by_name = |name: &str| rows.iter().find(|r| r.case == name).unwrap();
+    assert!(by_name("park-global-co1.01").completed);
+    assert!(!by_name("park-lts-co1.01").completed);
 }

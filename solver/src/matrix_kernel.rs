@@ -106,7 +106,7 @@ impl MatrixCentralDifference {
 
     /// Advance one step; `forces` lists `(node, F^{n+1})`, sorted, each node once.
     ///
-    /// Every pass is a straight sweep; the energy sums run in [`LANES`] independent partial
+    /// Every pass is a straight sweep; the energy sums run in `LANES` (8) independent partial
     /// sums (node or element `i` adds to lane `i % LANES`, a fixed order, so the result is
     /// deterministic) so that no pass waits on the latency of one long chain of additions.
     pub fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy {

@@ -403,6 +403,20 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             .iter()
             .flat_map(|s| stepping.masses.iter().map(move |m| (s, m)))
         {
+            // The scheme's own limit on this mesh, once per (scheme, mass), when the Courant
+            // numbers are multiples of it: CD's 2/omega_max (a Sturm bisection), Park's
+            // min_e h_e/c_e.
+            let exact_limit = match (stepping.by_courant, stepping.unit, park) {
+                (true, RawCourantUnit::Exact, Some(_)) => Some(element_dt),
+                (true, RawCourantUnit::Exact, None) => {
+                    let operator =
+                        courant_solver::MassOperator::new(&model, mass).map_err(|e| {
+                            src.error(Some(stepping.span.clone()), stepping.key, e.to_string())
+                        })?;
+                    Some(CriticalStep::of(&model, mass, &operator).exact)
+                }
+                _ => None,
+            };
             for &value in &stepping.values {
                 let mut case_name = String::new();
                 if geometry.element_counts.len() > 1 {
@@ -432,15 +446,16 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                     (true, RawCourantUnit::Critical) => {
                         value * mass.critical_courant() * element_dt
                     }
-                    (true, RawCourantUnit::Exact) => {
-                        let operator = courant_solver::MassOperator::new(&model, mass)
-                            .map_err(|e| fail(e.to_string()))?;
-                        let critical = CriticalStep::of(&model, mass, &operator);
-                        value * SchemeLimit::of(park.as_ref(), &model, &critical).dt()
-                    }
+                    (true, RawCourantUnit::Exact) => value * exact_limit.unwrap_or(f64::NAN),
                 };
                 let plan = if stepping.keep_step {
-                    keep_step_plan(src, &outputs, nominal_dt, &case_name)?
+                    keep_step_plan(
+                        src,
+                        &outputs,
+                        nominal_dt,
+                        &case_name,
+                        (stepping.span.clone(), stepping.key),
+                    )?
                 } else {
                     courant_solver::plan(nominal_dt, &outputs.profile_times, outputs.end_time)
                         .map_err(|e| fail(e.to_string()))?
@@ -478,6 +493,19 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                     energy_every: outputs.energy_every.unwrap_or(thinned),
                 };
                 let limit = integrator.limit(&model, &critical);
+                // Park's alpha_e <= 1 (methods.md §6), refused here with the key and line rather
+                // than when the run starts.
+                if park.is_some()
+                    && !stepping.stability.allow_unstable
+                    && plan.dt > limit.dt() * (1.0 + courant_solver::time_step::ROUNDING_SLACK)
+                {
+                    return Err(fail(format!(
+                        "Park's scheme needs alpha_e = dt/dt_e <= 1 in every element; element {stiffest} has alpha = {:.6} \
+                         (dt = {:e}, dt_e = {element_dt:e}): lower the Courant number or set allow_unstable = true",
+                        plan.dt / element_dt,
+                        plan.dt
+                    )));
+                }
                 cases.push(Case {
                     name: case_name,
                     model: model.clone(),
@@ -1207,14 +1235,21 @@ fn keep_step_plan(
     outputs: &Outputs,
     dt: f64,
     case_name: &str,
+    stepping: (Range<usize>, &'static str),
 ) -> Result<TimePlan, SceneError> {
-    let end_span = outputs.raw.end_time.as_ref().map(|e| e.span());
+    // Blame the end time where the file sets it, else the step (courant or dt) that ran into it.
+    let (span, key) = match outputs.raw.end_time.as_ref() {
+        Some(end) => (end.span(), "output.end_time"),
+        None => stepping,
+    };
     let plan = courant_solver::plan_keeping_step(dt, &outputs.profile_times, outputs.end_time)
         .map_err(|e| {
             src.error(
-                end_span,
-                "output.end_time",
-                format!("case {case_name}: {e}"),
+                Some(span),
+                key,
+                format!(
+                    "case {case_name}: {e} (times in absolute units, not the scene's time_unit)"
+                ),
             )
         })?;
     let mut taken: Vec<(usize, f64)> = Vec::with_capacity(plan.output_steps.len());

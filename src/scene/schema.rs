@@ -448,6 +448,8 @@ pub enum RawContactCourantUnit {
     /// Multiples of the exact critical step of the case's scheme: `2/omega_max` of the
     /// contact-active pencil for CD with (bi)penalty, `min(dt_free, sqrt((m_c + m_p)/k_s))` for
     /// the predictor-corrector, the contact-free step for the Lagrange multiplier (methods.md §7).
+    /// `"exact"` is accepted too, the word `[integrator]` uses for a scheme's exact limit.
+    #[serde(alias = "exact")]
     Critical,
 }
 
