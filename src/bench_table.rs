@@ -131,26 +131,20 @@ mod tests {
     #[test]
     fn reads_criterion_median_and_applies_bandwidth_model() {
         let dir = std::env::temp_dir().join(format!("courant-bench-table-{}", std::process::id()));
-        let leaf = dir.join("lumped_cd_step/step/999/new");
-        std::fs::create_dir_all(&leaf).unwrap();
-        std::fs::write(
-            leaf.join("estimates.json"),
-            r#"{"median":{"point_estimate":500.0}}"#,
-        )
-        .unwrap();
+        let median = |bench: &str, ns: f64| {
+            let leaf = dir.join(bench).join("new");
+            std::fs::create_dir_all(&leaf).unwrap();
+            let json = format!(r#"{{"median":{{"point_estimate":{ns}}}}}"#);
+            std::fs::write(leaf.join("estimates.json"), json).unwrap();
+        };
+        median("lumped_cd_step/step/999", 500.0);
         let table = bench_table(&dir).expect("one result");
         let csv = table.to_csv(crate::table::Precision::RoundTrip);
         let row = csv.lines().nth(1).unwrap();
         assert_eq!(row, "lumped_cd_step/step,999,500,0.5,48,96,,");
         // A triad of 999 elements in 125 ns moves 24 * 999 / 125 GB/s; the step's 96 GB/s is
         // that fraction of it.
-        let leaf = dir.join("memory_triad/triad/999/new");
-        std::fs::create_dir_all(&leaf).unwrap();
-        std::fs::write(
-            leaf.join("estimates.json"),
-            r#"{"median":{"point_estimate":125.0}}"#,
-        )
-        .unwrap();
+        median("memory_triad/triad/999", 125.0);
         let csv = bench_table(&dir)
             .unwrap()
             .to_csv(crate::table::Precision::RoundTrip);

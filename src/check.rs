@@ -177,15 +177,12 @@ impl CheckReport {
         let base = baseline
             .as_ref()
             .map(|(root, kind)| (root.as_path(), *kind));
-        let checked: Vec<Result<SceneCheck, RunError>> = scenes
-            .par_iter()
-            .map(|s| check_scene(s, base, &tolerances))
-            .collect();
-        let scenes = checked
-            .into_iter()
-            .zip(scenes)
-            .map(|(c, s)| c.map_err(|e| (s.name.clone(), e)))
-            .collect::<Result<Vec<_>, _>>()?;
+        let scenes = crate::run::in_order(
+            scenes
+                .par_iter()
+                .map(|s| check_scene(s, base, &tolerances).map_err(|e| (s.name.clone(), e)))
+                .collect(),
+        )?;
         Ok(CheckReport {
             scenes,
             baseline,

@@ -270,12 +270,13 @@ pub fn run_sweep(sweep: &StabilitySweep) -> Result<SweepResult, InputError> {
         .iter()
         .flat_map(|&ratio| sweep.beta_s.iter().map(move |&beta_s| (ratio, beta_s)))
         .collect();
-    let rows: Vec<Result<SweepRow, InputError>> = grid
-        .par_iter()
-        .map(|&(ratio, beta_s)| sweep_row(&problem, ratio, beta_s))
-        .collect();
+    let rows = crate::run::in_order(
+        grid.par_iter()
+            .map(|&(ratio, beta_s)| sweep_row(&problem, ratio, beta_s))
+            .collect(),
+    )?;
     Ok(SweepResult {
-        rows: rows.into_iter().collect::<Result<_, _>>()?,
+        rows,
         wall_time: started.elapsed(),
     })
 }

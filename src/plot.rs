@@ -214,19 +214,14 @@ pub fn line_chart(axes: &Axes, series: &[Series]) -> Result<String, PlotError> {
     let x_range = axis_range(all().map(|p| p.0), axes.log_x);
     let y_range = axis_range(all().map(|p| p.1), axes.log_y);
 
+    let (legend, y_range) = legend_place(axes, &prepared, x_range, y_range);
     let ctx = Ctx {
         axes,
         title: &title,
         series: &prepared,
         x_span: x_range.1 - x_range.0,
         y_span: y_range.1 - y_range.0,
-        legend: SeriesLabelPosition::UpperRight,
-    };
-    let (legend, y_range) = legend_place(&ctx, x_range, y_range);
-    let ctx = Ctx {
         legend,
-        y_span: y_range.1 - y_range.0,
-        ..ctx
     };
     let (x, y) = (x_range.0..x_range.1, y_range.0..y_range.1);
     let log = |r: std::ops::Range<f64>| {
@@ -297,11 +292,12 @@ const PLOT_AREA_PX: (f64, f64) = (560.0, 300.0);
 /// data, the y range is extended downwards (by the box height, in the axis' own scale) so the
 /// legend sits in the lower right over empty space instead of over a curve.
 fn legend_place(
-    ctx: &Ctx<'_>,
+    axes: &Axes,
+    series: &[Prepared],
     x_range: (f64, f64),
     y_range: (f64, f64),
 ) -> (SeriesLabelPosition, (f64, f64)) {
-    let entries: Vec<&Prepared> = ctx.series.iter().filter(|s| s.in_legend).collect();
+    let entries: Vec<&Prepared> = series.iter().filter(|s| s.in_legend).collect();
     let longest = entries
         .iter()
         .map(|s| s.name.chars().count())
@@ -309,7 +305,7 @@ fn legend_place(
         .unwrap_or(0);
     let box_w = ((longest as f64 * 7.0 + 50.0) / PLOT_AREA_PX.0).clamp(0.2, 0.95);
     let box_h = ((entries.len() as f64 * 20.0 + 12.0) / PLOT_AREA_PX.1).clamp(0.1, 0.9);
-    let counts = corner_counts(ctx, x_range, y_range, box_w, box_h);
+    let counts = corner_counts(axes, series, x_range, y_range, box_w, box_h);
     let corners = [
         SeriesLabelPosition::UpperRight,
         SeriesLabelPosition::UpperLeft,
@@ -322,7 +318,7 @@ fn legend_place(
     }
     // Data fills [0, 1] of the axis; give the legend the band [0, box_h] below it.
     let grow = box_h / (1.0 - box_h);
-    let lower = if ctx.axes.log_y {
+    let lower = if axes.log_y {
         let (lo, hi) = (y_range.0.log10(), y_range.1.log10());
         10f64.powf(lo - (hi - lo) * grow)
     } else {
@@ -334,7 +330,8 @@ fn legend_place(
 /// Data points (lines sampled between their points) inside a `box_w x box_h` box (fractions of
 /// the plotting area) at each corner: upper right, upper left, lower right, lower left.
 fn corner_counts(
-    ctx: &Ctx<'_>,
+    axes: &Axes,
+    series: &[Prepared],
     x_range: (f64, f64),
     y_range: (f64, f64),
     box_w: f64,
@@ -347,12 +344,8 @@ fn corner_counts(
             (v - lo) / (hi - lo)
         }
     };
-    let to_unit = |&(x, y): &(f64, f64)| {
-        (
-            unit(x, x_range, ctx.axes.log_x),
-            unit(y, y_range, ctx.axes.log_y),
-        )
-    };
+    let to_unit =
+        |&(x, y): &(f64, f64)| (unit(x, x_range, axes.log_x), unit(y, y_range, axes.log_y));
     let mut counts = [0usize; 4];
     let mut count = |(u, v): (f64, f64)| {
         let right = u > 1.0 - box_w;
@@ -366,7 +359,7 @@ fn corner_counts(
             counts[i] += usize::from(hit);
         }
     };
-    for s in ctx.series {
+    for s in series {
         for seg in &s.segments {
             let pts: Vec<(f64, f64)> = seg.iter().map(to_unit).collect();
             pts.iter().copied().for_each(&mut count);

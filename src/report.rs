@@ -459,7 +459,8 @@ pub fn run_study(study: &ConvergenceStudy) -> Result<ConvergenceResult, String> 
                 wall_time: r.wall_time.as_secs_f64(),
             })
         })
-        .collect::<Result<Vec<_>, String>>()?;
+        .collect::<Vec<Result<_, String>>>();
+    let levels = crate::run::in_order(levels)?;
     Ok(ConvergenceResult {
         study: study.clone(),
         levels,
@@ -486,7 +487,7 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
         indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
-    let outcomes: Vec<(SceneOutcome, f64)> = scenes
+    let outcomes = scenes
         .par_iter()
         .map(|scene| {
             let t0 = Instant::now();
@@ -497,8 +498,9 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
             progress.inc(1);
             outcome
         })
-        .collect::<Result<_, _>>()?;
-    let convergence: Vec<ConvergenceResult> = studies
+        .collect::<Vec<Result<(SceneOutcome, f64), String>>>();
+    let outcomes = crate::run::in_order(outcomes)?;
+    let convergence = studies
         .par_iter()
         .map(|study| {
             let result = run_study(study);
@@ -506,13 +508,15 @@ pub fn generate(scenes: &[Scene], studies: &[ConvergenceStudy]) -> Result<Report
             progress.inc(1);
             result
         })
-        .collect::<Result<_, _>>()?;
+        .collect::<Vec<Result<ConvergenceResult, String>>>();
+    let convergence = crate::run::in_order(convergence)?;
     progress.finish_and_clear();
-    let work: Vec<Vec<crate::work_precision::WorkPoint>> =
+    let work = crate::run::in_order(
         crate::work_precision::WORK_PRECISION_STUDIES
             .par_iter()
             .map(crate::work_precision::run)
-            .collect::<Result<_, _>>()?;
+            .collect(),
+    )?;
     let total = started.elapsed().as_secs_f64();
 
     let mut files = Vec::new();

@@ -125,11 +125,7 @@ fn profile_figures(
             let part_title = numbered(&title, j, parts.len());
             let axes = Axes::new(part_title.clone(), "x", "stress");
             if let Some(svg) = chart_naming_omissions(&axes, cases, exact, &mut notes) {
-                let file = if parts.len() == 1 {
-                    format!("profile_{k}.svg")
-                } else {
-                    format!("profile_{k}_{}.svg", j + 1)
-                };
+                let file = part_file(&format!("profile_{k}"), j, parts.len());
                 let caption = caption(
                     &part_title,
                     part.iter().map(|r| r.case.as_str()),
@@ -219,11 +215,7 @@ fn force_figures(
         let part_title = numbered(&title, j, parts.len());
         let axes = Axes::new(part_title.clone(), "t", "force");
         if let Some(svg) = chart_naming_omissions(&axes, cases, exact, &mut notes) {
-            let file = if parts.len() == 1 {
-                "force.svg".to_string()
-            } else {
-                format!("force_{}.svg", j + 1)
-            };
+            let file = part_file("force", j, parts.len());
             let caption = caption(
                 &part_title,
                 part.iter().map(|c| c.case.as_str()),
@@ -384,6 +376,15 @@ fn pack(sizes: &[usize], capacity: usize) -> Vec<usize> {
         }
     }
     bins.into_iter().map(|b| b.0).collect()
+}
+
+/// `stem.svg`, or `stem_<j+1>.svg` when the figure is one of several.
+fn part_file(stem: &str, j: usize, parts: usize) -> String {
+    if parts > 1 {
+        format!("{stem}_{}.svg", j + 1)
+    } else {
+        format!("{stem}.svg")
+    }
 }
 
 /// `title (j/n)` when a figure is one of several.

@@ -89,8 +89,9 @@ pub fn energy_table(result: &CaseResult) -> Table {
     table
 }
 
-/// One row per case: the scheme that ran (Park's variant and theta named), cost (dt, steps, wall time) beside accuracy (worst norms over the profile
-/// times, energy balance) and how the run ended. `dt_crit` is the exact critical step the run
+/// One row per case: the scheme that ran (Park's variant and theta named), cost (dt, steps, wall
+/// time) beside accuracy (worst norms over the profile times, energy balance) and how the run
+/// ended. `dt_crit` is the exact critical step the run
 /// was checked against; the element (Fried) and nodal Gershgorin estimates stand beside it.
 pub fn summary_table(results: &[CaseResult]) -> Table {
     let mut table = Table::new(&[

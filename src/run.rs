@@ -382,7 +382,8 @@ pub fn run_scene(scene: &crate::Scene) -> Result<SceneOutcome, RunError> {
     Ok(outcome)
 }
 
-/// The values in order, or the first error in order (not whichever thread failed first).
-fn in_order<T, E>(results: Vec<Result<T, E>>) -> Result<Vec<T>, E> {
+/// The values in order, or the first error in order (not whichever thread failed first): collect
+/// a parallel map into a `Vec` of results first, then this.
+pub(crate) fn in_order<T, E>(results: Vec<Result<T, E>>) -> Result<Vec<T>, E> {
     results.into_iter().collect()
 }

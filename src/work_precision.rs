@@ -216,7 +216,7 @@ pub fn run(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
         .iter()
         .flat_map(|(setting, scene)| scene.cases.iter().map(move |c| (*setting, c)))
         .collect();
-    cases
+    let points = cases
         .par_iter()
         .map(|&(setting, case)| {
             let r = crate::run_case(case).map_err(|e| e.to_string())?;
@@ -247,9 +247,8 @@ pub fn run(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, String> {
                 wall_time: r.wall_time.as_secs_f64(),
             })
         })
-        .collect::<Vec<Result<_, String>>>()
-        .into_iter()
-        .collect()
+        .collect::<Vec<Result<_, String>>>();
+    crate::run::in_order(points)
 }
 
 /// A contact study: one derived scene per striker mesh and variant, every case of each;
@@ -263,7 +262,7 @@ fn run_contact(
         .iter()
         .flat_map(|(setting, scene)| scene.contact.iter().map(move |c| (*setting, c)))
         .collect();
-    cases
+    let points = cases
         .par_iter()
         .map(|&(setting, case)| {
             let r = crate::contact_study::run_contact(case).map_err(|e| e.to_string())?;
@@ -289,9 +288,8 @@ fn run_contact(
                 wall_time: r.wall_time.as_secs_f64(),
             })
         })
-        .collect::<Vec<Result<_, String>>>()
-        .into_iter()
-        .collect()
+        .collect::<Vec<Result<_, String>>>();
+    crate::run::in_order(points)
 }
 
 /// Deterministic table: `method, Co, Co_crit, N, steps, node_steps, l1` (`Co` relative to the

@@ -228,39 +228,3 @@ fn bad_exact_unit_and_keep_step_input_names_the_key_and_line() {
         assert!(err.message.contains(message), "{err}");
     }
 }
-
-/// Source of truth: Park's `alpha_e <= 1` is the kh = pi bound of the uniform-mesh analysis
-/// (methods.md §6), only sufficient on a graded mesh. Proves: on the `graded_1e4` bar the Park
-/// rows name the bound as sufficient, predict nothing above it (the global step at 1.01 stays
-/// bounded, local stepping diverges; both `not predicted`), while CD's exact 2/omega_max rows
-/// keep a prediction that holds.
-#[test]
-fn park_on_a_graded_mesh_is_held_to_a_sufficient_bound_only() {
-    let scene = courant::builtin::builtin_scene("graded_1e4")
-        .unwrap()
-        .unwrap();
-    let outcome = run_scene(&scene).unwrap();
-    let rows: Vec<StabilityRow> = outcome
-        .results
-        .iter()
-        .map(|r| StabilityRow::new(&scene.name, r))
-        .collect();
-    for row in &rows {
-        let above = row.case.ends_with("-co1.01");
-        if row.case.starts_with("park") {
-            assert_eq!(row.limit, "alpha_e <= 1 (sufficient)", "{row:?}");
-            if above {
-                assert_eq!(row.predicted, "beyond bound", "{row:?}");
-                assert_eq!(row.agrees(), None, "{row:?}");
-            } else {
-                assert_eq!(row.agrees(), Some(true), "{row:?}");
-            }
-        } else {
-            assert_eq!(row.limit, "2/omega_max", "{row:?}");
-            assert_eq!(row.agrees(), Some(true), "{row:?}");
-        }
-    }
-    let by_name = |name: &str| rows.iter().find(|r| r.case == name).unwrap();
-    assert!(by_name("park-global-co1.01").completed);
-    assert!(!by_name("park-lts-co1.01").completed);
-}

@@ -10,25 +10,31 @@
 //!
 //! Proves: every row of the report's "stability at the extremes" table agrees with theory:
 //! the 8 runs at or below the critical step complete every planned step, the 4 runs at 1.01 are
-//! stopped by the divergence guard long before their planned end, with the step and node.
+//! stopped by the divergence guard long before their planned end, with the step and node; on the
+//! graded_1e4 bar Park's alpha_e <= 1 is named a sufficient bound and predicts nothing above it;
+//! the contact rows agree except the 4 that gain energy.
 
 use courant::report::builtin_scenes;
-use courant::run::run_scene;
+use courant::run::{SceneOutcome, run_scene};
 use courant::stability_table::{StabilityRow, stability_table};
+
+/// A built-in scene's run and the stability rows of its time-stepping cases.
+fn time_stepping_rows(name: &str) -> (SceneOutcome, Vec<StabilityRow>) {
+    let scene = courant::builtin::builtin_scene(name)
+        .expect("built-in scene")
+        .unwrap();
+    let outcome = run_scene(&scene).unwrap();
+    let rows = outcome
+        .results
+        .iter()
+        .map(|r| StabilityRow::new(name, r))
+        .collect();
+    (outcome, rows)
+}
 
 #[test]
 fn stability_extremes_rows_agree_with_the_critical_step() {
-    let scene = builtin_scenes()
-        .unwrap()
-        .into_iter()
-        .find(|s| s.name == "stability_extremes")
-        .expect("built-in scene");
-    let outcome = run_scene(&scene).unwrap();
-    let rows: Vec<StabilityRow> = outcome
-        .results
-        .iter()
-        .map(|r| StabilityRow::new(&scene.name, r))
-        .collect();
+    let (outcome, rows) = time_stepping_rows("stability_extremes");
     assert_eq!(rows.len(), 12);
     let unstable: Vec<&StabilityRow> = rows.iter().filter(|r| r.predicted == "unstable").collect();
     let stable = rows.iter().filter(|r| r.predicted == "stable").count();
@@ -130,4 +136,32 @@ fn contact_extremes_rows_agree_with_the_critical_steps() {
             assert!(ratio > 10.0, "{}: energy ratio {ratio}", row.case);
         }
     }
+}
+
+/// Source of truth: Park's `alpha_e <= 1` is the kh = pi bound of the uniform-mesh analysis
+/// (methods.md §6), only sufficient on a graded mesh. Proves: on the `graded_1e4` bar the Park
+/// rows name the bound as sufficient, predict nothing above it (the global step at 1.01 stays
+/// bounded, local stepping diverges; both `not predicted`), while CD's exact 2/omega_max rows
+/// keep a prediction that holds.
+#[test]
+fn park_on_a_graded_mesh_is_held_to_a_sufficient_bound_only() {
+    let (_, rows) = time_stepping_rows("graded_1e4");
+    for row in &rows {
+        let above = row.case.ends_with("-co1.01");
+        if row.case.starts_with("park") {
+            assert_eq!(row.limit, "alpha_e <= 1 (sufficient)", "{row:?}");
+            if above {
+                assert_eq!(row.predicted, "beyond bound", "{row:?}");
+                assert_eq!(row.agrees(), None, "{row:?}");
+            } else {
+                assert_eq!(row.agrees(), Some(true), "{row:?}");
+            }
+        } else {
+            assert_eq!(row.limit, "2/omega_max", "{row:?}");
+            assert_eq!(row.agrees(), Some(true), "{row:?}");
+        }
+    }
+    let by_name = |name: &str| rows.iter().find(|r| r.case == name).unwrap();
+    assert!(by_name("park-global-co1.01").completed);
+    assert!(!by_name("park-lts-co1.01").completed);
 }

@@ -215,8 +215,9 @@ impl CentralDifference {
         }
     }
 
-    /// Refuse `dt` above the exact critical step (with the relative allowance
-    /// [`crate::time_step::ROUNDING_SLACK`] of the time plan, so that Co = 1 on a free-free
+    /// Refuse `dt` above the exact critical step, and for Park's scheme above its own limit
+    /// `alpha_e <= 1` too ([`SchemeLimit::Park`]), with the relative allowance
+    /// [`crate::time_step::ROUNDING_SLACK`] of the time plan (so that Co = 1 on a free-free
     /// uniform bar, where `dt = dt_crit`, is accepted after the plan's rounding).
     pub fn check_stability(&self, model: &Model) -> Result<CriticalStep, RunError> {
         let operator = MassOperator::new(model, self.mass)?;
@@ -235,12 +236,17 @@ impl CentralDifference {
         operator: &MassOperator,
     ) -> Result<CriticalStep, UnstableStepError> {
         let critical = CriticalStep::of(model, self.mass, operator);
-        if self.dt > critical.exact * (1.0 + crate::time_step::ROUNDING_SLACK)
-            && !self.stability.allow_unstable
-        {
+        if self.stability.allow_unstable {
+            return Ok(critical);
+        }
+        // Park's limit lies at or below CD's (Fried: 2/omega_max >= min_e h_e/c_e), so the
+        // scheme's own limit is the one to check.
+        let limit = self.limit(model, &critical);
+        if self.dt > limit.dt() * (1.0 + crate::time_step::ROUNDING_SLACK) {
             return Err(UnstableStepError {
                 dt: self.dt,
-                dt_crit: critical.exact,
+                dt_crit: limit.dt(),
+                limit: limit.name(),
                 courant: model.bar().courant_number(self.dt),
                 element: critical.controlling_element,
                 element_dt: critical.element_transit,

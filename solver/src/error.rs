@@ -68,7 +68,7 @@ pub enum InputError {
 /// The time step is above the critical step of the scheme and unstable runs were not allowed.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[error(
-    "time step dt = {dt:.6e} exceeds the critical step dt_crit = {dt_crit:.6e} by {:.3e} \
+    "time step dt = {dt:.6e} exceeds the critical step dt_crit = {dt_crit:.6e} ({limit}) by {:.3e} \
      relative (Courant number {courant:.6} relative to the stiffest element; element {element} \
      controls with h/c = {element_dt:.6e}); lower the Courant number or set allow_unstable = true",
     dt / dt_crit - 1.0
@@ -76,8 +76,10 @@ pub enum InputError {
 pub struct UnstableStepError {
     /// The requested time step.
     pub dt: f64,
-    /// The exact critical step 2/omega_max.
+    /// The limit exceeded: the exact critical step 2/omega_max, or Park's `min_e h_e/c_e`.
     pub dt_crit: f64,
+    /// Which limit: `2/omega_max` or `alpha_e <= 1` (`SchemeLimit::name`).
+    pub limit: &'static str,
     /// Courant number of the requested step, `dt * max_e(c_e/h_e)`.
     pub courant: f64,
     /// The element with the smallest transit time h_e/c_e.

@@ -59,7 +59,10 @@ impl PartitionedLdl {
     /// factorisation is not positive).
     pub fn new(a: &Tridiagonal) -> Option<Self> {
         let n = a.diag.len();
-        if n == 0 || !plain_pivots_positive(a) {
+        // Positive definite iff every pivot of the plain factorisation is positive; the blocks'
+        // pivots alone do not show it (each block may be SPD while the whole is not).
+        let (mut lower, mut inverse_pivot) = (vec![0.0; n], vec![0.0; n]);
+        if n == 0 || !factor_rows(a, 0..n, &mut lower, &mut inverse_pivot) {
             return None;
         }
         let blocks = if n >= BLOCKS * MIN_BLOCK_ROWS {
@@ -75,25 +78,13 @@ impl PartitionedLdl {
                 (j + 1) * block_rows
             }
         };
-        // Block factors: the off-diagonal entry that couples two blocks is left out.
-        let mut lower = vec![0.0; n];
-        let mut inverse_pivot = vec![0.0; n];
-        for j in 0..blocks {
-            let rows = range(j);
-            let mut previous: Option<(f64, f64)> = None; // (pivot, lower) of the row above
-            for i in rows.clone() {
-                let pivot = a.diag[i] - previous.map_or(0.0, |(d, l)| l * l * d);
-                if pivot.is_nan() || pivot <= 0.0 {
+        // Block factors: the off-diagonal entry that couples two blocks is left out (with one
+        // block, the plain factor above is it).
+        if blocks > 1 {
+            for j in 0..blocks {
+                if !factor_rows(a, range(j), &mut lower, &mut inverse_pivot) {
                     return None;
                 }
-                let l = if i + 1 < rows.end {
-                    a.off[i] / pivot
-                } else {
-                    0.0
-                };
-                lower[i] = l;
-                inverse_pivot[i] = 1.0 / pivot;
-                previous = Some((pivot, l));
             }
         }
         // Spikes, block by block, and the rows where they are nonzero.
@@ -269,22 +260,29 @@ fn solve_block(lower: &[f64], inverse_pivot: &[f64], x: &mut [f64]) {
     }
 }
 
-/// Whether every pivot of the plain (unpartitioned) `L D L^T` factorisation is positive, i.e.
-/// the matrix is positive definite.
-fn plain_pivots_positive(a: &Tridiagonal) -> bool {
-    let mut previous = 0.0;
-    for i in 0..a.diag.len() {
-        let coupling = if i > 0 { a.off[i - 1] } else { 0.0 };
-        let pivot = a.diag[i]
-            - if i > 0 {
-                coupling * coupling / previous
-            } else {
-                0.0
-            };
+/// `L D L^T` factor of the rows `rows` of `a` on their own (the coupling to the rows outside is
+/// left out): `lower[i] = l_i` (0 at the last row), `inverse_pivot[i] = 1/d_i`; false when a
+/// pivot is not positive (the rows are not positive definite).
+fn factor_rows(
+    a: &Tridiagonal,
+    rows: std::ops::Range<usize>,
+    lower: &mut [f64],
+    inverse_pivot: &mut [f64],
+) -> bool {
+    let mut previous: Option<(f64, f64)> = None; // (pivot, lower) of the row above
+    for i in rows.clone() {
+        let pivot = a.diag[i] - previous.map_or(0.0, |(d, l)| l * l * d);
         if pivot.is_nan() || pivot <= 0.0 {
             return false;
         }
-        previous = pivot;
+        let l = if i + 1 < rows.end {
+            a.off[i] / pivot
+        } else {
+            0.0
+        };
+        lower[i] = l;
+        inverse_pivot[i] = 1.0 / pivot;
+        previous = Some((pivot, l));
     }
     true
 }

@@ -407,7 +407,9 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             // numbers are multiples of it: CD's 2/omega_max (a Sturm bisection), Park's
             // min_e h_e/c_e.
             let exact_limit = match (stepping.by_courant, stepping.unit, park) {
-                (true, RawCourantUnit::Exact, Some(_)) => Some(element_dt),
+                (true, RawCourantUnit::Exact, Some(_)) => {
+                    Some(courant_solver::ParkScheme::limit_step(&model))
+                }
                 (true, RawCourantUnit::Exact, None) => {
                     let operator =
                         courant_solver::MassOperator::new(&model, mass).map_err(|e| {
@@ -467,14 +469,13 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                     mass,
                     park,
                 };
-                let critical = integrator.check_stability(&model).map_err(|e| {
-                    let exact = courant_solver::MassOperator::new(&model, mass)
-                        .map(|op| CriticalStep::of(&model, mass, &op).exact / element_dt)
-                        .unwrap_or(f64::NAN);
-                    fail(format!(
-                        "{e} ({} critical Courant number {exact:.6}, element {stiffest})",
-                        mass.label()
-                    ))
+                let critical = integrator.check_stability(&model).map_err(|e| match &e {
+                    courant_solver::RunError::Unstable(u) => fail(format!(
+                        "{e} ({} {scheme_name} critical Courant number {:.6}, element {stiffest})",
+                        mass.label(),
+                        u.dt_crit / element_dt
+                    )),
+                    _ => fail(e.to_string()),
                 })?;
                 let node_steps = plan.steps as f64 * model.bar().element_count() as f64;
                 if node_steps > MAX_NODE_STEPS {
@@ -493,19 +494,6 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                     energy_every: outputs.energy_every.unwrap_or(thinned),
                 };
                 let limit = integrator.limit(&model, &critical);
-                // Park's alpha_e <= 1 (methods.md §6), refused here with the key and line rather
-                // than when the run starts.
-                if park.is_some()
-                    && !stepping.stability.allow_unstable
-                    && plan.dt > limit.dt() * (1.0 + courant_solver::time_step::ROUNDING_SLACK)
-                {
-                    return Err(fail(format!(
-                        "Park's scheme needs alpha_e = dt/dt_e <= 1 in every element; element {stiffest} has alpha = {:.6} \
-                         (dt = {:e}, dt_e = {element_dt:e}): lower the Courant number or set allow_unstable = true",
-                        plan.dt / element_dt,
-                        plan.dt
-                    )));
-                }
                 cases.push(Case {
                     name: case_name,
                     model: model.clone(),
