@@ -1,34 +1,27 @@
 //! # courant
 //!
 //! Verification benchmarks and reference solutions for explicit finite-element dynamics of bars.
-//! This crate reads declarative scene files ([`scene`]), runs their cases with
-//! `courant-solver` ([`run`]), compares them with the analytic references of
-//! `courant-references` ([`reference`](mod@reference), [`metrics`]), checks their expectations ([`expect`]) and
-//! writes named CSV tables ([`results`], [`table`], [`write`](mod@write)).
+//! The crate is laid out as the pipeline it runs (`ARCHITECTURE.md`):
+//!
+//! ```text
+//!   scene ──> run ──> results ──> compare ──> report
+//!   (TOML     (solver  (records,   (references,   └──> check
+//!    cases)    runs)    plain data) norms, verdicts)
+//!
+//!   pipeline: run + compare, the only place they meet      cli: the commands
+//!   io: atomic writes, clock, ordered parallel collection (used by every stage)
+//! ```
+//!
+//! Dependencies point one way (checked by `tests/architecture.rs`): a stage uses only the
+//! stages upstream of it and `io`; `compare` never runs a solver, `run` never compares, `report`
+//! only renders compared records.
 
-pub mod baseline;
-pub mod bench_table;
-pub mod builtin;
 pub mod check;
-pub mod clock;
-pub mod contact_study;
-pub mod dispersion;
-pub mod document;
-pub mod expect;
-pub mod junit;
-pub mod metrics;
-pub mod plot;
-pub mod reference;
+pub mod cli;
+pub mod compare;
+pub mod io;
+pub mod pipeline;
 pub mod report;
-pub mod report_figures;
 pub mod results;
 pub mod run;
 pub mod scene;
-pub mod spectra;
-pub mod stability_table;
-pub mod table;
-pub mod work_precision;
-pub mod write;
-
-pub use run::{CaseResult, SceneOutcome, Status, run_case, run_scene};
-pub use scene::{Case, Scene, SceneError};

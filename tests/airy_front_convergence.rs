@@ -19,7 +19,8 @@
 mod common;
 
 use common::*;
-use courant::{Scene, run_case};
+use courant::pipeline::evaluate_case as run_case;
+use courant::scene::Scene;
 use courant_solver::{Start, TimeFunction};
 
 const MESHES: [usize; 4] = [800, 1600, 3200, 6400];
@@ -133,7 +134,7 @@ fn overshoot_behind_the_front_tends_to_the_airy_value() {
 #[test]
 fn the_scene_overshoot_metric_measures_the_airy_overshoot() {
     // Fig. 1 at N = 3200, Co = 0.5, without its expectations (they name the other cases).
-    let fig1 = courant::builtin::builtin_text("fig1").unwrap();
+    let fig1 = courant::scene::builtin::builtin_text("fig1").unwrap();
     let text = fig1[..fig1.find("[[expect]]").unwrap()]
         .replace("elements = 100", "elements = 3200")
         .replace("courant = [1.0, 0.5, 0.1]", "courant = 0.5");

@@ -139,12 +139,14 @@ fn check_fig1_passes_on_the_committed_expectations() {
         assert!(stdout.contains(column), "table lacks {column}: {stdout}");
     }
     assert!(!stdout.contains("FAIL"), "{stdout}");
-    let scene = courant::builtin::builtin_scene("fig1").unwrap().unwrap();
+    let scene = courant::scene::builtin::builtin_scene("fig1")
+        .unwrap()
+        .unwrap();
     for e in &scene.expectations {
         assert!(stdout.contains(&e.source), "source not shown: {}", e.source);
     }
     // One testcase per verdict, none failed, every one named "<case> <metric>".
-    let verdicts = courant::run_scene(&scene).unwrap().verdicts;
+    let verdicts = courant::pipeline::evaluate_scene(&scene).unwrap().verdicts;
     let root = junit(&report);
     let cases = testcases(&root);
     assert_eq!(cases.len(), verdicts.len());
@@ -168,7 +170,7 @@ fn check_fig1_passes_on_the_committed_expectations() {
 #[test]
 fn a_broken_expectation_exits_1_with_a_junit_failure_for_that_testcase() {
     let dir = scratch("strict");
-    let text_in = courant::builtin::builtin_text("fig1")
+    let text_in = courant::scene::builtin::builtin_text("fig1")
         .unwrap()
         .replace("max = 1e-10", "max = 1e-30");
     let path = dir.join("strict.toml");
@@ -400,7 +402,7 @@ fn the_committed_report_is_a_baseline_and_a_moved_report_column_fails_until_allo
 fn bad_input_exits_2_and_writes_nothing() {
     let dir = scratch("bad");
     let bad = dir.join("bad.toml");
-    let text_in = courant::builtin::builtin_text("fig1")
+    let text_in = courant::scene::builtin::builtin_text("fig1")
         .unwrap()
         .replace("elements = 100", "elements = 100\nbogus = 1");
     std::fs::write(&bad, text_in).unwrap();

@@ -40,7 +40,7 @@ fn list_names_every_built_in_scene_with_its_description() {
     let out = courant(&["list"]);
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).unwrap();
-    for (name, _) in courant::builtin::BUILTIN_SCENES {
+    for (name, _) in courant::scene::builtin::BUILTIN_SCENES {
         let line = text
             .lines()
             .find(|l| l.starts_with(name))
@@ -130,7 +130,7 @@ fn run_writes_profiles_histories_energy_and_summary_identically_with_1_and_4_thr
 fn a_failed_expectation_fails_the_run_with_status_1_and_is_recorded() {
     let dir = scratch("strict");
     std::fs::create_dir_all(&dir).unwrap();
-    let text = courant::builtin::builtin_text("fig1")
+    let text = courant::scene::builtin::builtin_text("fig1")
         .unwrap()
         .replace("max = 1e-10", "max = 1e-30");
     let path = dir.join("strict.toml");

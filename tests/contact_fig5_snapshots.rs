@@ -16,7 +16,7 @@
 //! 0.9 <= t <= 1.0, to show its chatter (sampling every 10th step would alias its ~5-step
 //! cycle). Review changes with `cargo insta review`; in CI (CI=true) a mismatch fails.
 
-use courant::table::{Cell, Precision, Table};
+use courant::results::table::{Cell, Precision, Table};
 use courant_references::contact::{ImpactBar, ImpactForce};
 use courant_solver::contact::{
     ContactIntegrator, ContactProblem, ContactRequest, ContactScheme, MassPenalty,

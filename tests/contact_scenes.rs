@@ -12,8 +12,9 @@
 //! numbers in units of each case's exact critical step give exactly that step, and bad contact
 //! input is refused naming the key.
 
-use courant::builtin::builtin_scene;
-use courant::{Scene, run_scene};
+use courant::pipeline::evaluate_scene as run_scene;
+use courant::scene::Scene;
+use courant::scene::builtin::builtin_scene;
 
 #[test]
 fn contact_scenes_meet_every_expectation() {
@@ -40,7 +41,7 @@ fn contact_scenes_meet_every_expectation() {
 
 #[test]
 fn bad_contact_input_names_the_key() {
-    let base = courant::builtin::builtin_text("contact_wall").unwrap();
+    let base = courant::scene::builtin::builtin_text("contact_wall").unwrap();
     let cases = [
         ("problem = \"wall\"", "problem = \"wal\"", "contact.problem"),
         (
@@ -76,7 +77,7 @@ fn bad_contact_input_names_the_key() {
 /// `-co<value>`; a step above it is refused unless unstable runs are allowed.
 #[test]
 fn critical_courant_unit_scales_each_cases_exact_limit() {
-    let base = courant::builtin::builtin_text("contact_wall").unwrap();
+    let base = courant::scene::builtin::builtin_text("contact_wall").unwrap();
     let text = base.replacen(
         "courant = 0.5",
         "courant = [0.5, 0.99]\ncourant_unit = \"critical\"",

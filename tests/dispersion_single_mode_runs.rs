@@ -13,8 +13,8 @@
 //! (~4x with beta = 1/2): CD + AMM/RMM fourth order at a given Co, a capability explicit codes
 //! do not offer.
 
-use courant::dispersion::measure_mode;
-use courant::spectra::closed_form_kind;
+use courant::compare::spectrum::closed_form_kind;
+use courant::run::dispersion::measure_mode;
 use courant_references::spectra as closed;
 use courant_solver::MassKind;
 

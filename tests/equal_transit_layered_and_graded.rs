@@ -14,8 +14,9 @@
 //! reflections; on the Fig. 2 graded bar the equal-transit CD solution converges at first order
 //! in L1 (observed order in [0.85, 1.15] over N = 100 ... 400).
 
-use courant::builtin::builtin_text;
-use courant::{Scene, run_case};
+use courant::pipeline::evaluate_case as run_case;
+use courant::scene::Scene;
+use courant::scene::builtin::builtin_text;
 
 fn scene_with(name: &str, replacements: &[(&str, &str)]) -> Scene {
     let mut text = builtin_text(name).unwrap().to_string();

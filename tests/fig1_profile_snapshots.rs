@@ -7,10 +7,10 @@
 //! as 0 so that round-off cannot make a snapshot platform-dependent). Review changes with
 //! `cargo insta review`; in CI (CI=true) a mismatch fails and nothing is written.
 
-use courant::builtin::builtin_scene;
-use courant::results::profile_table;
-use courant::run_case;
-use courant::table::Precision;
+use courant::compare::tables::profile_table;
+use courant::pipeline::evaluate_case as run_case;
+use courant::results::table::Precision;
+use courant::scene::builtin::builtin_scene;
 
 #[test]
 fn fig1_profiles_are_locked_per_case() {

@@ -15,10 +15,10 @@
 //! stiffens and grows as (E/E1)^(1/4)). And it locks the Fig. 2 profiles as rounded CSV
 //! snapshots.
 
-use courant::builtin::builtin_scene;
-use courant::results::profile_table;
-use courant::run_case;
-use courant::table::Precision;
+use courant::compare::tables::profile_table;
+use courant::pipeline::evaluate_case as run_case;
+use courant::results::table::Precision;
+use courant::scene::builtin::builtin_scene;
 
 /// The bounds of one figure's contrast: Park LTS's TV ratio below `lts_tv_max`, CD's above
 /// `cd_tv_min`, LTS's L1 below `lts_l1_vs_cd` x CD's and its overshoot below

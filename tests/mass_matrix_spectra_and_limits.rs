@@ -34,7 +34,7 @@ fn kinds() -> Vec<MassKind> {
 }
 
 fn closed_kind(kind: MassKind) -> closed::MassKind {
-    courant::spectra::closed_form_kind(kind)
+    courant::compare::spectrum::closed_form_kind(kind)
 }
 
 fn uniform(n: usize, ends: BarEnds) -> (Model, UniformBar) {

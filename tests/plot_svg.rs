@@ -1,4 +1,4 @@
-//! SVG charts of `courant::plot`.
+//! SVG charts of `courant::report::plot`.
 //!
 //! Source of truth: the report contract "every plot as SVG, no system fonts, deterministic".
 //! What this proves: for a profile-like chart (stress vs x, numerical line + exact dashed) and a
@@ -10,7 +10,7 @@
 //! that a title with `<`, `&`, `>` is escaped into well-formed XML.
 //! It does not judge how the chart looks.
 
-use courant::plot::{Axes, PlotError, Series, SeriesStyle, line_chart};
+use courant::report::plot::{Axes, PlotError, Series, SeriesStyle, line_chart};
 
 // The XML checker shared by the integration tests (its own test is in report_generation.rs).
 #[path = "common/xml.rs"]

@@ -1,6 +1,6 @@
 //! Source of truth: the README's contract for `courant report` and `courant run` ("output
 //! directories are written whole or not at all (staged, then renamed into place)") and the
-//! recovery rules documented in `courant::write`.
+//! recovery rules documented in `courant::io::atomic`.
 //!
 //! Proves: killing `courant report` while it computes leaves the previous report directory
 //! exactly as it was (nothing set aside, nothing partial in it), and the leftovers a writer
@@ -8,7 +8,7 @@
 //! two renames) are recovered by the next write: the previous report is put back, stale
 //! directories of the dead process are removed (on Linux, where liveness is known).
 
-use courant::write::{recover_interrupted, write_dir_atomically};
+use courant::io::atomic::{recover_interrupted, write_dir_atomically};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::Duration;

@@ -14,9 +14,11 @@
 //! with a dashed closed-form curve of the same colour whose values are those of
 //! `courant-references` at every beta_s.
 
-use courant::plot::SeriesStyle;
-use courant::report_figures::{MAX_CASES, scene_figures, split, stability_charts};
-use courant::{Scene, run_scene};
+use courant::pipeline::evaluate_scene as run_scene;
+use courant::report::figure_parts::{MAX_CASES, split};
+use courant::report::figures::{scene_figures, stability_charts};
+use courant::report::plot::SeriesStyle;
+use courant::scene::Scene;
 use courant_references::contact::{
     signorini_critical_courant_penalty, signorini_critical_courant_ratio,
 };
@@ -182,7 +184,9 @@ fn every_case_of_a_large_scene_is_drawn_or_named_as_not_shown() {
         ("fig5", &["force"][..]),
         ("contact_extremes", &["force"][..]),
     ] {
-        let scene = courant::builtin::builtin_scene(name).unwrap().unwrap();
+        let scene = courant::scene::builtin::builtin_scene(name)
+            .unwrap()
+            .unwrap();
         assert_every_case_accounted_for(&scene, kinds);
     }
     // Fig. 1 at eight Courant numbers, two above the limit (dt shrunk to hit t = 0.1 T: Co =
@@ -190,7 +194,7 @@ fn every_case_of_a_large_scene_is_drawn_or_named_as_not_shown() {
     // profile cannot show them and its captions must say so; the early profile that draws them
     // (co1.12 diverges at step 17, after 0.1 T) keeps them apart from the stable runs, whose
     // curves their growing sawtooth would flatten.
-    let text = courant::builtin::builtin_text("fig1")
+    let text = courant::scene::builtin::builtin_text("fig1")
         .unwrap()
         .replace(
             "courant = [1.0, 0.5, 0.1]",
@@ -228,7 +232,7 @@ fn every_case_of_a_large_scene_is_drawn_or_named_as_not_shown() {
 
 #[test]
 fn fig3_graph_draws_the_closed_form_dashed_in_the_colour_of_each_solver_curve() {
-    let text = courant::builtin::builtin_text("fig3")
+    let text = courant::scene::builtin::builtin_text("fig3")
         .unwrap()
         .replace("elements = 6400", "elements = 400");
     let scene = Scene::parse("fig3", "test", &text).unwrap();

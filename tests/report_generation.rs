@@ -11,8 +11,10 @@
 //! from one generation to the next (timings apart), an expectation failure is flagged, and
 //! `courant report` replaces the output directory whole.
 
-use courant::builtin::builtin_scene;
-use courant::report::{CONVERGENCE_STUDIES, generate};
+use courant::pipeline::report_runs::run_for_report;
+use courant::report::render;
+use courant::scene::builtin::builtin_scene;
+use courant::scene::studies::convergence::CONVERGENCE_STUDIES;
 
 #[path = "common/xml.rs"]
 mod xml;
@@ -27,7 +29,7 @@ fn reduced() -> courant::report::Report {
         .filter(|s| s.name == "fig1_co1")
         .cloned()
         .collect();
-    generate(&scenes, &studies).unwrap()
+    render(&scenes, &run_for_report(&scenes, &studies).unwrap()).unwrap()
 }
 
 #[test]
@@ -57,7 +59,8 @@ fn report_has_sections_tables_and_deterministic_content() {
         for name in &names {
             if let Some(file) = name.strip_prefix(&format!("{scene}/")) {
                 assert!(
-                    file.ends_with(".svg") || courant::baseline::REPORT_TABLES.contains(&file),
+                    file.ends_with(".svg")
+                        || courant::compare::files::REPORT_TABLES.contains(&file),
                     "{name} is a scene table a report baseline would not compare"
                 );
             }

@@ -4,7 +4,7 @@
 //! Proves: every class of bad input gives an error naming the file, the line, the key and the
 //! rule, and `courant run` exits with status 2 writing nothing.
 
-use courant::Scene;
+use courant::scene::Scene;
 use rstest::rstest;
 use std::process::Command;
 

@@ -8,8 +8,8 @@
 //! Proves: every normalised norm of `scenes/fig1_si.toml` equals that of `scenes/fig1.toml` to
 //! 1e-9 relative (plus a 1e-12 floor for the exact Co = 1 case), case by case.
 
-use courant::builtin::builtin_scene;
-use courant::run_scene;
+use courant::pipeline::evaluate_scene as run_scene;
+use courant::scene::builtin::builtin_scene;
 
 #[test]
 fn steel_bar_gives_the_unit_bar_normalised_errors() {

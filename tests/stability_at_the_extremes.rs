@@ -16,9 +16,11 @@
 //! end and profile times to the nearest step and compares with the reference at the step's actual
 //! time; bad input for the new keys is refused naming the key and line.
 
-use courant::Scene;
-use courant::run::{Status, run_scene};
-use courant::stability_table::StabilityRow;
+use courant::compare::exact::ExactSolution;
+use courant::compare::stability::StabilityRow;
+use courant::pipeline::evaluate_scene as run_scene;
+use courant::results::case::Status;
+use courant::scene::Scene;
 use courant_solver::{CriticalStep, MassOperator};
 
 /// The Fig. 1 bar with N = 20, unstable runs allowed; `integrator` fills in the scheme lines,
@@ -54,7 +56,7 @@ kind = "dalembert"
     )
 }
 
-fn run_rows(text: &str) -> (Vec<StabilityRow>, courant::run::SceneOutcome) {
+fn run_rows(text: &str) -> (Vec<StabilityRow>, courant::compare::outcome::SceneOutcome) {
     let scene = Scene::parse("limit", "limit.toml", text).unwrap();
     let outcome = run_scene(&scene).unwrap();
     let rows = outcome

@@ -14,13 +14,14 @@
 //! graded_1e4 bar Park's alpha_e <= 1 is named a sufficient bound and predicts nothing above it;
 //! the contact rows agree except the 4 that gain energy.
 
-use courant::report::builtin_scenes;
-use courant::run::{SceneOutcome, run_scene};
-use courant::stability_table::{StabilityRow, stability_table};
+use courant::compare::outcome::SceneOutcome;
+use courant::compare::stability::{StabilityRow, stability_table};
+use courant::pipeline::evaluate_scene as run_scene;
+use courant::scene::builtin::all as builtin_scenes;
 
 /// A built-in scene's run and the stability rows of its time-stepping cases.
 fn time_stepping_rows(name: &str) -> (SceneOutcome, Vec<StabilityRow>) {
-    let scene = courant::builtin::builtin_scene(name)
+    let scene = courant::scene::builtin::builtin_scene(name)
         .expect("built-in scene")
         .unwrap();
     let outcome = run_scene(&scene).unwrap();
@@ -56,7 +57,7 @@ fn stability_extremes_rows_agree_with_the_critical_step() {
             assert_eq!(r.steps, r.steps_planned, "{}", row.case);
         }
     }
-    let csv = stability_table(&rows).to_csv(courant::table::Precision::RoundTrip);
+    let csv = stability_table(&rows).to_csv(courant::results::table::Precision::RoundTrip);
     assert_eq!(csv.lines().filter(|l| l.ends_with(",yes")).count(), 12);
 }
 

@@ -11,7 +11,10 @@
 //! chart; its force error is finite, O(1) and mesh-independent (the stiff penalty spring rattles,
 //! similarity), far above the converging predictor-corrector and Lagrange-multiplier errors.
 
-use courant::work_precision::{WORK_PRECISION_STUDIES, WorkPoint, blocks, cpu_chart, run};
+use courant::compare::work_precision::WorkPoint;
+use courant::pipeline::studies::run_work_precision as run;
+use courant::report::work_precision::{cpu_chart, study_page};
+use courant::scene::studies::work_precision::WORK_PRECISION_STUDIES;
 use courant_references::contact::signorini_critical_courant_penalty;
 
 #[path = "common/xml.rs"]
@@ -84,8 +87,8 @@ fn cd_penalty_runs_at_its_own_stable_step_with_its_courant_number_stated() {
     assert!(lm[meshes - 1].l1 * 100.0 < lo, "LM at the finest mesh");
 
     // The Courant setting is stated in the table, the two work charts and the CPU chart.
-    let precision = courant::table::Precision::RoundTrip;
-    let (report, files) = blocks(study, &points, precision, precision);
+    let page = study_page(study, &points);
+    let (report, files) = (page.blocks, page.files);
     let csv = &files
         .iter()
         .find(|f| f.0 == "work_precision/fig5_contact.csv")

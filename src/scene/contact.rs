@@ -2,10 +2,10 @@
 //! penalty, bipenalty, predictor-corrector and Lagrange-multiplier schemes, and the stability
 //! sweep of the critical Courant number against the penalty stiffness.
 
+use super::error::{SceneError, Source, positive};
 use super::schema::{
     RawContact, RawContactBar, RawContactCourantUnit, RawContactScene, RawContactStability,
 };
-use super::{SceneError, Source};
 use courant_references::contact::{ImpactBar, ImpactForce};
 use courant_solver::contact::{
     ContactCriticalStep, ContactIntegrator, ContactProblem, ContactScheme, MassPenalty,
@@ -80,10 +80,10 @@ pub(super) fn cases(
     study: &RawContact,
 ) -> Result<Vec<ContactCase>, SceneError> {
     let area = match &raw.bar.area {
-        Some(a) => super::positive(src, a, "bar.area")?,
+        Some(a) => positive(src, a, "bar.area")?,
         None => 1.0,
     };
-    let velocity = super::positive(src, &study.velocity, "contact.velocity")?;
+    let velocity = positive(src, &study.velocity, "contact.velocity")?;
     let gap = match &study.gap {
         None => 0.0,
         Some(g) if g.get_ref().is_finite() && *g.get_ref() >= 0.0 => *g.get_ref(),
@@ -150,7 +150,7 @@ pub(super) fn cases(
             format!("{bad} must be positive and finite"),
         ));
     }
-    let end = super::positive(src, &study.end_time, "contact.end_time")?;
+    let end = positive(src, &study.end_time, "contact.end_time")?;
     let end_time = end * striker_impact.transit_time();
     let history_every = match &study.history_every {
         None => 1,
@@ -171,7 +171,7 @@ pub(super) fn cases(
                 "give either `ratio` or `beta_m`, not both",
             ));
         }
-        (Some(r), None) => MassPenalty::Ratio(super::positive(src, r, "contact.ratio")?),
+        (Some(r), None) => MassPenalty::Ratio(positive(src, r, "contact.ratio")?),
         (None, Some(b)) => MassPenalty::Dimensionless(*b.get_ref()),
         (None, None) => MassPenalty::Ratio(1.0),
     };

@@ -1,8 +1,10 @@
 //! Dispersion scenes: single-mode runs of central difference with each mass kind against the
 //! fully discrete dispersion relation (methods.md §5).
 
+use super::error::{SceneError, Source};
+use super::geometry::Geometry;
+use super::mass::{mass_name, parse_mass};
 use super::schema::RawDispersion;
-use super::{Geometry, SceneError, Source, mass_name, parse_mass};
 use courant_references::spectra as closed;
 use courant_solver::MassKind;
 

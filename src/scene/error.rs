@@ -2,6 +2,7 @@
 
 use std::ops::Range;
 use thiserror::Error;
+use toml::Spanned;
 
 /// A scene file that cannot be used, with the position of the offending key.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
@@ -117,6 +118,20 @@ impl Source<'_> {
             (Some(t), true) => t,
             (None, _) => local.to_string(),
         }
+    }
+}
+
+/// A number that must be positive and finite, or the error naming `key` at the value's span.
+pub fn positive(src: &Source, v: &Spanned<f64>, key: &str) -> Result<f64, SceneError> {
+    let x = *v.get_ref();
+    if x.is_finite() && x > 0.0 {
+        Ok(x)
+    } else {
+        Err(src.error(
+            Some(v.span()),
+            key,
+            format!("{x} must be positive and finite"),
+        ))
     }
 }
 

@@ -1,8 +1,11 @@
 //! Spectrum scenes: the discrete frequencies of a bar for several mass kinds and end conditions
 //! (the seed's Fig. 6), beside the continuum and the closed-form discrete spectra.
 
+use super::bar::bar_of;
+use super::error::{SceneError, Source};
+use super::geometry::Geometry;
+use super::mass::parse_mass;
 use super::schema::{RawScene, RawSpectrum};
-use super::{Geometry, SceneError, Source, parse_mass};
 use courant_references::spectra::{BarEnds, UniformBar};
 use courant_solver::{MassKind, Model, Support, Supports};
 
@@ -84,7 +87,7 @@ pub(super) fn build(
             }
         };
         for &elements in &geometry.element_counts {
-            let bar = super::bar_of(src, raw, geometry, elements)?;
+            let bar = bar_of(src, raw, geometry, elements)?;
             if bar.node_count() > courant_solver::spectrum::MAX_DENSE_NODES {
                 return Err(fail(
                     raw.mesh.elements.span(),

@@ -1,0 +1,106 @@
+//! `courant check` as JUnit XML: one test suite per scene (properties: description, source,
+//! baseline directory), one test case per expectation verdict and per baseline file.
+
+use super::baseline::csv_diff::FileOutcome;
+use super::baseline::scene_diff::FileComparison;
+use super::gate::CheckReport;
+use super::junit::{Failure, TestCase, TestSuite, render};
+use super::render::{format_bound, format_measured};
+use crate::compare::verdict::Verdict;
+use std::fmt::Write as _;
+
+/// The test-case name of a verdict: `<case> <metric>`, plus ` at <t>` when it names a time.
+pub fn testcase_name(v: &Verdict) -> String {
+    let at = v.at.map(|t| format!(" at {t}")).unwrap_or_default();
+    format!("{} {}{at}", v.case, v.metric.name())
+}
+
+/// The JUnit test suites: one per scene (properties: description, source, baseline
+/// directory), one test case per expectation verdict (classname = scene, name =
+/// [`testcase_name`]) and per baseline file (name = `baseline <file>`).
+pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
+    report
+        .scenes
+        .iter()
+        .map(|scene| {
+            let mut properties = vec![
+                ("description".to_string(), scene.description.clone()),
+                ("source".to_string(), scene.source.clone()),
+            ];
+            if let Some((root, kind)) = &report.baseline {
+                properties.push((
+                    "baseline".into(),
+                    root.join(&scene.name).display().to_string(),
+                ));
+                properties.push(("baseline_kind".into(), kind.label().into()));
+                properties.push(("tolerances".into(), report.tolerances.describe()));
+            }
+            let mut cases: Vec<TestCase> = scene
+                .verdicts
+                .iter()
+                .map(|v| {
+                    let name = testcase_name(v);
+                    let what = format!(
+                        "measured {}, bound {}; source: {}",
+                        format_measured(&v.measured),
+                        format_bound(&v.bound),
+                        v.source
+                    );
+                    TestCase {
+                        classname: scene.name.clone(),
+                        failure: (!v.pass).then(|| Failure {
+                            message: format!("{name}: {what}"),
+                            kind: "expectation".into(),
+                            details: v.describe(),
+                        }),
+                        name,
+                        output: Some(what),
+                        skipped: None,
+                    }
+                })
+                .collect();
+            for file in scene.baseline.iter().flatten() {
+                cases.push(TestCase {
+                    classname: scene.name.clone(),
+                    name: format!("baseline {}", file.file),
+                    failure: file.failure_message().map(|m| Failure {
+                        message: m.lines().next().unwrap_or_default().to_string(),
+                        kind: "baseline".into(),
+                        details: m,
+                    }),
+                    output: Some(file_details(file)),
+                    skipped: file.skipped().then(|| file.summary()),
+                });
+            }
+            TestSuite {
+                name: scene.name.clone(),
+                timestamp: scene.started.clone(),
+                time: scene.wall_time,
+                properties,
+                cases,
+            }
+        })
+        .collect()
+}
+
+/// The JUnit XML document.
+pub fn xml(report: &CheckReport) -> String {
+    render("courant check", &suites(report), report.wall_time)
+}
+
+/// Every column of a compared file with its largest change, for the JUnit `<system-out>`.
+fn file_details(file: &FileComparison) -> String {
+    let mut text = format!("{}: {}", file.file, file.summary());
+    if let FileOutcome::Compared {
+        columns, ignored, ..
+    } = &file.outcome
+    {
+        for column in columns {
+            let _ = write!(text, "\n  {}", column.describe());
+        }
+        if !ignored.is_empty() {
+            let _ = write!(text, "\n  ignored: {}", ignored.join(", "));
+        }
+    }
+    text
+}

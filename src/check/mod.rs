@@ -1,0 +1,20 @@
+//! `courant check`: run scenes, gate on their expectations and, optionally, on a baseline.
+//!
+//! ```text
+//!   scene ──> run ──> results ──> compare ──> report / check
+//!                                                      ^^^^^
+//! ```
+//!
+//! Every expectation verdict of every scene is a check; with a baseline directory every result
+//! file of every scene is one more ([`baseline`], MOOSE CSVDiff style). [`gate`] runs them,
+//! [`render`] prints them for a terminal and [`junit_report`] as JUnit XML ([`junit`]), one
+//! test suite per scene, one test case per check.
+//!
+//! Enters: scenes, a baseline directory, tolerances. Leaves: verdicts, terminal text, JUnit XML.
+//! Must not know: how records are produced or compared (it calls `pipeline`), documents.
+
+pub mod baseline;
+pub mod gate;
+pub mod junit;
+pub mod junit_report;
+pub mod render;

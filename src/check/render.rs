@@ -1,0 +1,171 @@
+//! The terminal report of `courant check`: per scene a table of its expectations (verdict,
+//! case, metric, measured value, bound, source), then its baseline files with the largest change
+//! of each changed column; a summary line at the end.
+
+use super::baseline::csv_diff::FileOutcome;
+use super::baseline::scene_diff::FileComparison;
+use super::gate::CheckReport;
+use crate::compare::verdict::{Measured, Verdict};
+use crate::results::table::Precision;
+use crate::scene::expectation::Bound;
+use std::fmt::Write as _;
+
+/// The measured value of a verdict, for reports.
+pub fn format_measured(measured: &Measured) -> String {
+    match measured {
+        Measured::Value(x) => format!("{x:.4e}"),
+        Measured::Flag(b) => b.to_string(),
+        Measured::Missing(why) => format!("missing ({why})"),
+    }
+}
+
+/// The bound of a verdict, for reports: `<= max`, `>= min`, `in [min, max]`, `== flag`.
+pub fn format_bound(bound: &Bound) -> String {
+    let num = |x: f64| Precision::RoundTrip.format(x);
+    match *bound {
+        Bound::Range {
+            min: Some(lo),
+            max: Some(hi),
+        } => format!("in [{}, {}]", num(lo), num(hi)),
+        Bound::Range {
+            min: Some(lo),
+            max: None,
+        } => format!(">= {}", num(lo)),
+        Bound::Range {
+            min: None,
+            max: Some(hi),
+        } => format!("<= {}", num(hi)),
+        Bound::Range {
+            min: None,
+            max: None,
+        } => "unbounded".into(),
+        Bound::Equals(b) => format!("== {b}"),
+    }
+}
+
+fn verdict_word(pass: bool) -> &'static str {
+    if pass { "pass" } else { "FAIL" }
+}
+
+/// The terminal report: per scene a table of its expectations (verdict, case, metric,
+/// measured value, bound, source), then its baseline files with the largest change of each
+/// changed column; a summary line at the end.
+pub fn terminal(report: &CheckReport) -> String {
+    let mut out = String::new();
+    for scene in &report.scenes {
+        let _ = writeln!(out, "{}: {}", scene.name, scene.description);
+        let _ = writeln!(out, "  source: {}", scene.source);
+        render_verdicts(&mut out, &scene.verdicts);
+        if let (Some((root, kind)), Some(files)) = (&report.baseline, &scene.baseline) {
+            let _ = writeln!(
+                out,
+                "  baseline {} ({}):",
+                root.join(&scene.name).display(),
+                kind.label()
+            );
+            render_baseline(&mut out, files);
+        }
+        out.push('\n');
+    }
+    if report.baseline.is_some() {
+        let _ = writeln!(out, "baseline tolerances: {}", report.tolerances.describe());
+    }
+    let e = report.expectation_counts();
+    let _ = write!(
+        out,
+        "check: {} scene(s), {} expectation(s), {} failed",
+        report.scenes.len(),
+        e.total,
+        e.failed
+    );
+    if report.baseline.is_some() {
+        let b = report.baseline_counts();
+        let _ = write!(
+            out,
+            "; baseline: {} file(s), {} failed, {} not kept by the baseline",
+            b.total, b.failed, b.skipped
+        );
+    }
+    let _ = writeln!(out, ": {}", verdict_word(report.passed()));
+    out
+}
+
+fn render_verdicts(out: &mut String, verdicts: &[Verdict]) {
+    if verdicts.is_empty() {
+        out.push_str("  (no expectations)\n");
+        return;
+    }
+    let rows: Vec<[String; 6]> = verdicts
+        .iter()
+        .map(|v| {
+            let at = v.at.map(|t| format!(" at {t}")).unwrap_or_default();
+            [
+                verdict_word(v.pass).to_string(),
+                v.case.clone(),
+                format!("{}{at}", v.metric.name()),
+                format_measured(&v.measured),
+                format_bound(&v.bound),
+                v.source.clone(),
+            ]
+        })
+        .collect();
+    let header = ["verdict", "case", "metric", "measured", "bound", "source"].map(String::from);
+    let mut widths = [0; 6];
+    for row in std::iter::once(&header).chain(&rows) {
+        for (w, cell) in widths.iter_mut().zip(row) {
+            *w = (*w).max(cell.chars().count());
+        }
+    }
+    for row in std::iter::once(&header).chain(&rows) {
+        let mut line = String::from(" ");
+        for (i, (w, cell)) in widths.iter().zip(row).enumerate() {
+            // Measured values line up on the right, the rest on the left; no trailing spaces.
+            if i == 5 {
+                let _ = write!(line, " {cell}");
+            } else if i == 3 {
+                let _ = write!(line, " {cell:>w$}");
+            } else {
+                let _ = write!(line, " {cell:<w$}");
+            }
+        }
+        out.push_str(line.trim_end());
+        out.push('\n');
+    }
+}
+
+fn render_baseline(out: &mut String, files: &[FileComparison]) {
+    let width = files
+        .iter()
+        .map(|f| f.file.chars().count())
+        .max()
+        .unwrap_or(0);
+    for file in files {
+        let verdict = if file.skipped() {
+            "skip"
+        } else {
+            verdict_word(file.passed())
+        };
+        let _ = writeln!(
+            out,
+            "  {:<7} {:<width$}  {}",
+            verdict,
+            file.file,
+            file.summary()
+        );
+        if let FileOutcome::Compared {
+            columns, ignored, ..
+        } = &file.outcome
+        {
+            let unchanged = columns.iter().filter(|c| !c.changed()).count();
+            for column in columns.iter().filter(|c| c.changed()) {
+                let _ = writeln!(out, "          {}", column.describe());
+            }
+            if unchanged > 0 && unchanged < columns.len() {
+                let _ = writeln!(out, "          {unchanged} other column(s) identical");
+            }
+            if !ignored.is_empty() {
+                let _ = writeln!(out, "          ignored: {}", ignored.join(", "));
+            }
+        }
+    }
+}

@@ -1,0 +1,188 @@
+//! A time-stepping record beside its reference: exact element averages and error norms at each
+//! profile time, exact nodal histories and energies.
+
+use super::cache::ProfileCache;
+use super::exact::ExactSolution;
+use super::norms::ErrorNorms;
+use crate::results::case::{CaseRecord, Status};
+use crate::scene::reference::Reference;
+use courant_references::Energies;
+use courant_solver::{CriticalStep, EnergyLog, NodeHistory, SchemeLimit};
+use std::time::Duration;
+
+/// A stress profile beside its reference.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ProfileComparison {
+    /// Time of the profile.
+    pub time: f64,
+    /// Step index.
+    pub step: usize,
+    /// Element midpoints.
+    pub x: Vec<f64>,
+    /// Element stresses.
+    pub stress: Vec<f64>,
+    /// Exact element averages, if there is a reference.
+    pub reference: Option<Vec<f64>>,
+    /// Error norms, if there is a reference.
+    pub norms: Option<ErrorNorms>,
+}
+
+/// A nodal history beside its reference.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HistoryComparison {
+    /// The recorded history.
+    pub history: NodeHistory,
+    /// Exact `(u, v)` at each sample, if there is a reference.
+    pub reference: Option<Vec<(f64, f64)>>,
+}
+
+/// A time-stepping case's record compared with its reference.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseResult {
+    /// Case name.
+    pub case: String,
+    /// The time-stepping scheme that ran: `cd`, or Park's with its stepping, element-acceleration
+    /// variant and blend, e.g. `park-lts-free theta=0.5` (methods.md §6).
+    pub scheme: String,
+    /// Number of elements.
+    pub elements: usize,
+    /// Courant number relative to the stiffest element.
+    pub courant: f64,
+    /// Time step.
+    pub dt: f64,
+    /// Steps planned.
+    pub steps_planned: usize,
+    /// Steps taken.
+    pub steps: usize,
+    /// Critical-step estimates.
+    pub critical: CriticalStep,
+    /// The stability limit of the scheme that ran (CD's `2/omega_max`, Park's `alpha_e <= 1`).
+    pub limit: SchemeLimit,
+    /// Number of distinct profile times requested.
+    pub profiles_requested: usize,
+    /// Profiles recorded (fewer than requested when the run diverged first).
+    pub profiles: Vec<ProfileComparison>,
+    /// Histories.
+    pub histories: Vec<HistoryComparison>,
+    /// Energy log.
+    pub energy: EnergyLog,
+    /// Exact energies at each energy sample, if there is a reference.
+    pub energy_reference: Option<Vec<Energies>>,
+    /// Reference name, if any.
+    pub reference: Option<&'static str>,
+    /// Completed or diverged.
+    pub status: Status,
+    /// Wall time of the integration (not of the comparison).
+    pub wall_time: Duration,
+}
+
+impl CaseResult {
+    /// Energy dissipated by the end of the run relative to the energy scale,
+    /// `-(balance error at the last sample) / scale`: round-off for CD, the scheme's numerical
+    /// dissipation for Park.
+    pub fn energy_lost(&self) -> f64 {
+        let last = self.energy.samples.last().map_or(0.0, |s| s.balance_error);
+        if self.energy.scale > 0.0 {
+            -last / self.energy.scale
+        } else {
+            0.0
+        }
+    }
+
+    /// Worst norms over all profiles.
+    pub fn worst_norms(&self) -> Option<ErrorNorms> {
+        ErrorNorms::worst(self.profiles.iter().filter_map(|p| p.norms))
+    }
+}
+
+/// Compare a record with its reference (`None`: nothing to compare with; the result then carries
+/// the record alone). Exact profiles come from `cache` when it has them.
+pub fn compare_case(
+    record: CaseRecord,
+    reference: Option<&Reference>,
+    cache: &ProfileCache,
+) -> CaseResult {
+    let CaseRecord {
+        case,
+        scheme,
+        mesh,
+        courant,
+        dt,
+        steps_planned,
+        steps,
+        critical,
+        limit,
+        profiles_requested,
+        profiles,
+        histories,
+        energy,
+        status,
+        wall_time,
+    } = record;
+    let x: Vec<f64> = (0..mesh.element_count())
+        .map(|e| mesh.midpoint(e))
+        .collect();
+    let profiles = profiles
+        .into_iter()
+        .map(|p| {
+            let exact = reference.map(|r| cache.exact(r, &mesh, p.time));
+            let norms = reference.zip(exact.as_ref()).map(|(r, (avg, env))| {
+                ErrorNorms::of(&mesh, &p.stress, avg, *env, r.stress_scale(), r.load_sign())
+            });
+            ProfileComparison {
+                time: p.time,
+                step: p.step,
+                x: x.clone(),
+                stress: p.stress,
+                reference: exact.map(|e| e.0),
+                norms,
+            }
+        })
+        .collect();
+    let histories = histories
+        .into_iter()
+        .map(|h| {
+            let exact = reference.map(|r: &Reference| {
+                h.samples
+                    .iter()
+                    .map(|s| {
+                        (
+                            r.displacement(&mesh, h.x, s.time).unwrap_or(f64::NAN),
+                            r.velocity(&mesh, h.x, s.time).unwrap_or(f64::NAN),
+                        )
+                    })
+                    .collect()
+            });
+            HistoryComparison {
+                history: h,
+                reference: exact,
+            }
+        })
+        .collect();
+    let energy_reference = reference.and_then(|r| {
+        energy
+            .samples
+            .iter()
+            .map(|s| r.energies(s.time))
+            .collect::<Option<Vec<_>>>()
+    });
+    CaseResult {
+        case,
+        scheme,
+        elements: mesh.element_count(),
+        courant,
+        dt,
+        steps_planned,
+        steps,
+        critical,
+        limit,
+        profiles_requested,
+        profiles,
+        histories,
+        energy,
+        energy_reference,
+        reference: reference.map(|r| r.name()),
+        status,
+        wall_time,
+    }
+}

@@ -1,0 +1,134 @@
+//! The files of a compared scene: what `courant run` writes into `OUT/<scene>/` (every table at
+//! round-trip precision), and the deterministic tables a report keeps of them, which
+//! `courant check --baseline <report>` compares.
+
+use super::outcome::SceneOutcome;
+use super::study_tables::{
+    contact_summary_table, dispersion_table, force_table, spectrum_summary_table, spectrum_table,
+    sweep_table,
+};
+use super::tables::{
+    energy_table, expectations_table, history_table, norms_table, profile_table, summary_table,
+};
+use crate::results::table::{Precision, Table};
+
+/// The names of the scene tables a report keeps: `courant report` writes each scene's
+/// deterministic tables under these names (and no others), and a report baseline compares them.
+pub mod report_tables {
+    /// Cases (wall times dropped), or the spectra of a spectrum scene, or the contact runs.
+    pub const SUMMARY: &str = "summary.csv";
+    /// Norms per case and profile time.
+    pub const NORMS: &str = "norms.csv";
+    /// Phase speeds of a dispersion scene.
+    pub const DISPERSION: &str = "dispersion.csv";
+    /// A contact stability sweep.
+    pub const STABILITY: &str = "stability.csv";
+    /// The expectation verdicts.
+    pub const EXPECTATIONS: &str = "expectations.csv";
+}
+
+/// Every name of [`report_tables`]; a fresh file of another name is not kept by a report
+/// baseline.
+pub const REPORT_TABLES: &[&str] = &[
+    report_tables::SUMMARY,
+    report_tables::NORMS,
+    report_tables::DISPERSION,
+    report_tables::STABILITY,
+    report_tables::EXPECTATIONS,
+];
+
+/// All files of a scene's output directory, as (file name, CSV text).
+pub fn scene_files(outcome: &SceneOutcome) -> Vec<(String, String)> {
+    let full = Precision::RoundTrip;
+    let (results, verdicts) = (&outcome.results, &outcome.verdicts);
+    let mut files = Vec::new();
+    for r in results {
+        files.push((format!("{}.csv", r.case), profile_table(r).to_csv(full)));
+        if !r.histories.is_empty() {
+            files.push((
+                format!("{}.history.csv", r.case),
+                history_table(r).to_csv(full),
+            ));
+        }
+        files.push((
+            format!("{}.energy.csv", r.case),
+            energy_table(r).to_csv(full),
+        ));
+    }
+    for s in &outcome.spectra {
+        files.push((format!("{}.csv", s.case), spectrum_table(s).to_csv(full)));
+    }
+    for c in &outcome.contact {
+        files.push((format!("{}.csv", c.case), force_table(c).to_csv(full)));
+    }
+    if !outcome.contact.is_empty() {
+        files.push((
+            "summary.csv".into(),
+            contact_summary_table(&outcome.contact).to_csv(full),
+        ));
+    }
+    for sweep in &outcome.sweeps {
+        files.push(("stability.csv".into(), sweep_table(sweep).to_csv(full)));
+    }
+    if !outcome.contact.is_empty() || !outcome.sweeps.is_empty() {
+        files.push((
+            "expectations.csv".into(),
+            expectations_table(verdicts).to_csv(full),
+        ));
+        return files;
+    }
+    if !outcome.spectra.is_empty() {
+        files.push((
+            "summary.csv".into(),
+            spectrum_summary_table(&outcome.spectra).to_csv(full),
+        ));
+    } else if !outcome.dispersion.is_empty() {
+        files.push((
+            "dispersion.csv".into(),
+            dispersion_table(&outcome.dispersion).to_csv(full),
+        ));
+    } else {
+        files.push(("summary.csv".into(), summary_table(results).to_csv(full)));
+        files.push(("norms.csv".into(), norms_table(results).to_csv(full)));
+    }
+    files.push((
+        "expectations.csv".into(),
+        expectations_table(verdicts).to_csv(full),
+    ));
+    files
+}
+
+/// The deterministic tables of a scene (wall-time columns dropped), by file name: what a report
+/// keeps of `courant run`'s output, and what `courant check --baseline <report>` compares.
+pub fn scene_tables(o: &SceneOutcome) -> Vec<(String, Table)> {
+    use report_tables as t;
+    let drop = ["wall_time_s"];
+    let mut tables = Vec::new();
+    if !o.results.is_empty() {
+        tables.push((
+            t::SUMMARY.to_string(),
+            summary_table(&o.results).without(&drop),
+        ));
+        tables.push((t::NORMS.to_string(), norms_table(&o.results)));
+    }
+    if !o.spectra.is_empty() {
+        tables.push((
+            t::SUMMARY.to_string(),
+            spectrum_summary_table(&o.spectra).without(&drop),
+        ));
+    }
+    if !o.dispersion.is_empty() {
+        tables.push((t::DISPERSION.to_string(), dispersion_table(&o.dispersion)));
+    }
+    if !o.contact.is_empty() {
+        tables.push((
+            t::SUMMARY.to_string(),
+            contact_summary_table(&o.contact).without(&drop),
+        ));
+    }
+    for s in &o.sweeps {
+        tables.push((t::STABILITY.to_string(), sweep_table(s)));
+    }
+    tables.push((t::EXPECTATIONS.to_string(), expectations_table(&o.verdicts)));
+    tables
+}

@@ -1,0 +1,42 @@
+//! Comparing records with their references: exact solutions on the record's own mesh and times,
+//! error norms, diagnostics, expectation verdicts, observed orders, stability verdicts.
+//!
+//! ```text
+//!   scene ──> run ──> results ──> compare ──> report / check
+//!                                 ^^^^^^^
+//! ```
+//!
+//! - [`exact`] evaluates a case's reference (`courant-references`), [`cache`] shares exact
+//!   profiles between the cases of a scene, [`norms`] measures a profile against them;
+//! - [`case`], [`contact`], [`spectrum`], [`dispersion`], [`sweep`]: each kind of record beside
+//!   its reference; [`scene`] compares a whole scene into an [`outcome::SceneOutcome`] and
+//!   [`expect`] gives the [`verdict`]s of its expectations;
+//! - [`convergence`] (observed and fitted orders against the study's band), [`stability`]
+//!   (predicted against observed stability), [`work_precision`] (cost beside error),
+//!   [`contact_closed_forms`] (the closed forms against their asymptotes);
+//! - [`tables`], [`study_tables`], [`files`]: the CSV tables of all of the above, the files
+//!   `courant run` writes and those a report keeps.
+//!
+//! Enters: records (`results`) and the scene they came from (cases, references, expectations).
+//! Leaves: comparisons, verdicts and their tables. Must not know: how records were produced (it
+//! never runs a solver), documents, figures, the command line.
+
+pub mod cache;
+pub mod case;
+pub mod contact;
+pub mod contact_closed_forms;
+pub mod convergence;
+pub mod dispersion;
+pub mod exact;
+pub mod expect;
+pub mod files;
+pub mod norms;
+pub mod outcome;
+pub mod scene;
+pub mod spectrum;
+pub mod stability;
+pub mod study_tables;
+pub mod sweep;
+pub mod tables;
+pub mod verdict;
+pub mod work_precision;

@@ -1,0 +1,403 @@
+//! The report's "stability at the extremes" table: one row per time-stepping case of the
+//! stability scenes, with the step ratio `dt / dt_crit` against the limit of the case's scheme,
+//! the verdict theory predicts (stable when `dt < dt_crit`, marginal within 1e-9 of it, unstable
+//! above), what the run did, and whether courant's divergence guard caught it (step, node,
+//! Courant number).
+//!
+//! The limit (column `limit`) is the scheme's own: central difference (any mass) the exact
+//! `dt_crit = 2 / omega_max` of the assembled system (Hughes, *The Finite Element Method*, 2000,
+//! §9.3); Park's scheme `alpha_e = dt/dt_e <= 1` in every element, `dt_crit = min_e dt_e`
+//! (methods.md §6). Contact rows (methods.md §7) take `dt_crit` of the case's scheme
+//! (`ContactCriticalStep::applicable`: the contact-active pencil `(K + K_p, M + M_p)` for CD with
+//! (bi)penalty, the predictor-corrector's `sqrt((m_c + m_p)/k_s)`). Linear theory of the *closed*
+//! contact predicts growth above it; a unilateral contact opens as soon as the contact-local mode
+//! grows, so a run between that limit and the contact-free one is predicted `contact-unstable`:
+//! bounded, possibly pumping energy into the bars, while above the contact-free limit the bulk
+//! modes grow and the run is `unstable`.
+//!
+//! "Stable" promises bounded energy, not only a run that finishes: a completed run whose
+//! `energy_ratio` exceeds [`ENERGY_BAND`] is observed as `energy growth` and, where stability
+//! was predicted, disagrees with the prediction.
+
+use super::case::CaseResult;
+use super::contact::ContactResult;
+use super::outcome::SceneOutcome;
+use crate::results::case::Status;
+use crate::results::table::Table;
+use crate::scene::cases::Scene;
+use crate::scene::studies::STABILITY_SCENES;
+use courant_solver::contact::StepLimit;
+use courant_solver::{EnergyLog, EnergySample};
+
+/// Width of the "marginal" band of `dt / dt_crit` around 1.
+const MARGINAL: f64 = 1e-9;
+
+/// Largest `energy_ratio` of a run observed as `stable`; above it a completed run shows
+/// `energy growth`. A passive system (contact can only keep or dissipate energy; a loaded bar
+/// holds what the load put in) has ratio 1 up to what the measure itself adds. Contact rows
+/// measure central difference's conserved energy `1/2 v^{n-1/2} M v^{n+1/2} + 1/2 u K u` left in
+/// the bodies at the end (`ContactResult::energy_ratio_conserved`); time-stepping rows the
+/// largest full-step `T + U` over the energy supplied, sampled every `energy_every` steps.
+/// Measured in the report: the runs that cannot gain energy sit at 0.990-1.101
+/// (predictor-corrector contact rows, `kappa <= 1`; 1.101 at 1.5 of its limit, beta_s = 1e8) and
+/// 0.9975-1.001 (stable time-stepping rows, CD and Park), CD with (bi)penalty at beta_s = 1 and
+/// 0.99 of its limit at 1.008-1.014; the runs that gain sit at 2.61 and above (CD with
+/// (bi)penalty at beta_s >= 1e4 from 0.99 of its limit, at beta_s = 1 from 1.00). 1.5 separates
+/// the two with a wide margin on both sides.
+pub const ENERGY_BAND: f64 = 1.5;
+
+/// The predicted verdict for a step ratio `dt / dt_crit`.
+pub fn predicted(ratio: f64) -> &'static str {
+    if ratio > 1.0 + MARGINAL {
+        "unstable"
+    } else if ratio >= 1.0 - MARGINAL {
+        "marginal"
+    } else {
+        "stable"
+    }
+}
+
+/// The predicted verdict for a step ratio against a limit that is only sufficient (Park's
+/// `alpha_e <= 1` on a graded mesh): as [`predicted`] up to the limit, `beyond bound` above it,
+/// where theory predicts nothing.
+pub fn predicted_by_bound(ratio: f64) -> &'static str {
+    match predicted(ratio) {
+        "unstable" => "beyond bound",
+        verdict => verdict,
+    }
+}
+
+/// The predicted verdict of a contact run from `dt / dt_crit` of its scheme and
+/// `dt / dt_free` of the contact-free bodies: as [`predicted`], except that a step above the
+/// contact limit but below the contact-free one is `contact-unstable` (bounded by the opening of
+/// the unilateral contact).
+pub fn predicted_contact(ratio: f64, ratio_free: f64) -> &'static str {
+    match predicted(ratio) {
+        "unstable" if predicted(ratio_free) == "stable" => "contact-unstable",
+        verdict => verdict,
+    }
+}
+
+/// Energy ratio of a time-stepping run: the largest logged mechanical energy `T + U` over the
+/// largest energy supplied, `max(E^0, |W|)` over the logged samples (`W` the external work): 1
+/// up to the full-step kinetic term for a run that only holds what it was given, far above 1 for
+/// a run that gains energy (courant's guard stops a run at 1e6 of the same kind of ratio).
+/// `None` when nothing was supplied.
+pub fn time_stepping_energy_ratio(log: &EnergyLog) -> Option<f64> {
+    let mechanical = |s: &EnergySample| s.kinetic + s.strain;
+    let initial = log.samples.first().map_or(0.0, mechanical);
+    let supplied = log
+        .samples
+        .iter()
+        .map(|s| s.work.abs())
+        .fold(initial, f64::max);
+    let peak = log.samples.iter().map(mechanical).fold(0.0, |m: f64, e| {
+        if e.is_nan() { f64::INFINITY } else { m.max(e) }
+    });
+    (supplied > 0.0).then(|| peak / supplied)
+}
+
+/// One row of the table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StabilityRow {
+    /// Scene name.
+    pub scene: String,
+    /// Case name.
+    pub case: String,
+    /// The limit `dt_crit` stands for: `2/omega_max`, `alpha_e <= 1`, or a contact limit.
+    pub limit: &'static str,
+    /// `dt / dt_crit`.
+    pub ratio: f64,
+    /// Predicted verdict.
+    pub predicted: &'static str,
+    /// True when the run completed every step.
+    pub completed: bool,
+    /// The guard's report when the run diverged.
+    pub caught: Option<String>,
+    /// Steps taken.
+    pub steps: usize,
+    /// Relative energy-balance error of the run (0 when not logged; none for contact).
+    pub energy_balance: Option<f64>,
+    /// Contact: central difference's conserved energy of the real masses at the end over the
+    /// initial energy (a diverged run: `kinetic + strain` where the guard stopped it); time
+    /// stepping: [`time_stepping_energy_ratio`].
+    pub energy_ratio: Option<f64>,
+}
+
+impl StabilityRow {
+    /// Build a row from a case result; `dt_crit` is the limit of the case's scheme.
+    pub fn new(scene: &str, r: &CaseResult) -> Self {
+        let ratio = r.dt / r.limit.dt();
+        let caught = match &r.status {
+            Status::Completed => None,
+            Status::Diverged(d) => Some(format!(
+                "step {}, node {}, Co {:.4}",
+                d.step, d.node, d.courant
+            )),
+        };
+        Self {
+            scene: scene.to_string(),
+            case: r.case.clone(),
+            limit: r.limit.name(),
+            ratio,
+            predicted: if r.limit.sufficient_only() {
+                predicted_by_bound(ratio)
+            } else {
+                predicted(ratio)
+            },
+            completed: caught.is_none(),
+            caught,
+            steps: r.steps,
+            energy_balance: Some(r.energy.relative_balance_error()),
+            energy_ratio: time_stepping_energy_ratio(&r.energy),
+        }
+    }
+
+    /// Build a row from a contact result.
+    pub fn from_contact(scene: &str, r: &ContactResult) -> Self {
+        let critical = &r.run.critical;
+        let ratio = r.run.dt / critical.applicable;
+        let caught = r
+            .diverged
+            .as_ref()
+            .map(|d| format!("step {}, node {}, Co {:.4}", d.step, d.node, d.courant));
+        Self {
+            scene: scene.to_string(),
+            case: r.case.clone(),
+            limit: match critical.binding {
+                StepLimit::ContactFree => "2/omega_max (contact-free)",
+                StepLimit::ContactActive => "2/omega_max (contact-active)",
+                StepLimit::PredictorCorrector => "k_s dt^2/(m_c + m_p) <= 1",
+            },
+            ratio,
+            predicted: predicted_contact(ratio, r.run.dt / critical.contact_free),
+            completed: caught.is_none(),
+            caught,
+            steps: r.run.steps,
+            energy_balance: None,
+            // A completed run: CD's conserved energy left in the bodies; a diverged one: the
+            // guard's own measure (kinetic + strain) where it stopped the run, since the
+            // staggered energy is not positive above the critical step.
+            energy_ratio: Some(if r.diverged.is_none() {
+                r.energy_ratio_conserved
+            } else {
+                r.energy_ratio
+            }),
+        }
+    }
+
+    /// True when the run completed with its energy ratio above [`ENERGY_BAND`] (or NaN).
+    pub fn energy_growth(&self) -> bool {
+        self.completed
+            && self
+                .energy_ratio
+                .is_some_and(|e| e > ENERGY_BAND || e.is_nan())
+    }
+
+    /// What the run did: `diverged` (the guard stopped it), `energy growth x<ratio>` (completed,
+    /// energy beyond [`ENERGY_BAND`]) or `stable` (completed, energy bounded).
+    pub fn observed(&self) -> String {
+        if !self.completed {
+            "diverged".into()
+        } else if self.energy_growth() {
+            format!(
+                "energy growth x{:.3}",
+                self.energy_ratio.unwrap_or(f64::NAN)
+            )
+        } else {
+            "stable".into()
+        }
+    }
+
+    /// Theory and run agree: a predicted-stable run completes with bounded energy, a
+    /// predicted-unstable run is caught by the guard, a contact-unstable run stays bounded
+    /// (completes, whatever energy the contact pumps in); a marginal run may do either. `None`
+    /// beyond a sufficient bound, where nothing was predicted.
+    pub fn agrees(&self) -> Option<bool> {
+        match self.predicted {
+            "stable" => Some(self.completed && !self.energy_growth()),
+            "contact-unstable" => Some(self.completed),
+            "unstable" => Some(self.caught.is_some()),
+            "beyond bound" => None,
+            _ => Some(true),
+        }
+    }
+}
+
+/// The rows of one scene: every time-stepping and contact case of a scene listed in
+/// [`STABILITY_SCENES`], none for another scene.
+pub fn stability_rows(scene: &Scene, outcome: &SceneOutcome) -> Vec<StabilityRow> {
+    if !STABILITY_SCENES.contains(&scene.name.as_str()) {
+        return Vec::new();
+    }
+    let stepping = outcome
+        .results
+        .iter()
+        .map(|r| StabilityRow::new(&scene.name, r));
+    let contact = outcome
+        .contact
+        .iter()
+        .map(|r| StabilityRow::from_contact(&scene.name, r));
+    stepping.chain(contact).collect()
+}
+
+/// `scene, case, limit, dt_over_dt_crit, predicted, observed, guard, steps, energy_balance,
+/// energy_ratio, agrees`.
+pub fn stability_table(rows: &[StabilityRow]) -> Table {
+    let mut table = Table::new(&[
+        "scene",
+        "case",
+        "limit",
+        "dt_over_dt_crit",
+        "predicted",
+        "observed",
+        "guard",
+        "steps",
+        "energy_balance",
+        "energy_ratio",
+        "agrees",
+    ]);
+    for row in rows {
+        table.push(vec![
+            row.scene.as_str().into(),
+            row.case.as_str().into(),
+            row.limit.into(),
+            row.ratio.into(),
+            row.predicted.into(),
+            row.observed().into(),
+            row.caught.clone().unwrap_or_else(|| "-".into()).into(),
+            row.steps.into(),
+            row.energy_balance.into(),
+            row.energy_ratio.into(),
+            match row.agrees() {
+                Some(true) => "yes",
+                Some(false) => "no",
+                None => "not predicted",
+            }
+            .into(),
+        ]);
+    }
+    table
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Source of truth: the module's verdict rule (marginal within 1e-9 of dt_crit). Proves the
+    /// bands: below, within 1e-9 of, and above the critical step.
+    #[test]
+    fn predicted_verdict_bands() {
+        assert_eq!(predicted(0.99), "stable");
+        assert_eq!(predicted(1.0 - 1e-6), "stable");
+        assert_eq!(predicted(1.0), "marginal");
+        assert_eq!(predicted(1.0 + 1e-10), "marginal");
+        assert_eq!(predicted(1.01), "unstable");
+        // A sufficient bound (Park's alpha_e <= 1 on a graded mesh) predicts nothing above it.
+        assert_eq!(predicted_by_bound(0.99), "stable");
+        assert_eq!(predicted_by_bound(1.0), "marginal");
+        assert_eq!(predicted_by_bound(1.01), "beyond bound");
+    }
+
+    fn row(predicted: &'static str, completed: bool, energy_ratio: Option<f64>) -> StabilityRow {
+        StabilityRow {
+            scene: "s".into(),
+            case: "c".into(),
+            limit: "2/omega_max",
+            ratio: 1.0,
+            predicted,
+            completed,
+            caught: (!completed).then(|| "step 5, node 0, Co 1.0100".into()),
+            steps: 5,
+            energy_balance: None,
+            energy_ratio,
+        }
+    }
+
+    /// Source of truth: the meaning of "stable" (bounded energy, [`ENERGY_BAND`] = 1.5).
+    /// Proves: a predicted-stable run that completes with its energy multiplied by 14 is observed
+    /// as energy growth and disagrees; within the band (or with no ratio) it is stable and agrees;
+    /// contact-unstable rows agree whenever they complete; marginal rows agree either way;
+    /// predicted-unstable rows agree only when caught.
+    #[test]
+    fn energy_growth_is_not_stability() {
+        let growing = row("stable", true, Some(14.29));
+        assert!(growing.energy_growth());
+        assert_eq!(growing.observed(), "energy growth x14.290");
+        assert_eq!(growing.agrees(), Some(false));
+        for bounded in [Some(0.99), Some(1.104), Some(ENERGY_BAND), None] {
+            let r = row("stable", true, bounded);
+            assert_eq!(r.observed(), "stable", "{bounded:?}");
+            assert_eq!(r.agrees(), Some(true), "{bounded:?}");
+        }
+        assert!(row("stable", true, Some(f64::NAN)).energy_growth());
+        assert_eq!(
+            row("contact-unstable", true, Some(62.6)).agrees(),
+            Some(true)
+        );
+        assert_eq!(
+            row("contact-unstable", false, Some(62.6)).agrees(),
+            Some(false)
+        );
+        assert_eq!(row("marginal", true, Some(29.4)).agrees(), Some(true));
+        assert_eq!(row("marginal", false, None).agrees(), Some(true));
+        assert_eq!(row("beyond bound", true, Some(1.0)).agrees(), None);
+        assert_eq!(row("beyond bound", false, None).agrees(), None);
+        let caught = row("unstable", false, Some(1e6));
+        assert_eq!(caught.observed(), "diverged");
+        assert_eq!(caught.agrees(), Some(true));
+        assert_eq!(row("unstable", true, Some(1.0)).agrees(), Some(false));
+    }
+
+    fn sample(kinetic: f64, strain: f64, work: f64) -> EnergySample {
+        EnergySample {
+            step: 0,
+            time: 0.0,
+            kinetic,
+            kinetic_staggered: kinetic,
+            strain,
+            work,
+            balance_error: 0.0,
+        }
+    }
+
+    /// Source of truth: the definition, largest T + U over the largest of E^0 and |W|.
+    /// Proves: a loaded bar that holds what the load put in reads 1, one that doubles it reads
+    /// 2, an initial-value run uses its initial energy, a run that was never supplied any energy
+    /// has no ratio, and a NaN state counts as unbounded.
+    #[test]
+    fn time_stepping_energy_ratio_is_peak_energy_over_energy_supplied() {
+        let log = |samples: Vec<EnergySample>| EnergyLog {
+            samples,
+            ..EnergyLog::default()
+        };
+        let held = log(vec![
+            sample(0.0, 0.0, 0.0),
+            sample(0.5, 0.5, 1.0),
+            sample(1.0, 1.0, 2.0),
+            sample(0.1, 0.1, 0.2),
+        ]);
+        assert_eq!(time_stepping_energy_ratio(&held), Some(1.0));
+        let doubled = log(vec![sample(0.0, 0.0, 0.0), sample(2.0, 2.0, 2.0)]);
+        assert_eq!(time_stepping_energy_ratio(&doubled), Some(2.0));
+        let free = log(vec![sample(0.5, 0.0, 0.0), sample(0.25, 0.5, 0.0)]);
+        assert_eq!(time_stepping_energy_ratio(&free), Some(1.5));
+        assert_eq!(
+            time_stepping_energy_ratio(&log(vec![sample(0.0, 0.0, 0.0)])),
+            None
+        );
+        let nan = log(vec![sample(0.0, 0.0, 0.0), sample(f64::NAN, 0.0, 1.0)]);
+        assert_eq!(time_stepping_energy_ratio(&nan), Some(f64::INFINITY));
+    }
+
+    /// Source of truth: methods.md §7 (unilateral contact). Proves: above the contact limit but
+    /// below the contact-free one the closed-contact mode grows, the unilateral contact bounds
+    /// it; above both the run is unstable.
+    #[test]
+    fn contact_verdict_bands() {
+        assert_eq!(predicted_contact(0.99, 0.5), "stable");
+        assert_eq!(predicted_contact(1.01, 0.5), "contact-unstable");
+        assert_eq!(predicted_contact(2.0, 1.1), "unstable");
+        assert_eq!(predicted_contact(1.0, 1.0), "marginal");
+    }
+}

@@ -1,0 +1,66 @@
+//! The contact stability sweep (seed Fig. 3) beside the closed forms of `courant-references`
+//! (semi-infinite bar against a rigid wall, methods.md §7).
+
+use crate::results::sweep::SweepRecord;
+use courant_references::ReferenceError;
+use courant_references::contact as closed;
+use std::time::Duration;
+
+/// One row of the stability sweep.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SweepRow {
+    /// `beta_s`.
+    pub beta_s: f64,
+    /// Penalty ratio, `None` for penalty only.
+    pub ratio: Option<f64>,
+    /// Critical Courant number of the contact-active system from the solver's eigenvalues.
+    pub courant: f64,
+    /// The closed form of `courant-references` (semi-infinite bar).
+    pub closed_form: f64,
+}
+
+/// The stability sweep's rows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepResult {
+    /// Rows, curve by curve.
+    pub rows: Vec<SweepRow>,
+    /// Wall time.
+    pub wall_time: Duration,
+}
+
+impl SweepResult {
+    /// Largest `|courant - closed_form| / closed_form`.
+    pub fn deviation(&self) -> f64 {
+        self.rows
+            .iter()
+            .map(|r| (r.courant - r.closed_form).abs() / r.closed_form)
+            .fold(0.0, f64::max)
+    }
+}
+
+/// Put the closed-form critical Courant number beside every point of the sweep.
+///
+/// # Errors
+/// A closed form refuses its parameters (a `beta_s` or ratio it is not defined for).
+pub fn compare_sweep(record: SweepRecord) -> Result<SweepResult, ReferenceError> {
+    let rows = record
+        .points
+        .iter()
+        .map(|p| {
+            let closed_form = match p.ratio {
+                None => closed::signorini_critical_courant_penalty(p.beta_s),
+                Some(r) => closed::signorini_critical_courant_ratio(p.beta_s, r),
+            }?;
+            Ok(SweepRow {
+                beta_s: p.beta_s,
+                ratio: p.ratio,
+                courant: p.courant,
+                closed_form,
+            })
+        })
+        .collect::<Result<_, ReferenceError>>()?;
+    Ok(SweepResult {
+        rows,
+        wall_time: record.wall_time,
+    })
+}

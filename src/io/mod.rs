@@ -1,0 +1,14 @@
+//! The bottom of the pipeline: what every stage may use and that knows no stage.
+//!
+//! - [`atomic`]: files and directories written whole or not at all (staged, then renamed or
+//!   exchanged into place), with recovery of interrupted writes.
+//! - [`clock`]: ISO 8601 UTC dates for reports and JUnit timestamps.
+//! - [`parallel`]: collecting parallel work in input order, so that the first error (and every
+//!   result) does not depend on the thread count.
+//!
+//! Enters: paths, file contents, results of parallel maps. Leaves: files on disk, dates. Must
+//! not know: scenes, solvers, records, verdicts.
+
+pub mod atomic;
+pub mod clock;
+pub mod parallel;

@@ -1,0 +1,319 @@
+//! The report's figures of a scene, as SVG strings (plotted by [`super::plot`]): profiles
+//! against the exact solution, spectra errors, contact force histories and the contact
+//! stability graph. A figure with nothing plottable (e.g. errors that are exactly zero on a
+//! log axis) is left out. Scenes with more cases than one legible figure holds get several
+//! figures, split by scheme and mass kind ([`split`]); a case that is not drawn is named in a
+//! caption with the reason.
+
+use super::figure_parts::{
+    MAX_CASES, caption, chart_naming_omissions, names, numbered, part_file, split,
+};
+use super::plot::{Axes, PALETTE_SIZE, Series, SeriesStyle, line_chart};
+use crate::compare::case::CaseResult;
+use crate::compare::outcome::SceneOutcome;
+use crate::compare::stability::ENERGY_BAND;
+use crate::compare::sweep::{SweepResult, SweepRow};
+use crate::results::case::Status;
+use crate::scene::cases::Scene;
+
+/// `(file name, caption, svg)` figures of a scene. Every case appears in some figure or is named
+/// in a caption as not shown, with the reason (diverged before that time, energy blow-up, or no
+/// drawable point).
+pub fn scene_figures(scene: &Scene, outcome: &SceneOutcome) -> Vec<(String, String, String)> {
+    let mut figures = Vec::new();
+    profile_figures(scene, outcome, &mut figures);
+    // Spectra: relative frequency error per mode for each mass kind.
+    for s in &outcome.spectra {
+        let Some(exact) = &s.continuum else { continue };
+        let n = s.modes.len() as f64;
+        let series: Vec<Series> = s
+            .masses
+            .iter()
+            .zip(&s.computed)
+            .map(|(m, w)| {
+                let points = s
+                    .modes
+                    .iter()
+                    .zip(w)
+                    .zip(exact)
+                    .filter(|(_, e)| **e > 0.0)
+                    .map(|((&mode, w), e)| (mode as f64 / n, w / e - 1.0))
+                    .collect();
+                Series::new(m.label(), points, SeriesStyle::Line)
+            })
+            .collect();
+        let title = format!("{}: relative frequency error, {}", scene.name, s.case);
+        if let Ok(svg) = line_chart(
+            &Axes::new(title.clone(), "mode / modes", "omega_h / omega - 1"),
+            &series,
+        ) {
+            figures.push((format!("spectrum_{}.svg", s.case), title, svg));
+        }
+    }
+    force_figures(scene, outcome, &mut figures);
+    stability_figures(scene, outcome, &mut figures);
+    figures
+}
+
+/// Stress profiles at each profile time, every case beside the exact element averages, split by
+/// scheme and mass kind into figures of at most [`MAX_CASES`] cases; runs that diverged after
+/// the profile time come last, in figures of their own.
+fn profile_figures(
+    scene: &Scene,
+    outcome: &SceneOutcome,
+    figures: &mut Vec<(String, String, String)>,
+) {
+    let Some(longest) = outcome.results.iter().max_by_key(|r| r.profiles.len()) else {
+        return;
+    };
+    for (k, profile) in longest.profiles.iter().enumerate() {
+        let (shown, missing): (Vec<_>, Vec<_>) = outcome
+            .results
+            .iter()
+            .partition(|r| r.profiles.get(k).is_some());
+        // Runs that diverged later grow without bound and would flatten every other curve:
+        // they get figures of their own, after the others.
+        let (completed, diverged): (Vec<_>, Vec<_>) = shown
+            .into_iter()
+            .partition(|r| !matches!(r.status, Status::Diverged(_)));
+        let key = |r: &&CaseResult| format!("{} {}", r.scheme, r.critical.mass.label());
+        let calm = split(completed.iter().map(|r| (key(r), *r)).collect(), MAX_CASES);
+        let calm_parts = calm.len();
+        let mut parts = calm;
+        parts.extend(split(
+            diverged.iter().map(|r| (key(r), *r)).collect(),
+            MAX_CASES,
+        ));
+        let title = format!("{}: stress at t = {:.4}", scene.name, profile.time);
+        for (j, part) in parts.iter().enumerate() {
+            let cases: Vec<Series> = part
+                .iter()
+                .map(|r| {
+                    let p = &r.profiles[k];
+                    Series::new(
+                        r.case.clone(),
+                        p.x.iter().copied().zip(p.stress.iter().copied()).collect(),
+                        SeriesStyle::Line,
+                    )
+                })
+                .collect();
+            let exact: Vec<Series> = part
+                .iter()
+                .find_map(|r| {
+                    let p = &r.profiles[k];
+                    p.reference.as_ref().map(|reference| {
+                        Series::new(
+                            "exact",
+                            p.x.iter().copied().zip(reference.iter().copied()).collect(),
+                            SeriesStyle::Dashed,
+                        )
+                    })
+                })
+                .into_iter()
+                .collect();
+            let mut notes = Vec::new();
+            if j >= calm_parts {
+                notes.push("these runs diverged later (status in the summary)".to_string());
+            }
+            if j == 0 && !missing.is_empty() {
+                notes.push(format!(
+                    "not shown, diverged before t = {:.4}: {}",
+                    profile.time,
+                    names(missing.iter().map(|r| r.case.as_str()))
+                ));
+            }
+            let part_title = numbered(&title, j, parts.len());
+            let axes = Axes::new(part_title.clone(), "x", "stress");
+            if let Some(svg) = chart_naming_omissions(&axes, cases, exact, &mut notes) {
+                let file = part_file(&format!("profile_{k}"), j, parts.len());
+                let caption = caption(
+                    &part_title,
+                    part.iter().map(|r| r.case.as_str()),
+                    &parts,
+                    outcome.results.len(),
+                    &notes,
+                );
+                figures.push((file, caption, svg));
+            }
+        }
+    }
+}
+
+/// Contact force histories beside 1D wave theory, one figure per scheme or group of schemes of
+/// at most [`MAX_CASES`] cases. Diverged runs and runs that pumped energy into the bars (more
+/// than [`ENERGY_BAND`] times the initial energy left in them, the
+/// measure of the stability table) would swamp the axis: the caption names them instead.
+fn force_figures(
+    scene: &Scene,
+    outcome: &SceneOutcome,
+    figures: &mut Vec<(String, String, String)>,
+) {
+    if outcome.contact.is_empty() {
+        return;
+    }
+    let (shown, unstable): (Vec<_>, Vec<_>) = outcome
+        .contact
+        .iter()
+        .partition(|c| c.diverged.is_none() && c.energy_ratio_conserved <= ENERGY_BAND);
+    let keyed = shown
+        .into_iter()
+        .map(|c| (c.run.scheme.label().to_string(), c))
+        .collect();
+    let parts = split(keyed, MAX_CASES);
+    let title = format!("{}: contact force", scene.name);
+    let mut first_notes = Vec::new();
+    if !unstable.is_empty() {
+        first_notes.push(format!(
+            "not shown, diverged or left with more than {} times the initial energy (see \
+             energy_ratio_conserved and status in the summary): {}",
+            ENERGY_BAND,
+            names(unstable.iter().map(|c| c.case.as_str()))
+        ));
+    }
+    // Nothing stable: one figure of the reference alone, whose caption names the cases.
+    let parts = if parts.is_empty() {
+        vec![Vec::new()]
+    } else {
+        parts
+    };
+    for (j, part) in parts.iter().enumerate() {
+        let cases: Vec<Series> = part
+            .iter()
+            .map(|c| {
+                Series::new(
+                    c.case.clone(),
+                    c.run.history.iter().map(|s| (s.time, s.force)).collect(),
+                    SeriesStyle::Line,
+                )
+            })
+            .collect();
+        // The reference sampled as finely as any case of the figure.
+        let finest = part
+            .iter()
+            .copied()
+            .max_by_key(|c| c.run.history.len())
+            .or(outcome.contact.first());
+        let exact: Vec<Series> = finest
+            .map(|c| {
+                Series::new(
+                    "1D wave theory",
+                    c.run
+                        .history
+                        .iter()
+                        .map(|s| s.time)
+                        .zip(c.reference.iter().copied())
+                        .collect(),
+                    SeriesStyle::Dashed,
+                )
+            })
+            .into_iter()
+            .collect();
+        let mut notes = if j == 0 {
+            std::mem::take(&mut first_notes)
+        } else {
+            Vec::new()
+        };
+        let part_title = numbered(&title, j, parts.len());
+        let axes = Axes::new(part_title.clone(), "t", "force");
+        if let Some(svg) = chart_naming_omissions(&axes, cases, exact, &mut notes) {
+            let file = part_file("force", j, parts.len());
+            let caption = caption(
+                &part_title,
+                part.iter().map(|c| c.case.as_str()),
+                &parts,
+                outcome.contact.len(),
+                &notes,
+            );
+            figures.push((file, caption, svg));
+        }
+    }
+}
+
+/// The contact stability graph (seed Fig. 3), one figure per part of [`stability_charts`].
+fn stability_figures(
+    scene: &Scene,
+    outcome: &SceneOutcome,
+    figures: &mut Vec<(String, String, String)>,
+) {
+    for (s, sweep) in outcome.sweeps.iter().enumerate() {
+        let title = format!(
+            "{}: critical Courant number (closed form within {:.1e})",
+            scene.name,
+            sweep.deviation()
+        );
+        let parts = stability_charts(sweep);
+        for (j, (curves, series)) in parts.iter().enumerate() {
+            let part_title = numbered(&title, j, parts.len());
+            let Ok(svg) = line_chart(&Axes::log_log(part_title.clone(), "beta_s", "Cr"), series)
+            else {
+                continue;
+            };
+            let file = if parts.len() == 1 && s == 0 {
+                "stability.svg".to_string()
+            } else {
+                format!("stability_{}_{}.svg", s + 1, j + 1)
+            };
+            let overlap = if sweep.rows.iter().any(|r| r.ratio.is_some_and(|r| r <= 1.0)) {
+                "; the curves of r <= 1 coincide (Cr = 1) and overlap"
+            } else {
+                ""
+            };
+            let caption = format!(
+                "{part_title}: the solver's eigenvalues of the contact-active system (points) and \
+                 the closed form of courant-references (dashed line of the same colour) for {}{overlap}.",
+                names(curves.iter().map(String::as_str))
+            );
+            figures.push((file, caption, svg));
+        }
+    }
+}
+
+/// The series of the contact stability graph (seed Fig. 3), in parts of at most the palette's
+/// 8 curves: per curve (penalty only, each ratio r, named as in the legend) the solver's critical
+/// Courant numbers as points and the closed form of `courant-references` (methods.md §7) as a
+/// dashed line, both in the curve's palette colour. The closed forms come first, so the points
+/// are drawn over them, and share one legend entry, `closed form (dashed)`.
+pub fn stability_charts(sweep: &SweepResult) -> Vec<(Vec<String>, Vec<Series>)> {
+    let mut curves: Vec<(String, Vec<&SweepRow>)> = Vec::new();
+    for row in &sweep.rows {
+        let name = row
+            .ratio
+            .map_or("penalty only".to_string(), |r| format!("r = {r}"));
+        match curves.iter_mut().find(|c| c.0 == name) {
+            Some(c) => c.1.push(row),
+            None => curves.push((name, vec![row])),
+        }
+    }
+    let parts = split(
+        curves.into_iter().map(|c| (c.0.clone(), c)).collect(),
+        PALETTE_SIZE,
+    );
+    parts
+        .into_iter()
+        .map(|part| {
+            let closed = part.iter().enumerate().map(|(colour, (_, rows))| {
+                let closed = Series::new(
+                    "closed form (dashed)",
+                    rows.iter().map(|r| (r.beta_s, r.closed_form)).collect(),
+                    SeriesStyle::Dashed,
+                )
+                .with_colour(colour);
+                if colour == 0 {
+                    closed
+                } else {
+                    closed.without_legend()
+                }
+            });
+            let solver = part.iter().enumerate().map(|(colour, (name, rows))| {
+                Series::new(
+                    name.clone(),
+                    rows.iter().map(|r| (r.beta_s, r.courant)).collect(),
+                    SeriesStyle::Points,
+                )
+                .with_colour(colour)
+            });
+            let series = closed.chain(solver).collect();
+            (part.into_iter().map(|(name, _)| name).collect(), series)
+        })
+        .collect()
+}

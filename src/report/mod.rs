@@ -1,0 +1,89 @@
+//! `courant report`: every built-in scene, the convergence and work-precision studies and the
+//! stability table in one document, rendered as Markdown (`index.md`) and self-contained HTML
+//! (`index.html`) with every table as CSV and every figure as SVG beside it. Timings go to
+//! `timing.md` and `timing.*` only ([`timing`]), so the rest changes only when results do
+//! (numbers in the document are rounded to 4 significant digits, CSVs keep 10).
+//!
+//! ```text
+//!   scene ──> run ──> results ──> compare ──> report / check
+//!                                             ^^^^^^
+//! ```
+//!
+//! - [`document`]: the document model ([`document::Block`], [`document::Page`]) and its two
+//!   renderings; [`plot`]: SVG line charts; [`figures`] and [`figure_parts`]: a scene's figures,
+//!   split so that each stays legible;
+//! - sections: [`summary`], [`scenes`], [`convergence`], [`work_precision`], [`stability`],
+//!   [`timing`] (with [`bench_table`]).
+//!
+//! Enters: compared outcomes (`compare`, run by `pipeline`). Leaves: the report's files, in
+//! memory (written whole by `io::atomic`). Must not know: how outcomes are run or compared, the
+//! command line.
+
+pub mod bench_table;
+pub mod convergence;
+pub mod document;
+pub mod figure_parts;
+pub mod figures;
+pub mod plot;
+pub mod scenes;
+pub mod stability;
+pub mod summary;
+pub mod timing;
+pub mod work_precision;
+
+use crate::compare::stability::stability_rows;
+use crate::pipeline::report_runs::ReportRuns;
+use crate::scene::cases::Scene;
+use document::{Block, Page};
+
+/// A generated report: files relative to the report directory.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Report {
+    /// `(relative path, contents)`.
+    pub files: Vec<(String, String)>,
+    /// True when every expectation held.
+    pub passed: bool,
+}
+
+/// Render the report of `scenes` from their runs (`runs.scenes` in the same order).
+///
+/// # Errors
+/// A contact closed form of the stability section refuses its parameters.
+pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
+    let failed = summary::failures(scenes, &runs.scenes, &runs.convergence);
+    let mut page = summary::head(scenes, &runs.scenes, &runs.convergence, &failed);
+    for ((outcome, _), scene) in runs.scenes.iter().zip(scenes) {
+        page.extend(scenes::section(scene, outcome));
+    }
+    page.extend(convergence::section(&runs.convergence));
+    page.extend(work_precision::section(&runs.work));
+    let rows: Vec<_> = runs
+        .scenes
+        .iter()
+        .zip(scenes)
+        .flat_map(|((o, _), s)| stability_rows(s, o))
+        .collect();
+    page.extend(stability::section(&rows)?);
+    page.push(Block::Heading(2, "How this report was made".into()));
+    page.push(Block::Paragraph(format!(
+        "By `cargo run --release -- report` (courant {}): every built-in scene ({} of them) and {} \
+         convergence studies, their scenes, studies and cases run in parallel; the content is identical whatever the thread count. The \
+         commit, date, CPU, thread count and rustc of this run are in `timing.md`, with the wall times: \
+         they change from run to run and machine to machine, while everything on this page changes only \
+         when a result does (CI regenerates the report and fails when this page is out of date).",
+        env!("CARGO_PKG_VERSION"),
+        scenes.len(),
+        runs.convergence.len()
+    )));
+    let Page { blocks, mut files } = page;
+    files.push(("index.md".into(), document::markdown(&blocks)));
+    files.push((
+        "index.html".into(),
+        document::html("courant verification report", &blocks),
+    ));
+    files.extend(timing::timing_files(scenes, runs));
+    Ok(Report {
+        files,
+        passed: failed.is_empty(),
+    })
+}

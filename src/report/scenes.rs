@@ -1,0 +1,31 @@
+//! One section per scene: its description and source of truth, its figures, its tables (those a
+//! report baseline compares) and its expectation verdicts.
+
+use super::document::{Block, Page};
+use super::figures::scene_figures;
+use crate::compare::files::scene_tables;
+use crate::compare::outcome::SceneOutcome;
+use crate::scene::cases::Scene;
+
+/// The section of one scene.
+pub fn section(scene: &Scene, outcome: &SceneOutcome) -> Page {
+    let mut page = Page::default();
+    page.push(Block::Heading(2, scene.name.clone()));
+    page.push(Block::Paragraph(format!(
+        "{} Source of truth: {}.",
+        scene.description, scene.source
+    )));
+    for (svg_name, caption, svg) in scene_figures(scene, outcome) {
+        page.figure(format!("{}/{svg_name}", scene.name), svg, caption);
+    }
+    for (file, table) in scene_tables(outcome) {
+        page.table(table, format!("{}/{file}", scene.name));
+    }
+    if !outcome.verdicts.is_empty() {
+        page.push(Block::Paragraph("Expectations:".into()));
+        page.push(Block::List(
+            outcome.verdicts.iter().map(|v| v.describe()).collect(),
+        ));
+    }
+    page
+}

@@ -1,0 +1,32 @@
+//! Running a contact-impact case (seed Figs. 4-5) with courant's solver.
+
+use crate::results::contact::ContactRecord;
+use crate::scene::contact::ContactCase;
+use courant_solver::InputError;
+use courant_solver::contact::{ContactError, ContactRequest};
+use std::time::Instant;
+
+/// Run one contact case. A divergence (allowed unstable runs only) is recorded, not an error.
+///
+/// # Errors
+/// The solver refuses the case (input, or a step beyond the stability limit).
+pub fn run_contact(case: &ContactCase) -> Result<ContactRecord, InputError> {
+    let started = Instant::now();
+    let request = ContactRequest {
+        history_every: case.history_every,
+        profile_steps: Vec::new(),
+    };
+    let (run, diverged) = match case.integrator.run(&case.problem, case.steps, &request) {
+        Ok(run) => (run, None),
+        Err(ContactError::Diverged { error, partial }) => (*partial, Some(error)),
+        Err(ContactError::Input(e)) => return Err(e),
+        Err(ContactError::Unstable(e)) => return Err(InputError::Other(e.to_string())),
+    };
+    Ok(ContactRecord {
+        case: case.name.clone(),
+        penalty: case.penalty,
+        run,
+        diverged,
+        wall_time: started.elapsed(),
+    })
+}

@@ -1,0 +1,54 @@
+//! Running a time-stepping case with courant's solver.
+
+use crate::results::case::{CaseRecord, Status};
+use crate::scene::cases::Case;
+use courant_solver::{CentralDifference, RunError};
+use std::time::Instant;
+
+/// What [`CaseRecord::scheme`] says of an integrator: `cd`, or Park's stepping, variant and
+/// blend, e.g. `park-lts-free theta=0.5`.
+pub fn scheme_label(integrator: &CentralDifference) -> String {
+    integrator.park.map_or_else(
+        || "cd".to_string(),
+        |park| format!("{} theta={}", park.label(), park.theta),
+    )
+}
+
+/// Run a case. A divergence (allowed unstable runs only) is a status, not an error: its partial
+/// outputs are kept.
+///
+/// # Errors
+/// The solver refuses the case (a step beyond the stability limit without `allow_unstable`, or
+/// inconsistent input).
+pub fn run_case(case: &Case) -> Result<CaseRecord, RunError> {
+    let started = Instant::now();
+    let outcome = case
+        .integrator
+        .run(&case.model, case.plan.steps, &case.request);
+    let wall_time = started.elapsed();
+    let (output, status) = match outcome {
+        Ok(output) => (output, Status::Completed),
+        Err(RunError::Diverged { error, partial }) => (*partial, Status::Diverged(error)),
+        Err(other) => return Err(other),
+    };
+    let mut profile_steps = case.request.profile_steps.clone();
+    profile_steps.sort_unstable();
+    profile_steps.dedup();
+    Ok(CaseRecord {
+        case: case.name.clone(),
+        scheme: scheme_label(&case.integrator),
+        mesh: case.model.bar().mesh().clone(),
+        courant: output.courant,
+        dt: output.dt,
+        steps_planned: case.plan.steps,
+        steps: output.steps,
+        critical: case.critical,
+        limit: case.limit,
+        profiles_requested: profile_steps.len(),
+        profiles: output.profiles,
+        histories: output.histories,
+        energy: output.energy,
+        status,
+        wall_time,
+    })
+}

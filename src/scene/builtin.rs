@@ -1,0 +1,132 @@
+//! The built-in scenes, compiled into the binary from `scenes/` so that `courant list` and
+//! `courant run NAME` work from any directory.
+
+use super::cases::Scene;
+use super::error::SceneError;
+use std::path::Path;
+
+/// (name, TOML text) of every built-in scene.
+pub const BUILTIN_SCENES: &[(&str, &str)] = &[
+    ("fig1", include_str!("../../scenes/fig1.toml")),
+    ("fig1_masses", include_str!("../../scenes/fig1_masses.toml")),
+    ("fig2", include_str!("../../scenes/fig2.toml")),
+    (
+        "fig2_reversed",
+        include_str!("../../scenes/fig2_reversed.toml"),
+    ),
+    ("layered", include_str!("../../scenes/layered.toml")),
+    ("fig3", include_str!("../../scenes/fig3.toml")),
+    ("fig5", include_str!("../../scenes/fig5.toml")),
+    ("fig6", include_str!("../../scenes/fig6.toml")),
+    (
+        "contact_wall",
+        include_str!("../../scenes/contact_wall.toml"),
+    ),
+    (
+        "contact_unequal",
+        include_str!("../../scenes/contact_unequal.toml"),
+    ),
+    ("dispersion", include_str!("../../scenes/dispersion.toml")),
+    (
+        "courant_sweep",
+        include_str!("../../scenes/courant_sweep.toml"),
+    ),
+    (
+        "courant_sweep_schemes",
+        include_str!("../../scenes/courant_sweep_schemes.toml"),
+    ),
+    (
+        "stability_extremes",
+        include_str!("../../scenes/stability_extremes.toml"),
+    ),
+    (
+        "stability_exact",
+        include_str!("../../scenes/stability_exact.toml"),
+    ),
+    (
+        "stability_park",
+        include_str!("../../scenes/stability_park.toml"),
+    ),
+    ("fig1_si", include_str!("../../scenes/fig1_si.toml")),
+    ("long_run", include_str!("../../scenes/long_run.toml")),
+    ("graded_1e4", include_str!("../../scenes/graded_1e4.toml")),
+    ("layered_1e4", include_str!("../../scenes/layered_1e4.toml")),
+    (
+        "contact_courant_sweep",
+        include_str!("../../scenes/contact_courant_sweep.toml"),
+    ),
+    (
+        "contact_extremes",
+        include_str!("../../scenes/contact_extremes.toml"),
+    ),
+];
+
+/// The text of a built-in scene.
+pub fn builtin_text(name: &str) -> Option<&'static str> {
+    BUILTIN_SCENES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, text)| *text)
+}
+
+/// Parse a built-in scene.
+pub fn builtin_scene(name: &str) -> Option<Result<Scene, SceneError>> {
+    builtin_text(name).map(|text| Scene::parse(name, &format!("scenes/{name}.toml"), text))
+}
+
+/// Resolve a command-line argument: a path to a `.toml` file, or the name of a built-in scene.
+pub fn resolve(arg: &str) -> Result<Scene, SceneError> {
+    let path = Path::new(arg);
+    if arg.ends_with(".toml") || path.is_file() {
+        return Scene::from_path(path);
+    }
+    builtin_scene(arg).unwrap_or_else(|| {
+        let names: Vec<&str> = BUILTIN_SCENES.iter().map(|(n, _)| *n).collect();
+        Err(SceneError {
+            file: arg.to_string(),
+            line: 0,
+            column: 0,
+            key: String::new(),
+            message: format!(
+                "no such scene file, and no built-in scene of that name (built-in: {})",
+                names.join(", ")
+            ),
+        })
+    })
+}
+
+/// Every built-in scene, parsed.
+///
+/// # Errors
+/// A built-in scene does not parse (a bug caught by the tests).
+pub fn all() -> Result<Vec<Scene>, SceneError> {
+    BUILTIN_SCENES
+        .iter()
+        .map(|(name, text)| Scene::parse(name, &format!("scenes/{name}.toml"), text))
+        .collect()
+}
+
+/// Resolve every argument like [`resolve`] does (every built-in scene when there is none).
+/// Every bad argument is reported, not just the first.
+///
+/// # Errors
+/// Every argument that is neither a readable scene file nor a built-in scene, with its error.
+pub fn resolve_all(args: &[String]) -> Result<Vec<Scene>, Vec<SceneError>> {
+    let names: Vec<String> = if args.is_empty() {
+        BUILTIN_SCENES.iter().map(|(n, _)| n.to_string()).collect()
+    } else {
+        args.to_vec()
+    };
+    let (mut scenes, mut errors) = (Vec::new(), Vec::new());
+    for name in &names {
+        match resolve(name) {
+            Ok(scene) => scenes.push(scene),
+            Err(e) => errors.push(e),
+        }
+    }
+    if errors.is_empty() {
+        Ok(scenes)
+    } else {
+        Err(errors)
+    }
+}

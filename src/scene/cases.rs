@@ -1,0 +1,56 @@
+//! What a scene is once validated: its cases, ready to run, and its expectations.
+
+use super::contact::{ContactCase, StabilitySweep};
+use super::dispersion::DispersionCase;
+use super::expectation::Expectation;
+use super::reference::Reference;
+use super::spectrum::SpectrumCase;
+use courant_solver::{
+    CentralDifference, CriticalStep, Model, OutputRequest, SchemeLimit, TimePlan,
+};
+
+/// A validated scene.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    /// Name (file stem), used for the output directory.
+    pub name: String,
+    /// One-line description.
+    pub description: String,
+    /// Source of truth.
+    pub source: String,
+    /// The time-stepping cases, in file order.
+    pub cases: Vec<Case>,
+    /// The spectrum cases (spectrum scenes only).
+    pub spectra: Vec<SpectrumCase>,
+    /// The dispersion cases (dispersion scenes only).
+    pub dispersion: Vec<DispersionCase>,
+    /// The contact cases (contact scenes only).
+    pub contact: Vec<ContactCase>,
+    /// The contact stability sweeps (contact stability scenes only).
+    pub contact_sweeps: Vec<StabilitySweep>,
+    /// Expectations every run is checked against.
+    pub expectations: Vec<Expectation>,
+}
+
+/// One runnable case of a scene.
+#[derive(Debug, Clone)]
+pub struct Case {
+    /// Case name, e.g. `co0.5`.
+    pub name: String,
+    /// The model.
+    pub model: Model,
+    /// The integrator with its final time step.
+    pub integrator: CentralDifference,
+    /// The time-step plan.
+    pub plan: TimePlan,
+    /// What to record.
+    pub request: OutputRequest,
+    /// Critical-step estimates of the model.
+    pub critical: CriticalStep,
+    /// The stability limit of the case's scheme (CD's `2/omega_max` or Park's `alpha_e <= 1`).
+    pub limit: SchemeLimit,
+    /// Analytic reference, if the scene names one.
+    pub reference: Option<Reference>,
+    /// Transit time of the bar, `T = sum_e h_e/c_e`.
+    pub transit_time: f64,
+}

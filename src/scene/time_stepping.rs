@@ -1,0 +1,186 @@
+//! The cases of a time-stepping scene: every element count x scheme x mass kind x Courant
+//! number (or step), each with its plan, output request, critical step and reference.
+
+use super::bar::model_of;
+use super::cases::Case;
+use super::error::{SceneError, Source};
+use super::expectation::{Expectation, Study, expectation};
+use super::geometry::Geometry;
+use super::mass::mass_name;
+use super::outputs::Outputs;
+use super::reference::Reference;
+use super::schema::{RawCourantUnit, RawScene};
+use super::stepping::{Stepping, keep_step_plan};
+use courant_solver::{CentralDifference, CriticalStep, OutputRequest};
+
+/// Samples kept by default for histories and energy logs: every step up to this many steps,
+/// then every `ceil(steps / MAX_SAMPLES)`-th step.
+pub const MAX_SAMPLES: usize = 10_000;
+
+/// Largest `steps x elements` a scene case may ask for (about 4 minutes at 2.5 ns per node-step).
+pub const MAX_NODE_STEPS: f64 = 1e11;
+
+/// The cases and expectations of a time-stepping scene.
+pub(super) fn build(
+    src: &Source,
+    raw: &RawScene,
+    geometry: &Geometry,
+) -> Result<(Vec<Case>, Vec<Expectation>), SceneError> {
+    let Some(integrator) = &raw.integrator else {
+        return Err(src.error(
+            None,
+            "integrator",
+            "is required: give [integrator] with `courant` or `dt`",
+        ));
+    };
+    let stepping = Stepping::read(src, integrator)?;
+    let transit = geometry.transit_time();
+    let outputs = Outputs::read(src, &raw.output, transit)?;
+
+    let mut cases = Vec::new();
+    for &elements in &geometry.element_counts {
+        let model = model_of(src, raw, geometry, elements)?;
+        let reference = match &raw.reference.kind {
+            None => None,
+            Some(kind) => Reference::for_model(*kind.get_ref(), &model, &geometry.material)
+                .map_err(|m| src.error(Some(kind.span()), "reference.kind", m))?,
+        };
+        let history_nodes = outputs.history_nodes(src, &model)?;
+        let (stiffest, element_dt) = model.bar().stiffest_element();
+        for (&(scheme_name, park), &mass) in stepping
+            .schemes
+            .iter()
+            .flat_map(|s| stepping.masses.iter().map(move |m| (s, m)))
+        {
+            // The scheme's own limit on this mesh, once per (scheme, mass), when the Courant
+            // numbers are multiples of it: CD's 2/omega_max (a Sturm bisection), Park's
+            // min_e h_e/c_e.
+            let exact_limit = match (stepping.by_courant, stepping.unit, park) {
+                (true, RawCourantUnit::Exact, Some(_)) => {
+                    Some(courant_solver::ParkScheme::limit_step(&model))
+                }
+                (true, RawCourantUnit::Exact, None) => {
+                    let operator =
+                        courant_solver::MassOperator::new(&model, mass).map_err(|e| {
+                            src.error(Some(stepping.span.clone()), stepping.key, e.to_string())
+                        })?;
+                    Some(CriticalStep::of(&model, mass, &operator).exact)
+                }
+                _ => None,
+            };
+            for &value in &stepping.values {
+                let mut case_name = String::new();
+                if geometry.element_counts.len() > 1 {
+                    case_name += &format!("n{elements}-");
+                }
+                if stepping.schemes.len() > 1 {
+                    case_name += &format!("{scheme_name}-");
+                }
+                if stepping.masses.len() > 1 {
+                    case_name += &format!("{}-", mass_name(mass));
+                }
+                if stepping.by_courant {
+                    case_name += &format!("co{value}");
+                } else {
+                    case_name += &format!("dt{value}");
+                }
+                let fail = |msg: String| {
+                    src.error(
+                        Some(stepping.span.clone()),
+                        stepping.key,
+                        format!("case {case_name}: {msg}"),
+                    )
+                };
+                let nominal_dt = match (stepping.by_courant, stepping.unit) {
+                    (false, _) => value,
+                    (true, RawCourantUnit::StiffestElement) => value * element_dt,
+                    (true, RawCourantUnit::Critical) => {
+                        value * mass.critical_courant() * element_dt
+                    }
+                    (true, RawCourantUnit::Exact) => value * exact_limit.unwrap_or(f64::NAN),
+                };
+                let plan = if stepping.keep_step {
+                    keep_step_plan(
+                        src,
+                        &outputs,
+                        nominal_dt,
+                        &case_name,
+                        (stepping.span.clone(), stepping.key),
+                    )?
+                } else {
+                    courant_solver::plan(nominal_dt, &outputs.profile_times, outputs.end_time)
+                        .map_err(|e| fail(e.to_string()))?
+                };
+                let integrator = CentralDifference {
+                    dt: plan.dt,
+                    start: stepping.start,
+                    stability: stepping.stability,
+                    mass,
+                    park,
+                };
+                let critical = integrator.check_stability(&model).map_err(|e| match &e {
+                    courant_solver::RunError::Unstable(u) => fail(format!(
+                        "{e} ({} {scheme_name} critical Courant number {:.6}, element {stiffest})",
+                        mass.label(),
+                        u.dt_crit / element_dt
+                    )),
+                    _ => fail(e.to_string()),
+                })?;
+                let node_steps = plan.steps as f64 * model.bar().element_count() as f64;
+                if node_steps > MAX_NODE_STEPS {
+                    return Err(fail(format!(
+                        "{} steps x {} elements = {node_steps:.2e} node-steps, more than the {MAX_NODE_STEPS:.0e} a scene \
+                         may ask for; coarsen the mesh, raise the step or shorten the run",
+                        plan.steps,
+                        model.bar().element_count()
+                    )));
+                }
+                let thinned = plan.steps.div_ceil(MAX_SAMPLES).max(1);
+                let request = OutputRequest {
+                    profile_steps: plan.output_steps.clone(),
+                    history_nodes: history_nodes.clone(),
+                    history_every: outputs.history_every.unwrap_or(thinned),
+                    energy_every: outputs.energy_every.unwrap_or(thinned),
+                };
+                let limit = integrator.limit(&model, &critical);
+                cases.push(Case {
+                    name: case_name,
+                    model: model.clone(),
+                    integrator,
+                    plan,
+                    request,
+                    critical,
+                    limit,
+                    reference: reference.clone(),
+                    transit_time: transit,
+                });
+            }
+        }
+    }
+    let mut seen = std::collections::HashSet::new();
+    if let Some(dup) = cases.iter().find(|c| !seen.insert(c.name.clone())) {
+        return Err(src.error(
+            Some(stepping.span.clone()),
+            stepping.key,
+            format!("case {} appears twice", dup.name),
+        ));
+    }
+    let has_reference = cases.iter().any(|c| c.reference.is_some());
+    let names: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
+    let expectations = raw
+        .expectations
+        .iter()
+        .map(|e| {
+            expectation(
+                src,
+                e,
+                &names,
+                has_reference,
+                Study::TimeStepping,
+                &outputs.profile_times,
+                outputs.unit,
+            )
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok((cases, expectations))
+}
