@@ -6,7 +6,17 @@
 //! Conventions (units, load sign, Heaviside at t = 0) follow courant's methods note
 //! (`shared/notes/methods.md`, §1-3).
 //!
+//! **Enters:** physical or dimensionless data of a bar (lengths, moduli, densities, areas,
+//! impedances, loads, penalties) and evaluation points. **Leaves:** exact fields, frequencies,
+//! critical Courant numbers and contact forces, or a [`ReferenceError`] for invalid data. It must
+//! never know the solver (`courant-solver`): no dependency, no shared code, no solver types
+//! (checked by `tests/architecture.rs`); nor files or scenes (no I/O).
+//!
 //! - [`dalembert`]: the homogeneous free-fixed bar under a Heaviside end traction.
+//! - [`graded`]: the linearly graded bar (two full-field routes) and layered bars.
+//! - [`spectra`]: closed-form spectra of uniform bars for each mass matrix and the dispersion of
+//!   central difference.
+//! - [`contact`]: the stability limit of penalty contact and the contact forces of 1D impact.
 //! - [`error`]: the validation error shared by all references.
 
 pub mod contact;

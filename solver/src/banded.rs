@@ -1,60 +1,14 @@
-//! Small symmetric banded-matrix kernels: tridiagonal matrix-vector products, the SPD
-//! solve of [`PartitionedLdl`], and the inertia (count of negative pivots) of a symmetric
+//! Small symmetric banded-matrix kernels: tridiagonal matrix-vector products ([`Tridiagonal`]),
+//! the SPD solve of [`PartitionedLdl`], and the inertia (count of negative pivots) of a symmetric
 //! banded matrix, which by Sylvester's law of inertia counts the eigenvalues of a definite pencil
 //! below a shift (Wilkinson, The Algebraic Eigenvalue Problem (1965), §5.37; Parlett, The
 //! Symmetric Eigenvalue Problem (1998), §3.3).
+//!
+//! The tridiagonal matrix and its factor live in their own modules (the factor is built from the
+//! matrix, so the matrix sits below it); this module gathers them with the banded matrix.
 
 pub use crate::partitioned_ldl::PartitionedLdl;
-
-/// Symmetric tridiagonal matrix: `diag[i]`, `off[i] = A[i][i+1] = A[i+1][i]`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Tridiagonal {
-    /// Diagonal, length n.
-    pub diag: Vec<f64>,
-    /// Super-diagonal, length n - 1.
-    pub off: Vec<f64>,
-}
-
-impl Tridiagonal {
-    /// `y = A x`.
-    pub fn apply(&self, x: &[f64], y: &mut [f64]) {
-        let n = self.diag.len();
-        let (d, o) = (&self.diag, &self.off);
-        if n == 1 {
-            y[0] = d[0] * x[0];
-            return;
-        }
-        y[0] = d[0] * x[0] + o[0] * x[1];
-        // Interior rows as zipped windows: no bounds checks, so the loop vectorises.
-        for (((yi, xs), di), os) in y[1..n - 1]
-            .iter_mut()
-            .zip(x.windows(3))
-            .zip(&d[1..n - 1])
-            .zip(o.windows(2))
-        {
-            *yi = os[0] * xs[0] + di * xs[1] + os[1] * xs[2];
-        }
-        y[n - 1] = o[n - 2] * x[n - 2] + d[n - 1] * x[n - 1];
-    }
-
-    /// Decouple row and column `i`: zero its off-diagonals and set the diagonal to 1 (the
-    /// matrix of the remaining rows and columns is the one with `i` deleted).
-    pub fn decouple(&mut self, i: usize) {
-        self.diag[i] = 1.0;
-        if i > 0 {
-            self.off[i - 1] = 0.0;
-        }
-        if i < self.off.len() {
-            self.off[i] = 0.0;
-        }
-    }
-
-    /// Factor an SPD tridiagonal matrix for solves, `None` when it is not positive definite.
-    /// See [`PartitionedLdl`].
-    pub fn factor_spd(&self) -> Option<PartitionedLdl> {
-        PartitionedLdl::new(self)
-    }
-}
+pub use crate::tridiagonal::Tridiagonal;
 
 /// Symmetric banded matrix stored by rows: `rows[i][j]` is `A[i][i + j]` for `j = 0..=bandwidth`.
 #[derive(Debug, Clone, PartialEq)]

@@ -9,6 +9,17 @@
 //!
 //! Conventions (time levels, load convention H(0) = 1, Courant number relative to the stiffest
 //! element) follow courant's `methods.md` §1-2.
+//!
+//! **Enters:** bars and models built in code ([`Mesh`], [`Bar`], [`Model`], loads, supports,
+//! initial conditions), a step and run settings. **Leaves:** run outputs ([`RunOutput`],
+//! [`contact::ContactRun`]), critical steps, spectra and typed errors. It must not know files,
+//! scenes, reports or the analytic references (`courant-references` is compared with it by the
+//! `courant` crate), and it does no I/O.
+//!
+//! Layers, lowest first: `mesh`, `bar`, `load`, `model` (the problem); `tridiagonal`,
+//! `partitioned_ldl`, `banded`, `mass` (operators); `stability`, `spectrum`, `time_step`;
+//! `kernel`, `matrix_kernel`, `park` (step kernels); `central_difference` (the run); `contact`
+//! (contact runs on the lumped kernel); `output`, `error`, `fixtures`.
 
 pub mod banded;
 pub mod bar;
@@ -28,6 +39,7 @@ pub mod partitioned_ldl;
 pub mod spectrum;
 pub mod stability;
 pub mod time_step;
+mod tridiagonal;
 
 pub use bar::{Bar, Field};
 pub use central_difference::{

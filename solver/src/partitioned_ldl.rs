@@ -21,7 +21,7 @@
 //! and the correction skips the rows where a spike is exactly zero. The partition depends only
 //! on `n`, so results are bit-identical run to run.
 
-use crate::banded::Tridiagonal;
+use crate::tridiagonal::Tridiagonal;
 
 /// Number of blocks (independent recurrences) for large matrices: enough multiply-adds in
 /// flight to cover their latency on a superscalar core.
@@ -32,6 +32,14 @@ const INTERFACE: usize = 2 * (BLOCKS - 1);
 
 /// Smallest block worth partitioning for; smaller matrices use one block (plain LDL^T).
 const MIN_BLOCK_ROWS: usize = 16;
+
+impl Tridiagonal {
+    /// Factor an SPD tridiagonal matrix for solves, `None` when it is not positive definite.
+    /// See [`PartitionedLdl`].
+    pub fn factor_spd(&self) -> Option<PartitionedLdl> {
+        PartitionedLdl::new(self)
+    }
+}
 
 /// Partitioned `L D L^T` factor of an SPD tridiagonal matrix (see the module docs).
 #[derive(Debug, Clone, PartialEq)]

@@ -2,7 +2,7 @@
 
 use thiserror::Error;
 
-use super::run::ContactRun;
+use super::output::ContactRun;
 use super::stability::StepLimit;
 use crate::error::{DivergenceError, InputError};
 

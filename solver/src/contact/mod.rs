@@ -1,6 +1,18 @@
 //! Contact-impact of 1D bars: node-to-node penalty, bipenalty, the stabilized predictor-corrector
 //! scheme and the forward-increment Lagrange multiplier method, on lumped central difference.
 //!
+//! **Enters:** one or two lumped [`Model`](crate::Model)s and a gap made into a
+//! [`ContactProblem`], a [`ContactScheme`] (with its [`Penalty`]) and a time step. **Leaves:** a
+//! [`ContactRun`] (samples, stress profiles, momenta) or a [`ContactError`], and the critical
+//! steps ([`ContactCriticalStep`]). It builds on the bulk's lumped kernel and banded inertia
+//! ([`crate::kernel`], [`crate::banded`]); it must not know scenes, files or the analytic
+//! references (no I/O; `courant_references::contact` is compared with it elsewhere), and the
+//! contact-free integrators do not know it.
+//!
+//! Files: `problem` (bodies, contact nodes, gap), `penalty` (penalty parameters), `scheme` (the
+//! schemes and their O(1) level update), `stability` (critical steps), `stepper` (the time
+//! loop's state), `run` (the checked, guarded run), `output` (what a run records), `error`.
+//!
 //! # Problems ([`ContactProblem`])
 //!
 //! ```text
@@ -130,15 +142,19 @@
 //! unchanged lumped kernel, which receives the contact momentum as a nodal force.
 
 mod error;
+mod output;
+mod penalty;
 mod problem;
 mod run;
 mod scheme;
 mod stability;
+mod stepper;
 
 pub use error::{ContactError, ContactUnstableError};
+pub use output::{ContactProfile, ContactRequest, ContactRun, ContactSample};
+pub use penalty::{MassPenalty, Penalty};
 pub use problem::{ContactKind, ContactNode, ContactProblem};
-pub use run::{
-    ContactIntegrator, ContactProfile, ContactRequest, ContactRun, ContactSample, ContactStepper,
-};
-pub use scheme::{ContactScheme, MassPenalty, Penalty};
+pub use run::ContactIntegrator;
+pub use scheme::ContactScheme;
 pub use stability::{ContactCriticalStep, ContactPencil, LIMIT_TIE, StepLimit};
+pub use stepper::ContactStepper;

@@ -1,6 +1,6 @@
 //! Contact problems: a bar against a rigid wall (Signorini) or two bars meeting end to end.
 
-use super::scheme::{MassPenalty, Penalty};
+use super::penalty::{MassPenalty, Penalty};
 use crate::bar::Bar;
 use crate::error::InputError;
 use crate::load::End;

@@ -4,8 +4,9 @@
 
 use std::fmt;
 
+use super::penalty::Penalty;
 use super::problem::ContactProblem;
-use super::scheme::{ContactScheme, Penalty};
+use super::scheme::ContactScheme;
 use crate::banded::SymmetricBanded;
 
 /// The symmetric tridiagonal pencil `(K + K_p, M + M_p)` of a contact problem over the global

@@ -1,5 +1,5 @@
-//! Central-difference integration of a lumped-mass bar: start, time loop, outputs, energy
-//! balance, stability guard.
+//! [`CentralDifference`]: the integrator, its stability check and the time loop (start, steps,
+//! energy balance, blow-up guard, recording).
 //!
 //! The energy identity the balance relies on (linear system, lumped `M`, any `dt`): with
 //! `E^n = 1/2 v^{n-1/2} M v^{n+1/2} + 1/2 u^n K u^n` and
@@ -13,74 +13,20 @@
 //!
 //! the trapezoidal work increment, exactly. So `E^n - W^n` is constant to round-off.
 
+use super::guard::{BlowUpGuard, impulse_energy};
+use super::limit::SchemeLimit;
+use super::record::{record, validate_request};
+use super::settings::{OutputRequest, StabilityPolicy, Start};
+use super::step_kernel::Kernel;
 use crate::error::{DivergenceError, InputError, UnstableStepError};
-use crate::kernel::{LumpedCentralDifference, StepEnergy};
+use crate::kernel::LumpedCentralDifference;
 use crate::mass::{MassKind, MassOperator};
 use crate::matrix_kernel::{MatrixCentralDifference, StartState};
 use crate::model::Model;
-use crate::output::{
-    EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput, StressProfile,
-};
+use crate::output::{EnergyLog, EnergySample, NodeHistory, RunOutput};
 use crate::park::{ParkOptions, ParkScheme};
 use crate::stability::CriticalStep;
 use thiserror::Error;
-
-/// How the first half-step velocity is formed from `u^0`, `v^0` and `a^0 = M^-1 (F(0) - K u^0)`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Start {
-    /// `v^{1/2} = v^0 + dt/2 a^0`: the predictor-corrector start of seed eqs. 2-4. With the
-    /// Heaviside convention H(0) = 1 it is exact at Co = 1 (methods.md §2).
-    #[default]
-    HalfStep,
-    /// The naive three-level start `u^{-1} = u^0 - dt v^0`, `u^1 = 2u^0 - u^{-1} + dt^2 a^0`,
-    /// i.e. `v^{1/2} = v^0 + dt a^0`. Exact only when `F(0)` is half the step load; with the full
-    /// load it injects a spurious one-element pulse (methods.md §2).
-    ThreeLevel,
-}
-
-/// What to do about the stability limit.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct StabilityPolicy {
-    /// Run even when `dt` exceeds the exact critical step (for Park's scheme also
-    /// `alpha_e > 1`, run with the true `alpha_e`: [`ParkScheme::allowing_unstable`]).
-    pub allow_unstable: bool,
-    /// A run stops as diverged when `kinetic + strain` exceeds this multiple of its energy
-    /// reference (largest of the initial energy and the external work so far).
-    pub blowup_energy_ratio: f64,
-}
-
-impl Default for StabilityPolicy {
-    fn default() -> Self {
-        Self {
-            allow_unstable: false,
-            blowup_energy_ratio: 1e6,
-        }
-    }
-}
-
-/// What a run records.
-#[derive(Debug, Clone, PartialEq)]
-pub struct OutputRequest {
-    /// Steps at which to record element stress profiles.
-    pub profile_steps: Vec<usize>,
-    /// Nodes whose `u, v, a` histories to record.
-    pub history_nodes: Vec<usize>,
-    /// Record histories every this many steps (>= 1).
-    pub history_every: usize,
-    /// Keep an energy sample every this many steps (>= 1); the balance is checked every step.
-    pub energy_every: usize,
-}
-
-impl Default for OutputRequest {
-    fn default() -> Self {
-        Self {
-            profile_steps: Vec::new(),
-            history_nodes: Vec::new(),
-            history_every: 1,
-            energy_every: 1,
-        }
-    }
-}
 
 /// Central difference with lumped mass.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -96,92 +42,6 @@ pub struct CentralDifference {
     /// Replace the CD predictor by Park's pull-back scheme (lumped mass only; `theta = 0` is
     /// CD). Default `None`.
     pub park: Option<ParkOptions>,
-}
-
-/// The stability limit of the scheme a [`CentralDifference`] runs: the largest stable step and
-/// where it comes from.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum SchemeLimit {
-    /// Central difference (any mass): `dt <= 2/omega_max` of the assembled `(K, M)`
-    /// ([`CriticalStep::exact`]; Hughes, *The Finite Element Method*, 2000, §9.3).
-    CentralDifference {
-        /// `2/omega_max`.
-        dt: f64,
-    },
-    /// Park's scheme: `alpha_e = dt/dt_e <= 1` in every element (methods.md §6), i.e.
-    /// `dt <= min_e dt_e` ([`ParkScheme::limit_step`]). The bound comes from the amplification
-    /// analysis of a uniform mesh, whose spectral radius exceeds 1 just above `alpha = 1` at
-    /// `kh = pi` (tests/park_amplification_analysis.rs): on a mesh where every element has the
-    /// same `dt_e` it is the limit (up to the finite mesh's top mode, a hair below `kh = pi`); on a
-    /// graded mesh it is only sufficient (measured: Park's global step on the `graded_1e4` mesh
-    /// stays bounded at `alpha = 1.012`).
-    Park {
-        /// `min_e dt_e`.
-        dt: f64,
-        /// The element with the smallest `dt_e` (the first whose `alpha_e` exceeds 1).
-        element: usize,
-        /// True when the elements' `dt_e` differ (relative spread above 1e-12): `alpha_e <= 1`
-        /// guarantees stability but above it nothing is predicted.
-        sufficient_only: bool,
-    },
-}
-
-impl SchemeLimit {
-    /// The limit of central difference (`park = None`) or of Park's scheme with `park` on
-    /// `model`, given the critical steps of its mass: CD's `critical.exact`, or Park's
-    /// `alpha_e <= 1` (at or below CD's for the lumped mass: Fried's bound
-    /// `omega_max <= max_e 2 c_e/h_e` gives `2/omega_max >= min_e h_e/c_e`).
-    pub fn of(park: Option<&ParkOptions>, model: &Model, critical: &CriticalStep) -> Self {
-        match park {
-            None => SchemeLimit::CentralDifference { dt: critical.exact },
-            Some(_) => {
-                let bar = model.bar();
-                let dt = ParkScheme::limit_step(model);
-                let slowest = (0..bar.element_count())
-                    .map(|e| bar.element_transit_time(e))
-                    .fold(dt, f64::max);
-                SchemeLimit::Park {
-                    dt,
-                    element: bar.stiffest_element().0,
-                    sufficient_only: slowest > dt * (1.0 + 1e-12),
-                }
-            }
-        }
-    }
-
-    /// The largest stable step.
-    pub fn dt(&self) -> f64 {
-        match *self {
-            SchemeLimit::CentralDifference { dt } | SchemeLimit::Park { dt, .. } => dt,
-        }
-    }
-
-    /// What the limit is, for tables: `2/omega_max`, `alpha_e <= 1`, or `alpha_e <= 1
-    /// (sufficient)` on a graded mesh.
-    pub fn name(&self) -> &'static str {
-        match self {
-            SchemeLimit::CentralDifference { .. } => "2/omega_max",
-            SchemeLimit::Park {
-                sufficient_only: false,
-                ..
-            } => "alpha_e <= 1",
-            SchemeLimit::Park {
-                sufficient_only: true,
-                ..
-            } => "alpha_e <= 1 (sufficient)",
-        }
-    }
-
-    /// True when the limit only guarantees stability below it and predicts nothing above.
-    pub fn sufficient_only(&self) -> bool {
-        matches!(
-            self,
-            SchemeLimit::Park {
-                sufficient_only: true,
-                ..
-            }
-        )
-    }
 }
 
 /// Why a run did not complete.
@@ -476,175 +336,5 @@ impl CentralDifference {
             );
         }
         Ok(output)
-    }
-}
-
-/// The step kernel of a run: the fused lumped one, or the one with a matrix mass.
-enum Kernel {
-    Lumped(LumpedCentralDifference),
-    Matrix(Box<MatrixCentralDifference>),
-    Park(Box<ParkScheme>),
-}
-
-impl Kernel {
-    fn dt(&self) -> f64 {
-        match self {
-            Kernel::Lumped(k) => k.dt(),
-            Kernel::Matrix(k) => k.dt(),
-            Kernel::Park(k) => k.dt(),
-        }
-    }
-
-    fn displacement(&self) -> &[f64] {
-        match self {
-            Kernel::Lumped(k) => k.displacement(),
-            Kernel::Matrix(k) => k.displacement(),
-            Kernel::Park(k) => k.displacement(),
-        }
-    }
-
-    /// Advance from `t^n = t`; `forces` are the loads at `t^{n+1}` by node.
-    fn step_with_energy(&mut self, model: &Model, t: f64, forces: &[(usize, f64)]) -> StepEnergy {
-        match self {
-            Kernel::Lumped(k) => k.step_with_energy(forces),
-            Kernel::Matrix(k) => k.step_with_energy(forces),
-            Kernel::Park(k) => k.step(model, t),
-        }
-    }
-
-    /// `1/2 v^{n-1/2} M v^{n+1/2}` recomputed from the mass matrix, for kernels that carry it
-    /// forward incrementally (`None` for the others).
-    fn staggered_from_mass(&mut self) -> Option<f64> {
-        match self {
-            Kernel::Matrix(k) => Some(k.staggered_kinetic_from_mass()),
-            _ => None,
-        }
-    }
-
-    /// `(v^n, a^n)` at node `i` of the current state (time `t`): for CD `v^n = v^{n+1/2} - dt/2 a^n`,
-    /// with `a^n` local for the lumped mass and the kept solve otherwise; Park keeps both.
-    fn velocity_and_acceleration_at(&self, model: &Model, i: usize, t: f64) -> (f64, f64) {
-        let (v_half, a) = match self {
-            Kernel::Lumped(k) => (
-                k.half_step_velocity()[i],
-                model.acceleration_at(k.displacement(), i, t),
-            ),
-            Kernel::Matrix(k) => (k.half_step_velocity()[i], k.acceleration()[i]),
-            Kernel::Park(k) => return (k.velocity()[i], k.acceleration()[i]),
-        };
-        (v_half - 0.5 * self.dt() * a, a)
-    }
-}
-
-/// Detects an unstable run: kinetic + strain energy far above every energy that entered the bar.
-///
-/// A stable central-difference run has `T + U = W + E^0 + dt^2/8 a M a` (full-step kinetic
-/// energy `T`), where the last term is at most of the order of the impulse energy
-/// `sum_j dt^2 F_j^2/(8 m_j)` of the loads. The reference is the largest of the initial energy,
-/// `|W|` and that impulse energy seen so far; the run has diverged when `T + U` exceeds
-/// `ratio` times it, or is not finite.
-struct BlowUpGuard {
-    ratio: f64,
-    reference: f64,
-}
-
-impl BlowUpGuard {
-    fn new(ratio: f64, initial_energy: f64) -> Self {
-        Self {
-            ratio,
-            reference: initial_energy,
-        }
-    }
-
-    fn admit(&mut self, energy: f64) {
-        self.reference = self.reference.max(energy);
-    }
-
-    /// `Some(T+U / reference)` when the run has diverged.
-    fn tripped(&self, mechanical: f64) -> Option<f64> {
-        if mechanical <= self.ratio * self.reference {
-            None
-        } else if mechanical.is_finite() {
-            Some(mechanical / self.reference)
-        } else {
-            Some(f64::INFINITY)
-        }
-    }
-}
-
-/// `sum_j dt^2 F_j^2 / (8 m_j)`: the kinetic energy one step of the loads alone gives the
-/// full-step velocity.
-fn impulse_energy(model: &Model, dt: f64, forces: &[(usize, f64)]) -> f64 {
-    forces
-        .iter()
-        .map(|&(node, f)| 0.125 * dt * dt * f * f * model.inverse_mass()[node])
-        .sum()
-}
-
-fn validate_request(
-    model: &Model,
-    steps: usize,
-    request: &OutputRequest,
-) -> Result<(), InputError> {
-    let last = model.bar().node_count() - 1;
-    if let Some(&node) = request.history_nodes.iter().find(|&&n| n > last) {
-        return Err(InputError::NodeIndex {
-            field: "history node",
-            node,
-            last,
-        });
-    }
-    if let Some(&step) = request.profile_steps.iter().find(|&&s| s > steps) {
-        return Err(InputError::Other(format!(
-            "profile step {step} is after the last step {steps}"
-        )));
-    }
-    if request.history_every == 0 || request.energy_every == 0 {
-        return Err(InputError::Other(
-            "history_every and energy_every must be at least 1".into(),
-        ));
-    }
-    Ok(())
-}
-
-/// Record profiles and histories at step `n` (state `u^n`, `v^{n+1/2}` in the kernel).
-#[allow(clippy::too_many_arguments)]
-fn record<'a>(
-    model: &Model,
-    kernel: &Kernel,
-    step: usize,
-    time: f64,
-    initial_velocity: &[f64],
-    request: &OutputRequest,
-    output: &mut RunOutput,
-    next_profile: &mut std::iter::Peekable<std::slice::Iter<'a, usize>>,
-) {
-    let u = kernel.displacement();
-    if next_profile.peek() == Some(&&step) {
-        next_profile.next();
-        output.profiles.push(StressProfile {
-            step,
-            time,
-            stress: model.element_stress(u),
-        });
-    }
-    if step.is_multiple_of(request.history_every) && !output.histories.is_empty() {
-        for history in &mut output.histories {
-            let i = history.node;
-            let (velocity, acceleration) = kernel.velocity_and_acceleration_at(model, i, time);
-            // At n = 0 the state's own v^0.
-            let velocity = if step == 0 {
-                initial_velocity[i]
-            } else {
-                velocity
-            };
-            history.samples.push(HistorySample {
-                step,
-                time,
-                displacement: u[i],
-                velocity,
-                acceleration,
-            });
-        }
     }
 }

@@ -1,0 +1,77 @@
+//! What a run records: the request checked against the model, and the stress profiles and node
+//! histories of each level.
+
+use super::settings::OutputRequest;
+use super::step_kernel::Kernel;
+use crate::error::InputError;
+use crate::model::Model;
+use crate::output::{HistorySample, RunOutput, StressProfile};
+
+/// Check the request: history nodes on the bar, profile steps within the run, intervals >= 1.
+pub(super) fn validate_request(
+    model: &Model,
+    steps: usize,
+    request: &OutputRequest,
+) -> Result<(), InputError> {
+    let last = model.bar().node_count() - 1;
+    if let Some(&node) = request.history_nodes.iter().find(|&&n| n > last) {
+        return Err(InputError::NodeIndex {
+            field: "history node",
+            node,
+            last,
+        });
+    }
+    if let Some(&step) = request.profile_steps.iter().find(|&&s| s > steps) {
+        return Err(InputError::Other(format!(
+            "profile step {step} is after the last step {steps}"
+        )));
+    }
+    if request.history_every == 0 || request.energy_every == 0 {
+        return Err(InputError::Other(
+            "history_every and energy_every must be at least 1".into(),
+        ));
+    }
+    Ok(())
+}
+
+/// Record profiles and histories at step `n` (state `u^n`, `v^{n+1/2}` in the kernel).
+#[allow(clippy::too_many_arguments)]
+pub(super) fn record<'a>(
+    model: &Model,
+    kernel: &Kernel,
+    step: usize,
+    time: f64,
+    initial_velocity: &[f64],
+    request: &OutputRequest,
+    output: &mut RunOutput,
+    next_profile: &mut std::iter::Peekable<std::slice::Iter<'a, usize>>,
+) {
+    let u = kernel.displacement();
+    if next_profile.peek() == Some(&&step) {
+        next_profile.next();
+        output.profiles.push(StressProfile {
+            step,
+            time,
+            stress: model.element_stress(u),
+        });
+    }
+    if step.is_multiple_of(request.history_every) && !output.histories.is_empty() {
+        for history in &mut output.histories {
+            let i = history.node;
+            let (velocity, acceleration) = kernel.velocity_and_acceleration_at(model, i, time);
+            // At n = 0 the state's own v^0.
+            let velocity = if step == 0 {
+                initial_velocity[i]
+            } else {
+                velocity
+            };
+            history.samples.push(HistorySample {
+                step,
+                time,
+                displacement: u[i],
+                velocity,
+                acceleration,
+            });
+        }
+    }
+}
