@@ -12,15 +12,18 @@
 //! - [`spectrum`], [`dispersion`], [`sweep`]: computed frequencies, single-mode phase speeds,
 //!   critical Courant numbers of the contact-active system;
 //! - [`scene`]: all records of one scene, in case order;
+//! - [`exchange`]: the results exchange format (another code's results, or courant's, as files)
+//!   read into records and written back;
 //! - [`table`]: named tables and their CSV/Markdown forms (fixed or round-trip precision), the
 //!   form every stage writes its records and verdicts in.
 //!
-//! Enters: what a producer measured (courant's solver today). Leaves: records, read by
+//! Enters: what a producer measured (courant's solver, or another code's files). Leaves: records, read by
 //! `compare`. Must not know: scenes, references, norms, verdicts, how records are produced.
 
 pub mod case;
 pub mod contact;
 pub mod dispersion;
+pub mod exchange;
 pub mod scene;
 pub mod spectrum;
 pub mod sweep;

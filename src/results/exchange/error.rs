@@ -1,0 +1,78 @@
+//! Errors of exchange files: every one names the file, the line, the column and the key (a CSV
+//! column name or a `results.toml` key), and the rule broken.
+
+use thiserror::Error;
+
+/// An exchange file that cannot be used, with the position of the offending cell or key.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("{file}:{line}:{column}: {}{message}", key_prefix(.key))]
+pub struct ExchangeError {
+    /// Path of the file.
+    pub file: String,
+    /// 1-based line (0 when the file itself is missing or unreadable).
+    pub line: usize,
+    /// 1-based column: the CSV field number, or the character column in `results.toml`.
+    pub column: usize,
+    /// The CSV column name or the dotted `results.toml` key (empty for the whole file).
+    pub key: String,
+    /// What is wrong, naming the value and the rule.
+    pub message: String,
+}
+
+fn key_prefix(key: &str) -> String {
+    if key.is_empty() {
+        String::new()
+    } else {
+        format!("`{key}`: ")
+    }
+}
+
+impl ExchangeError {
+    /// An error at `line`, `column` of `file` for `key`.
+    pub fn at(
+        file: &str,
+        line: usize,
+        column: usize,
+        key: &str,
+        message: impl Into<String>,
+    ) -> Self {
+        Self {
+            file: file.to_string(),
+            line,
+            column,
+            key: key.to_string(),
+            message: message.into(),
+        }
+    }
+
+    /// An error about the whole file.
+    pub fn file(file: &str, message: impl Into<String>) -> Self {
+        Self::at(file, 0, 0, "", message)
+    }
+}
+
+/// 1-based (line, column) of a byte offset of `text`.
+pub fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let column = before
+        .rfind('\n')
+        .map_or(before.len(), |i| before.len() - i - 1)
+        + 1;
+    (line, column)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_message_names_file_line_column_and_key() {
+        let e = ExchangeError::at("r/co1.csv", 3, 4, "stress", "`x` is not a number");
+        assert_eq!(
+            e.to_string(),
+            "r/co1.csv:3:4: `stress`: `x` is not a number"
+        );
+        assert_eq!(line_column("a\nbc\nd", 4), (2, 3));
+    }
+}

@@ -1,0 +1,243 @@
+//! `results.toml`: what a result set knows of itself. Every key is optional; unknown keys are
+//! errors naming line and key, as in scene files.
+//!
+//! ```toml
+//! format = 1                 # the exchange format's version (default 1)
+//! code = "sfepy"             # the producing code
+//! version = "2026.3"         # its version
+//!
+//! [cases."co0.5"]            # one table per case file (co0.5.csv), every key optional
+//! scheme = "central-difference"
+//! mass = "lumped"            # lmm/lumped, cmm/consistent, amm(beta), rmm(beta)
+//! dt = 0.005                 # the time step (time-level offsets are counted in steps of it)
+//! elements = 100             # the number of elements
+//! ```
+
+use super::FORMAT;
+use super::error::{ExchangeError, line_column};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use toml::Spanned;
+
+/// What `results.toml` says of one case.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct CaseMeta {
+    /// Time-stepping scheme, as the producer names it.
+    pub scheme: Option<String>,
+    /// Mass kind, as written, with its (line, column) (checked against the scene's vocabulary
+    /// by `compare::score`).
+    pub mass: Option<(String, usize, usize)>,
+    /// Time step.
+    pub dt: Option<f64>,
+    /// Number of elements, with its line.
+    pub elements: Option<(usize, usize)>,
+    /// Line of the case's table header.
+    pub line: usize,
+}
+
+/// `results.toml`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ResultsMeta {
+    /// Path of the file, for messages.
+    pub file: String,
+    /// Format version.
+    pub format: u32,
+    /// Producing code.
+    pub code: Option<String>,
+    /// Its version.
+    pub version: Option<String>,
+    /// Per case, by case name (sorted).
+    pub cases: BTreeMap<String, CaseMeta>,
+}
+
+impl ResultsMeta {
+    /// What is known of `case` (nothing when the file has no table for it).
+    pub fn case(&self, case: &str) -> Option<&CaseMeta> {
+        self.cases.get(case)
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawMeta {
+    format: Option<Spanned<i64>>,
+    code: Option<String>,
+    version: Option<String>,
+    #[serde(default)]
+    cases: BTreeMap<String, Spanned<RawCaseMeta>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawCaseMeta {
+    scheme: Option<String>,
+    mass: Option<Spanned<String>>,
+    dt: Option<Spanned<toml::Value>>,
+    elements: Option<Spanned<i64>>,
+}
+
+/// Read `results.toml` (`file` names it in messages).
+///
+/// # Errors
+/// TOML that does not parse, an unknown key, a format newer than this courant reads, a `dt`
+/// that is not a positive finite number, `elements` below 1; each naming line, column and key.
+pub fn parse(file: &str, text: &str) -> Result<ResultsMeta, ExchangeError> {
+    let at = |offset: usize, key: &str, message: String| {
+        let (line, column) = line_column(text, offset);
+        ExchangeError::at(file, line, column, key, message)
+    };
+    let raw: RawMeta = toml::from_str(text).map_err(|e| {
+        let offset = e.span().map_or(0, |s| s.start);
+        let message = e.message().trim().replace('\n', "; ");
+        // serde names an unknown key between backticks: `unknown field `x`, expected ...`.
+        let key = message
+            .strip_prefix("unknown field `")
+            .and_then(|rest| rest.split('`').next())
+            .unwrap_or_default()
+            .to_string();
+        at(offset, &key, message)
+    })?;
+    let format = match raw.format {
+        None => FORMAT,
+        Some(f) => match u32::try_from(*f.get_ref()) {
+            Ok(v) if (1..=FORMAT).contains(&v) => v,
+            _ => {
+                return Err(at(
+                    f.span().start,
+                    "format",
+                    format!(
+                        "{} is not a format this courant reads (1 to {FORMAT}); a newer format needs a newer courant",
+                        f.get_ref()
+                    ),
+                ));
+            }
+        },
+    };
+    let mut cases = BTreeMap::new();
+    for (name, spanned) in raw.cases {
+        let key = |k: &str| format!("cases.\"{name}\".{k}");
+        let header = line_column(text, spanned.span().start).0;
+        let raw = spanned.into_inner();
+        let dt = match raw.dt {
+            None => None,
+            Some(v) => {
+                let value = match v.get_ref() {
+                    toml::Value::Float(x) => Some(*x),
+                    toml::Value::Integer(i) => Some(*i as f64),
+                    _ => None,
+                };
+                match value {
+                    Some(x) if x.is_finite() && x > 0.0 => Some(x),
+                    _ => {
+                        return Err(at(
+                            v.span().start,
+                            &key("dt"),
+                            format!("{} must be a positive finite number", v.get_ref()),
+                        ));
+                    }
+                }
+            }
+        };
+        let elements = match raw.elements {
+            None => None,
+            Some(e) if *e.get_ref() >= 1 => {
+                Some((*e.get_ref() as usize, line_column(text, e.span().start).0))
+            }
+            Some(e) => {
+                return Err(at(
+                    e.span().start,
+                    &key("elements"),
+                    format!("{} must be at least 1", e.get_ref()),
+                ));
+            }
+        };
+        let mass = raw.mass.map(|m| {
+            let (line, column) = line_column(text, m.span().start);
+            (m.into_inner(), line, column)
+        });
+        cases.insert(
+            name,
+            CaseMeta {
+                scheme: raw.scheme,
+                mass,
+                dt,
+                elements,
+                line: header,
+            },
+        );
+    }
+    Ok(ResultsMeta {
+        file: file.to_string(),
+        format,
+        code: raw.code,
+        version: raw.version,
+        cases,
+    })
+}
+
+/// A TOML basic string (quoted and escaped).
+fn quoted(s: &str) -> String {
+    toml::Value::String(s.to_string()).to_string()
+}
+
+/// The text of a `results.toml` (format [`FORMAT`]): `code`, `version`, then one table per case
+/// in the order given. `dt` is written at round-trip precision.
+pub fn render(code: &str, version: &str, cases: &[(String, CaseMeta)]) -> String {
+    let mut out = format!(
+        "format = {FORMAT}\ncode = {}\nversion = {}\n",
+        quoted(code),
+        quoted(version)
+    );
+    for (name, meta) in cases {
+        out += &format!("\n[cases.{}]\n", quoted(name));
+        if let Some(s) = &meta.scheme {
+            out += &format!("scheme = {}\n", quoted(s));
+        }
+        if let Some((m, ..)) = &meta.mass {
+            out += &format!("mass = {}\n", quoted(m));
+        }
+        if let Some(dt) = meta.dt {
+            out += &format!("dt = {dt:?}\n");
+        }
+        if let Some((n, _)) = meta.elements {
+            out += &format!("elements = {n}\n");
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_written_file_reads_back() {
+        let case = CaseMeta {
+            scheme: Some("cd".into()),
+            mass: Some(("rmm(0.5)".into(), 0, 0)),
+            dt: Some(0.1 + 0.2),
+            elements: Some((100, 0)),
+            line: 0,
+        };
+        let text = render("courant", "0.1.0", &[("co0.5".into(), case)]);
+        let meta = parse("r.toml", &text).unwrap();
+        assert_eq!(meta.format, 1);
+        assert_eq!(meta.code.as_deref(), Some("courant"));
+        let c = meta.case("co0.5").unwrap();
+        assert_eq!(c.dt, Some(0.1 + 0.2));
+        assert_eq!(c.elements.map(|e| e.0), Some(100));
+        assert_eq!(c.mass.as_ref().map(|m| m.0.as_str()), Some("rmm(0.5)"));
+    }
+
+    #[test]
+    fn unknown_keys_and_bad_values_name_line_and_key() {
+        let e = parse("r.toml", "code = \"x\"\n[cases.a]\nsheme = \"cd\"\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (3, "sheme"), "{e}");
+        let e = parse("r.toml", "[cases.a]\ndt = -1\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (2, "cases.\"a\".dt"), "{e}");
+        let e = parse("r.toml", "format = 2\n").unwrap_err();
+        assert!(e.message.contains("newer courant"), "{e}");
+        let e = parse("r.toml", "[cases.a]\nelements = 0\n").unwrap_err();
+        assert_eq!(e.line, 2);
+    }
+}
