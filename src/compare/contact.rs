@@ -45,20 +45,30 @@ pub struct ContactResult {
     pub wall_time: Duration,
 }
 
-/// Compare a contact record with the analytic force of 1D wave theory.
-pub fn compare_contact(record: ContactRecord, reference: &ImpactForce) -> ContactResult {
-    let ContactRecord {
-        case,
-        penalty,
-        run,
-        diverged,
-        wall_time,
-    } = record;
-    let exact: Vec<f64> = run
-        .history
-        .iter()
-        .map(|s| reference.force(s.time))
-        .collect();
+/// The accuracy of a force history against 1D wave theory (the fields of [`ContactResult`] of
+/// the same names).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ForceMetrics {
+    /// First-plateau force of the reference.
+    pub plateau: f64,
+    /// Largest `|F - F1|/F1` inside the first plateau (10 % to 90 % of it).
+    pub plateau_deviation: f64,
+    /// `|impulse - exact|/exact`.
+    pub impulse_error: f64,
+    /// `|duration - exact|/exact` from the half-smallest-plateau crossings.
+    pub duration_error: f64,
+    /// L1 norm in time of the force error over the exact impulse.
+    pub force_l1_error: f64,
+}
+
+/// The exact force at each sample time and the accuracy of the history `(t_k, F_k)` whose total
+/// impulse is `impulse` (see [`ContactResult`] for each measure).
+pub fn force_metrics(
+    samples: &[(f64, f64)],
+    impulse: f64,
+    reference: &ImpactForce,
+) -> (Vec<f64>, ForceMetrics) {
+    let exact: Vec<f64> = samples.iter().map(|s| reference.force(s.0)).collect();
     let plateau = reference.first_plateau();
     let first = reference
         .plateaus()
@@ -68,13 +78,12 @@ pub fn compare_contact(record: ContactRecord, reference: &ImpactForce) -> Contac
         first.0 + 0.1 * (first.1 - first.0),
         first.0 + 0.9 * (first.1 - first.0),
     );
-    let plateau_deviation = run
-        .history
+    let plateau_deviation = samples
         .iter()
-        .filter(|s| s.time >= lo && s.time <= hi)
-        .map(|s| (s.force - plateau).abs() / plateau)
+        .filter(|s| s.0 >= lo && s.0 <= hi)
+        .map(|s| (s.1 - plateau).abs() / plateau)
         .fold(0.0, f64::max);
-    let impulse_error = (run.impulse - reference.impulse()).abs() / reference.impulse();
+    let impulse_error = (impulse - reference.impulse()).abs() / reference.impulse();
     // Half the smallest plateau of the reference: the staircase of unequal impedances steps down.
     let threshold = 0.5
         * reference
@@ -83,23 +92,42 @@ pub fn compare_contact(record: ContactRecord, reference: &ImpactForce) -> Contac
             .map(|p| p.force)
             .filter(|f| *f > 0.0)
             .fold(plateau, f64::min);
-    let above: Vec<f64> = run
-        .history
+    let above: Vec<f64> = samples
         .iter()
-        .filter(|s| s.force >= threshold)
-        .map(|s| s.time)
+        .filter(|s| s.1 >= threshold)
+        .map(|s| s.0)
         .collect();
     let duration_error = match (above.first(), above.last()) {
         (Some(a), Some(b)) => ((b - a) - reference.duration()).abs() / reference.duration(),
         _ => f64::NAN,
     };
-    let force_l1_error = run
-        .history
+    let force_l1_error = samples
         .windows(2)
         .zip(exact.iter().skip(1))
-        .map(|(pair, exact)| (pair[1].force - exact).abs() * (pair[1].time - pair[0].time))
+        .map(|(pair, exact)| (pair[1].1 - exact).abs() * (pair[1].0 - pair[0].0))
         .sum::<f64>()
         / reference.impulse();
+    let metrics = ForceMetrics {
+        plateau,
+        plateau_deviation,
+        impulse_error,
+        duration_error,
+        force_l1_error,
+    };
+    (exact, metrics)
+}
+
+/// Compare a contact record with the analytic force of 1D wave theory.
+pub fn compare_contact(record: ContactRecord, reference: &ImpactForce) -> ContactResult {
+    let ContactRecord {
+        case,
+        penalty,
+        run,
+        diverged,
+        wall_time,
+    } = record;
+    let samples: Vec<(f64, f64)> = run.history.iter().map(|s| (s.time, s.force)).collect();
+    let (exact, m) = force_metrics(&samples, run.impulse, reference);
     let energy = |s: &ContactSample| s.kinetic + s.strain;
     let conserved = |s: &ContactSample| s.kinetic_staggered + s.strain;
     let (energy_ratio, energy_ratio_conserved) = match (run.history.first(), run.history.last()) {
@@ -112,11 +140,11 @@ pub fn compare_contact(record: ContactRecord, reference: &ImpactForce) -> Contac
         run,
         diverged,
         reference: exact,
-        plateau,
-        plateau_deviation,
-        impulse_error,
-        duration_error,
-        force_l1_error,
+        plateau: m.plateau,
+        plateau_deviation: m.plateau_deviation,
+        impulse_error: m.impulse_error,
+        duration_error: m.duration_error,
+        force_l1_error: m.force_l1_error,
         energy_ratio,
         energy_ratio_conserved,
         wall_time,

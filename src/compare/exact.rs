@@ -14,6 +14,9 @@ const EXTREME_SAMPLES: usize = 4000;
 pub trait ExactSolution {
     /// Exact element averages of the stress at time `t`.
     fn element_averages(&self, mesh: &Mesh, t: f64) -> Vec<f64>;
+    /// Exact stress at each `x` (measured from the bar's start) at time `t`, right-continuous in
+    /// t (a front exactly at a point has arrived, as the references define it).
+    fn point_values(&self, xs: &[f64], t: f64) -> Vec<f64>;
     /// The largest value of `load_sign * sigma(x, t)` over the whole bar.
     fn extreme(&self, t: f64) -> f64;
     /// Exact displacement at `x` (mesh coordinates), where the reference provides it.
@@ -40,6 +43,19 @@ impl ExactSolution for Reference {
                     .map(|w| field.stress_average(w[0], w[1]))
                     .collect(),
                 Err(_) => vec![f64::NAN; nodes.len() - 1],
+            },
+        }
+    }
+
+    /// Exact stress at each `x` (from the bar's start) at time `t`: d'Alembert's and the graded
+    /// bar's `stress(x, t)`, the layered field evaluated once for all points.
+    fn point_values(&self, xs: &[f64], t: f64) -> Vec<f64> {
+        match self {
+            Reference::Dalembert(d) => xs.iter().map(|&x| d.stress(x, t)).collect(),
+            Reference::Graded(g) => g.stress_profile(xs, t),
+            Reference::Layered(l) => match l.field(t) {
+                Ok(field) => xs.iter().map(|&x| field.stress(x)).collect(),
+                Err(_) => vec![f64::NAN; xs.len()],
             },
         }
     }

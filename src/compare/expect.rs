@@ -75,25 +75,38 @@ pub fn evaluate(scene: &Scene, outcome: &SceneOutcome) -> Vec<Verdict> {
                 .collect(),
         };
         for (case, measured) in measured {
-            let pass = match (&measured, expectation.bound) {
-                (Measured::Value(x), Bound::Range { min, max }) => {
-                    x.is_finite() && min.is_none_or(|lo| *x >= lo) && max.is_none_or(|hi| *x <= hi)
-                }
-                (Measured::Flag(b), Bound::Equals(want)) => *b == want,
-                _ => false,
-            };
-            verdicts.push(Verdict {
-                case,
-                metric: expectation.metric,
-                at: expectation.at,
-                measured,
-                bound: expectation.bound,
-                pass,
-                source: expectation.source.clone(),
-            });
+            verdicts.push(judge(expectation, case, measured));
         }
     }
     verdicts
+}
+
+/// The verdict of `expectation` on `case` given what was `measured`: a finite value within the
+/// range, or the flag it must equal; anything missing fails.
+pub fn judge(expectation: &Expectation, case: String, measured: Measured) -> Verdict {
+    let pass = match (&measured, expectation.bound) {
+        (Measured::Value(x), Bound::Range { min, max }) => {
+            x.is_finite() && min.is_none_or(|lo| *x >= lo) && max.is_none_or(|hi| *x <= hi)
+        }
+        (Measured::Flag(b), Bound::Equals(want)) => *b == want,
+        _ => false,
+    };
+    Verdict {
+        case,
+        metric: expectation.metric,
+        at: expectation.at,
+        measured,
+        bound: expectation.bound,
+        pass,
+        source: expectation.source.clone(),
+    }
+}
+
+/// True when a profile at `time` is the one an expectation `at` names: hit exactly by a planned
+/// step, or (keep_step) the step nearest to `at`, within half a step `dt`. Every profile when
+/// `at` is `None`.
+pub fn at_time(at: Option<f64>, time: f64, dt: f64) -> bool {
+    at.is_none_or(|t| (time - t).abs() <= (1e-9 * t.abs()).max(0.5 * dt).max(1e-300))
 }
 
 fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
@@ -101,13 +114,7 @@ fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
         let selected: Vec<f64> = result
             .profiles
             .iter()
-            .filter(|p| {
-                // The profile of time t: hit exactly by a planned step, or (keep_step) the step
-                // nearest to t, within half a step.
-                expectation.at.is_none_or(|t| {
-                    (p.time - t).abs() <= (1e-9 * t.abs()).max(0.5 * result.dt).max(1e-300)
-                })
-            })
+            .filter(|p| at_time(expectation.at, p.time, result.dt))
             .filter_map(|p| p.norms.as_ref().map(pick))
             .collect();
         let expected = if expectation.at.is_some() {

@@ -1,6 +1,7 @@
 //! Error norms of an element-stress profile against exact element averages.
 //!
-//! All norms are normalised by the stress scale `|sigma0|` and the bar length `L`:
+//! All norms are normalised by the stress scale `|sigma0|` and the bar length `L` (point values
+//! of another code weigh their cells instead of `h_e`, [`ErrorNorms::weighted`]):
 //!
 //! ```text
 //!   L1   = (1/L) sum_e h_e |sigma_e - sigma_ref,e| / |sigma0|
@@ -36,7 +37,8 @@ pub struct ErrorNorms {
 
 impl ErrorNorms {
     /// Compute the norms of `stress` against `reference` (exact element averages) and `extreme`
-    /// (the largest `s sigma_exact` over the bar).
+    /// (the largest `s sigma_exact` over the bar): [`ErrorNorms::weighted`] with the element
+    /// lengths `h_e` as weights and the mesh length as `L`.
     pub fn of(
         mesh: &Mesh,
         stress: &[f64],
@@ -45,10 +47,27 @@ impl ErrorNorms {
         scale: f64,
         sign: f64,
     ) -> Self {
-        let length = mesh.length();
+        let lengths: Vec<f64> = (0..stress.len()).map(|e| mesh.element_length(e)).collect();
+        Self::weighted(&lengths, mesh.length(), stress, reference, extreme, scale, sign)
+    }
+
+    /// The norms with weight `w_i` for value `i` and length `L` (the formulas of the module with
+    /// `h_e` replaced by `w_i`): element lengths for element averages, cell lengths for point
+    /// values (each point's cell runs from the midpoint with its left neighbour, or the bar's
+    /// start, to the midpoint with its right neighbour, or the bar's end; on points that include
+    /// both ends this is the trapezoid rule, and the weights sum to `L`).
+    pub fn weighted(
+        weights: &[f64],
+        length: f64,
+        stress: &[f64],
+        reference: &[f64],
+        extreme: f64,
+        scale: f64,
+        sign: f64,
+    ) -> Self {
         let (mut l1, mut l2, mut linf, mut overshoot) = (0.0, 0.0, 0.0_f64, 0.0_f64);
         for e in 0..stress.len() {
-            let h = mesh.element_length(e);
+            let h = weights[e];
             let err = (stress[e] - reference[e]).abs();
             l1 += h * err;
             l2 += h * err * err;

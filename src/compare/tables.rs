@@ -177,23 +177,28 @@ pub fn expectations_table(verdicts: &[Verdict]) -> Table {
         "case", "metric", "at", "measured", "min", "max", "equals", "verdict", "source",
     ]);
     for v in verdicts {
-        let (min, max, equals) = v.bound_cells();
-        let measured = match &v.measured {
-            Measured::Value(x) => Cell::Num(*x),
-            Measured::Flag(b) => Cell::Text(b.to_string()),
-            Measured::Missing(why) => Cell::Text(format!("missing: {why}")),
-        };
-        table.push(vec![
-            v.case.as_str().into(),
-            v.metric.name().into(),
-            v.at.into(),
-            measured,
-            min,
-            max,
-            equals,
-            (if v.pass { "pass" } else { "FAIL" }).into(),
-            v.source.as_str().into(),
-        ]);
+        table.push(verdict_cells(v));
     }
     table
+}
+
+/// The cells of one verdict: `case, metric, at, measured, min, max, equals, verdict, source`.
+pub fn verdict_cells(v: &Verdict) -> Vec<Cell> {
+    let (min, max, equals) = v.bound_cells();
+    let measured = match &v.measured {
+        Measured::Value(x) => Cell::Num(*x),
+        Measured::Flag(b) => Cell::Text(b.to_string()),
+        Measured::Missing(why) => Cell::Text(format!("missing: {why}")),
+    };
+    vec![
+        v.case.as_str().into(),
+        v.metric.name().into(),
+        v.at.into(),
+        measured,
+        min,
+        max,
+        equals,
+        (if v.pass { "pass" } else { "FAIL" }).into(),
+        v.source.as_str().into(),
+    ]
 }
