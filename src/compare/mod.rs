@@ -15,9 +15,12 @@
 //!   (predicted against observed stability), [`work_precision`] (cost beside error),
 //!   [`contact_closed_forms`] (the closed forms against their asymptotes);
 //! - [`tables`], [`study_tables`], [`files`]: the CSV tables of all of the above, the files
-//!   `courant run` writes and those a report keeps.
+//!   `courant run` writes and those a report keeps;
+//! - [`score`]: another code's results (exchange files) graded against the scene's references
+//!   with the same norms and expectations, plus time-level, sign and load diagnostics.
 //!
-//! Enters: records (`results`) and the scene they came from (cases, references, expectations).
+//! Enters: records (`results`, courant's or read from another code's files) and the scene they
+//! came from (cases, references, expectations).
 //! Leaves: comparisons, verdicts and their tables. Must not know: how records were produced (it
 //! never runs a solver), documents, figures, the command line.
 
@@ -33,6 +36,7 @@ pub mod files;
 pub mod norms;
 pub mod outcome;
 pub mod scene;
+pub mod score;
 pub mod spectrum;
 pub mod stability;
 pub mod study_tables;

@@ -9,12 +9,15 @@
 //!
 //! - this module: one scene or one case, run and compared;
 //! - [`studies`]: the report's convergence and work-precision studies, run and compared;
-//! - [`report_runs`]: everything the report shows, run in parallel with a progress bar.
+//! - [`report_runs`]: everything the report shows, run in parallel with a progress bar;
+//! - [`score`]: another code's result files read and graded (`courant score`, the report's
+//!   other codes).
 //!
 //! Enters: scenes and studies. Leaves: compared outcomes. Must not know: documents, figures,
 //! tables' layout, the command line.
 
 pub mod report_runs;
+pub mod score;
 pub mod studies;
 
 use crate::compare::cache::ProfileCache;

@@ -112,6 +112,7 @@ pub fn read_case(
     Ok(CaseFile {
         case: case.to_string(),
         file: file.to_string(),
+        columns: header.fields.iter().map(|&(n, i)| (n, i + 1)).collect(),
         data,
         reference: None,
     })

@@ -103,6 +103,16 @@ pub enum CaseData {
     Spectrum(Vec<SpectrumRow>),
 }
 
+impl CaseFile {
+    /// The 1-based field number of `column` (1 when the file has no such column).
+    pub fn column(&self, column: &str) -> usize {
+        self.columns
+            .iter()
+            .find(|(name, _)| *name == column)
+            .map_or(1, |&(_, i)| i)
+    }
+}
+
 impl CaseData {
     /// What the data is, for messages.
     pub fn describe(&self) -> &'static str {
@@ -126,6 +136,8 @@ pub struct CaseFile {
     pub case: String,
     /// Path of the file, for messages.
     pub file: String,
+    /// `(column name, 1-based field number)` of its columns, for messages.
+    pub columns: Vec<(&'static str, usize)>,
     /// Its data.
     pub data: CaseData,
     /// The reference that produced the values, written as a `reference` column (`courant

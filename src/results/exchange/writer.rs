@@ -118,6 +118,7 @@ mod tests {
         let profiles = CaseFile {
             case: "co1".into(),
             file: String::new(),
+            columns: Vec::new(),
             data: CaseData::Profiles(vec![Profile {
                 time: 0.1 + 0.2,
                 positions: Positions::Elements {
@@ -132,6 +133,7 @@ mod tests {
         let force = CaseFile {
             case: "pc".into(),
             file: String::new(),
+            columns: Vec::new(),
             data: CaseData::Force(ForceHistory {
                 time: vec![0.0, 0.1],
                 force: vec![0.0, 1.0 / 3.0],
@@ -144,6 +146,7 @@ mod tests {
         let spectrum = CaseFile {
             case: "s".into(),
             file: String::new(),
+            columns: Vec::new(),
             data: CaseData::Spectrum(vec![SpectrumRow {
                 mode: 1,
                 omega: std::f64::consts::PI,

@@ -1,0 +1,343 @@
+//! Binding a result set to its scene: each file to the case its stem names, checked against
+//! that case before anything is compared (the kind of data the scene's cases produce, a mesh
+//! that covers the bar, points on it, mass labels the scene knows, modes the closed forms have),
+//! every error naming file, line, column and key.
+
+use super::outcome::ScoreError;
+use crate::results::exchange::error::ExchangeError;
+use crate::results::exchange::meta::CaseMeta;
+use crate::results::exchange::reader::TOUCH;
+use crate::results::exchange::record::{CaseData, CaseFile, ExchangeSet, Positions};
+use crate::scene::cases::{Case, Scene};
+use crate::scene::contact::ContactCase;
+use crate::scene::mass::parse_mass;
+use crate::scene::reference::Reference;
+use crate::scene::spectrum::SpectrumCase;
+use courant_solver::MassKind;
+
+/// What the cases of a scene produce, i.e. what its result files hold.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SceneKind {
+    /// Time-stepping cases: stress profiles.
+    Stepping,
+    /// Contact cases: force histories.
+    Contact,
+    /// Spectrum cases: spectra.
+    Spectrum,
+}
+
+impl SceneKind {
+    /// The kind of a scene with an exchange form.
+    ///
+    /// # Errors
+    /// A dispersion or contact-stability scene (format 1 has no form for them), or a
+    /// time-stepping scene without an analytic reference.
+    pub fn of(scene: &Scene) -> Result<SceneKind, ScoreError> {
+        if !scene.cases.is_empty() {
+            if scene.cases.iter().any(|c| c.reference.is_none()) {
+                return Err(ScoreError::Scene(format!(
+                    "scene `{}` has no analytic reference: a result file's stress profiles are graded against one",
+                    scene.name
+                )));
+            }
+            Ok(SceneKind::Stepping)
+        } else if !scene.contact.is_empty() {
+            Ok(SceneKind::Contact)
+        } else if !scene.spectra.is_empty() {
+            Ok(SceneKind::Spectrum)
+        } else {
+            Err(ScoreError::Scene(format!(
+                "scene `{}` is a dispersion or contact-stability study: the exchange format (format 1) carries stress profiles, contact force histories and spectra",
+                scene.name
+            )))
+        }
+    }
+
+    /// What a file of this scene holds, for messages.
+    pub fn holds(self) -> &'static str {
+        match self {
+            SceneKind::Stepping => "stress profiles (t, x_left, x_right, stress or t, x, stress)",
+            SceneKind::Contact => "contact force histories (t, force)",
+            SceneKind::Spectrum => "spectra (mode, omega)",
+        }
+    }
+
+    /// Case names of the scene, in order.
+    pub fn case_names(self, scene: &Scene) -> Vec<String> {
+        match self {
+            SceneKind::Stepping => scene.cases.iter().map(|c| c.name.clone()).collect(),
+            SceneKind::Contact => scene.contact.iter().map(|c| c.name.clone()).collect(),
+            SceneKind::Spectrum => scene.spectra.iter().map(|c| c.name.clone()).collect(),
+        }
+    }
+}
+
+/// The scene case a file answers.
+#[derive(Debug, Clone, Copy)]
+pub enum Target<'a> {
+    /// A time-stepping case and its reference.
+    Stepping(&'a Case, &'a Reference),
+    /// A contact case.
+    Contact(&'a ContactCase),
+    /// A spectrum case.
+    Spectrum(&'a SpectrumCase),
+}
+
+/// A file bound to its case, with what `results.toml` says of it.
+#[derive(Debug, Clone)]
+pub struct Bound<'a> {
+    /// The file.
+    pub file: &'a CaseFile,
+    /// The case it answers.
+    pub target: Target<'a>,
+    /// `results.toml`'s table of the case.
+    pub meta: Option<&'a CaseMeta>,
+    /// The mass kind `results.toml` names.
+    pub mass: Option<MassKind>,
+    /// The time step: `results.toml`'s, else the scene case's.
+    pub dt: Option<(f64, &'static str)>,
+    /// Mass kind of each spectrum row (spectra only).
+    pub row_masses: Vec<MassKind>,
+}
+
+/// The profile times of a time-stepping case: its profile steps times `dt`, as the solver
+/// computes them (`t^n = n dt`).
+pub fn profile_times(case: &Case) -> Vec<f64> {
+    let mut steps = case.request.profile_steps.clone();
+    steps.sort_unstable();
+    steps.dedup();
+    steps
+        .into_iter()
+        .map(|n| n as f64 * case.integrator.dt)
+        .collect()
+}
+
+/// `(start, end)` of a case's bar.
+pub fn bar_extent(case: &Case) -> (f64, f64) {
+    let mesh = case.model.bar().mesh();
+    (mesh.start(), mesh.start() + mesh.length())
+}
+
+/// Bind every file of `set` to the case of `scene` its stem names.
+///
+/// # Errors
+/// A scene without an exchange form ([`SceneKind::of`]); a file whose stem names no case, whose
+/// data is not what the scene's cases produce, whose mesh does not cover the bar or whose points
+/// leave it, whose modes the closed forms do not have; a mass label the scene does not know;
+/// `elements` in `results.toml` that disagree with the file.
+pub fn bind<'a>(scene: &'a Scene, set: &'a ExchangeSet) -> Result<Vec<Bound<'a>>, ScoreError> {
+    let kind = SceneKind::of(scene)?;
+    let names = kind.case_names(scene);
+    set.cases
+        .iter()
+        .map(|file| {
+            let meta = set.meta.as_ref().and_then(|m| m.case(&file.case));
+            let meta_file = set.meta.as_ref().map_or("", |m| m.file.as_str());
+            bind_file(scene, kind, &names, file, meta, meta_file)
+        })
+        .collect()
+}
+
+fn bind_file<'a>(
+    scene: &'a Scene,
+    kind: SceneKind,
+    names: &[String],
+    file: &'a CaseFile,
+    meta: Option<&'a CaseMeta>,
+    meta_file: &str,
+) -> Result<Bound<'a>, ScoreError> {
+    let refuse = |message: String| ExchangeError::at(&file.file, 1, 1, "", message);
+    if !names.contains(&file.case) {
+        return Err(refuse(format!(
+            "no case `{}` in scene `{}` (cases: {}): a result file is named after the case it answers",
+            file.case,
+            scene.name,
+            names.join(", ")
+        ))
+        .into());
+    }
+    let mass = match meta.and_then(|m| m.mass.as_ref()) {
+        Some((label, line, column)) => Some(parse_mass(label).map_err(|rule| {
+            ExchangeError::at(
+                meta_file,
+                *line,
+                *column,
+                &format!("cases.\"{}\".mass", file.case),
+                rule,
+            )
+        })?),
+        None => None,
+    };
+    let meta_dt = meta.and_then(|m| m.dt).map(|dt| (dt, "results.toml"));
+    let mut row_masses = Vec::new();
+    let (target, dt) = match (kind, &file.data) {
+        (SceneKind::Stepping, CaseData::Profiles(profiles)) => {
+            let case = scene
+                .cases
+                .iter()
+                .find(|c| c.name == file.case)
+                .expect("the stem names a case");
+            let reference = case.reference.as_ref().expect("checked by SceneKind::of");
+            check_on_bar(file, profiles, bar_extent(case))?;
+            if let (Some((n, line)), Some(first)) =
+                (meta.and_then(|m| m.elements), profiles.first())
+                && matches!(first.positions, Positions::Elements { .. })
+                && first.positions.len() != n
+            {
+                return Err(ExchangeError::at(
+                    meta_file,
+                    line,
+                    1,
+                    &format!("cases.\"{}\".elements", file.case),
+                    format!(
+                        "elements = {n}, but {} has {} elements at t = {}",
+                        file.file,
+                        first.positions.len(),
+                        first.time
+                    ),
+                )
+                .into());
+            }
+            (
+                Target::Stepping(case, reference),
+                meta_dt.or(Some((case.integrator.dt, "scene"))),
+            )
+        }
+        (SceneKind::Contact, CaseData::Force(_)) => {
+            let case = scene
+                .contact
+                .iter()
+                .find(|c| c.name == file.case)
+                .expect("the stem names a case");
+            (
+                Target::Contact(case),
+                meta_dt.or(Some((case.integrator.dt, "scene"))),
+            )
+        }
+        (SceneKind::Spectrum, CaseData::Spectrum(rows)) => {
+            let case = scene
+                .spectra
+                .iter()
+                .find(|c| c.name == file.case)
+                .expect("the stem names a case");
+            let Some(bar) = &case.closed_form else {
+                return Err(ScoreError::Scene(format!(
+                    "case `{}` of scene `{}` has no closed-form spectrum (its bar is not uniform and homogeneous): nothing to grade {} against",
+                    case.name, scene.name, file.file
+                )));
+            };
+            let modes = bar.modes();
+            for row in rows {
+                let row_mass = match (&row.mass, mass, case.masses.as_slice()) {
+                    (Some(label), _, _) => parse_mass(label).map_err(|rule| {
+                        ExchangeError::at(&file.file, row.line, file.column("mass"), "mass", rule)
+                    })?,
+                    (None, Some(m), _) => m,
+                    (None, None, [only]) => *only,
+                    (None, None, _) => {
+                        return Err(ExchangeError::at(
+                            &file.file,
+                            row.line,
+                            file.column("mode"),
+                            "mass",
+                            format!(
+                                "which mass kind? case `{}` has several ({}): add a `mass` column or `mass` in results.toml",
+                                case.name,
+                                case.masses.iter().map(|m| m.label()).collect::<Vec<_>>().join(", ")
+                            ),
+                        )
+                        .into());
+                    }
+                };
+                if !modes.contains(&row.mode) {
+                    return Err(ExchangeError::at(
+                        &file.file,
+                        row.line,
+                        file.column("mode"),
+                        "mode",
+                        format!(
+                            "mode {} is not a mode of this bar ({}..={})",
+                            row.mode,
+                            modes.start(),
+                            modes.end()
+                        ),
+                    )
+                    .into());
+                }
+                row_masses.push(row_mass);
+            }
+            (Target::Spectrum(case), None)
+        }
+        (_, data) => {
+            return Err(refuse(format!(
+                "scene `{}` answers with {}; this file holds {}",
+                scene.name,
+                kind.holds(),
+                data.describe()
+            ))
+            .into());
+        }
+    };
+    Ok(Bound {
+        file,
+        target,
+        meta,
+        mass,
+        dt,
+        row_masses,
+    })
+}
+
+/// Every profile of `file` on the bar `[start, end]`: elements from `start` to `end`, points
+/// within it (to [`TOUCH`] of the bar's length).
+pub fn check_on_bar(
+    file: &CaseFile,
+    profiles: &[crate::results::exchange::record::Profile],
+    (start, end): (f64, f64),
+) -> Result<(), ExchangeError> {
+    let tol = TOUCH * (end - start);
+    let bar = format!("[{start}, {end}]");
+    for p in profiles {
+        let last = p.lines.len() - 1;
+        match &p.positions {
+            Positions::Elements { left, right } => {
+                if (left[0] - start).abs() > tol {
+                    return Err(ExchangeError::at(
+                        &file.file,
+                        p.lines[0],
+                        file.column("x_left"),
+                        "x_left",
+                        format!(
+                            "the mesh does not cover the bar {bar}: at t = {} it starts at x = {}",
+                            p.time, left[0]
+                        ),
+                    ));
+                }
+                if (right[last] - end).abs() > tol {
+                    return Err(ExchangeError::at(
+                        &file.file,
+                        p.lines[last],
+                        file.column("x_right"),
+                        "x_right",
+                        format!(
+                            "the mesh does not cover the bar {bar}: at t = {} it ends at x = {}",
+                            p.time, right[last]
+                        ),
+                    ));
+                }
+            }
+            Positions::Points(x) => {
+                if let Some(i) = x.iter().position(|&x| x < start - tol || x > end + tol) {
+                    return Err(ExchangeError::at(
+                        &file.file,
+                        p.lines[i],
+                        file.column("x"),
+                        "x",
+                        format!("x = {} lies outside the bar {bar}", x[i]),
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,113 @@
+//! A compared courant run as an exchange set (`courant run --exchange DIR`): courant's own
+//! results in the format another code writes, so that `courant score` grades them exactly as it
+//! grades the others (and a test checks it gives the run's own norms).
+
+use crate::compare::outcome::SceneOutcome;
+use crate::results::exchange::FORMAT;
+use crate::results::exchange::meta::{CaseMeta, ResultsMeta};
+use crate::results::exchange::record::{
+    CaseData, CaseFile, ExchangeSet, ForceHistory, Positions, Profile, SpectrumRow,
+};
+use crate::scene::cases::Scene;
+use std::collections::BTreeMap;
+
+/// One case file of an exported set.
+fn case_file(case: &str, data: CaseData) -> CaseFile {
+    CaseFile {
+        case: case.to_string(),
+        file: format!("{case}.csv"),
+        columns: Vec::new(),
+        data,
+        reference: None,
+    }
+}
+
+/// The set of a compared scene (`label` names it): element-average profiles on each case's
+/// mesh (stress profiles), `t, force, gap` (contact), `mode, omega, mass` (spectra), and a
+/// `results.toml` with code `courant`, its version and per case scheme, mass, dt and elements.
+/// `None` for a scene the format has no form for (dispersion, contact stability).
+pub fn exchange_set(scene: &Scene, outcome: &SceneOutcome, label: &str) -> Option<ExchangeSet> {
+    let mut cases = Vec::new();
+    let mut meta = BTreeMap::new();
+    for (case, r) in scene.cases.iter().zip(&outcome.results) {
+        let nodes = case.model.bar().mesh().nodes();
+        let n = nodes.len() - 1;
+        let profiles = r
+            .profiles
+            .iter()
+            .map(|p| Profile {
+                time: p.time,
+                positions: Positions::Elements {
+                    left: nodes[..n].to_vec(),
+                    right: nodes[1..].to_vec(),
+                },
+                stress: p.stress.clone(),
+                lines: Vec::new(),
+            })
+            .collect();
+        cases.push(case_file(&r.case, CaseData::Profiles(profiles)));
+        meta.insert(
+            r.case.clone(),
+            CaseMeta {
+                scheme: Some(r.scheme.clone()),
+                mass: Some((r.critical.mass.label(), 0, 0)),
+                dt: Some(r.dt),
+                elements: Some((r.elements, 0)),
+                line: 0,
+            },
+        );
+    }
+    for c in &outcome.contact {
+        let h = &c.run.history;
+        let history = ForceHistory {
+            time: h.iter().map(|s| s.time).collect(),
+            force: h.iter().map(|s| s.force).collect(),
+            penetration: None,
+            gap: Some(h.iter().map(|s| s.gap).collect()),
+            lines: Vec::new(),
+        };
+        cases.push(case_file(&c.case, CaseData::Force(history)));
+        meta.insert(
+            c.case.clone(),
+            CaseMeta {
+                scheme: Some(c.run.scheme.label().to_string()),
+                dt: Some(c.run.dt),
+                ..CaseMeta::default()
+            },
+        );
+    }
+    for s in &outcome.spectra {
+        let rows = s
+            .masses
+            .iter()
+            .zip(&s.computed)
+            .flat_map(|(m, omega)| {
+                s.modes
+                    .iter()
+                    .zip(omega)
+                    .map(|(&mode, &omega)| SpectrumRow {
+                        mode,
+                        omega,
+                        mass: Some(m.label()),
+                        line: 0,
+                    })
+            })
+            .collect();
+        cases.push(case_file(&s.case, CaseData::Spectrum(rows)));
+    }
+    if cases.is_empty() {
+        return None;
+    }
+    cases.sort_by(|a, b| a.case.cmp(&b.case));
+    Some(ExchangeSet {
+        label: label.to_string(),
+        cases,
+        meta: Some(ResultsMeta {
+            file: "results.toml".into(),
+            format: FORMAT,
+            code: Some("courant".into()),
+            version: Some(env!("CARGO_PKG_VERSION").into()),
+            cases: meta,
+        }),
+    })
+}

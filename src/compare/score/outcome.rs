@@ -1,0 +1,194 @@
+//! What scoring produces: every case file of a result set beside its reference (norms, force
+//! or spectrum measures), its diagnostics, the verdicts of the scene's expectations (and those
+//! that cannot be measured from files), and convergence studies across sets.
+
+use super::diagnostics::Diagnostics;
+use crate::compare::contact::ForceMetrics;
+use crate::compare::convergence::ConvergenceResult;
+use crate::compare::norms::ErrorNorms;
+use crate::compare::verdict::Verdict;
+use crate::results::exchange::error::ExchangeError;
+use crate::scene::expectation::Metric;
+use thiserror::Error;
+
+/// Why a result set cannot be scored.
+#[derive(Debug, Error)]
+pub enum ScoreError {
+    /// A file is not valid exchange data, or does not fit the scene (file, line, column, key).
+    #[error(transparent)]
+    Input(#[from] ExchangeError),
+    /// The scene has nothing a result file could be graded against.
+    #[error("{0}")]
+    Scene(String),
+}
+
+/// One stress profile beside the exact solution.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScoredProfile {
+    /// Output time.
+    pub time: f64,
+    /// Element midpoints or points.
+    pub x: Vec<f64>,
+    /// The file's stresses.
+    pub stress: Vec<f64>,
+    /// Exact element averages or point values.
+    pub reference: Vec<f64>,
+    /// Norms against them (those of `courant run`).
+    pub norms: ErrorNorms,
+}
+
+/// A contact force history beside 1D wave theory.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScoredForce {
+    /// Sample times.
+    pub time: Vec<f64>,
+    /// The file's forces.
+    pub force: Vec<f64>,
+    /// Exact forces at the sample times.
+    pub reference: Vec<f64>,
+    /// Impulse of the samples (trapezoid rule).
+    pub impulse: f64,
+    /// Accuracy measures (those of `courant run`).
+    pub metrics: ForceMetrics,
+}
+
+/// A spectrum beside the closed forms.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScoredSpectrum {
+    /// `(mass label, mode, omega, closed form)` per row, in file order.
+    pub rows: Vec<(String, usize, f64, f64)>,
+    /// Largest `|omega - closed| / closed` over the elastic modes.
+    pub deviation: f64,
+}
+
+/// What a case file holds, beside its reference.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Scored {
+    /// Stress profiles (`points`: point values rather than element averages).
+    Profiles {
+        /// Profiles in time order.
+        profiles: Vec<ScoredProfile>,
+        /// Point values (weighted by their cells) rather than element averages.
+        points: bool,
+    },
+    /// A force history.
+    Force(ScoredForce),
+    /// A spectrum.
+    Spectrum(ScoredSpectrum),
+}
+
+/// One case file of a set, scored.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScoredCase {
+    /// Case name.
+    pub case: String,
+    /// Path of the file.
+    pub file: String,
+    /// Scheme named in `results.toml`.
+    pub scheme: Option<String>,
+    /// Mass label named in `results.toml` (as the scene writes it, e.g. `amm(0.5)`).
+    pub mass: Option<String>,
+    /// Elements (of the file's first profile, or from `results.toml` for point values); `None`
+    /// for a force history.
+    pub elements: Option<usize>,
+    /// The time step the diagnostics count in and where it came from.
+    pub dt: Option<(f64, &'static str)>,
+    /// The reference that produced the exact values.
+    pub reference: &'static str,
+    /// The file beside its reference.
+    pub scored: Scored,
+    /// Time level, sign and load convention.
+    pub diagnostics: Diagnostics,
+}
+
+impl ScoredCase {
+    /// Worst norms over the profiles (stress profiles only).
+    pub fn worst_norms(&self) -> Option<ErrorNorms> {
+        match &self.scored {
+            Scored::Profiles { profiles, .. } => {
+                ErrorNorms::worst(profiles.iter().map(|p| p.norms))
+            }
+            _ => None,
+        }
+    }
+}
+
+/// An expectation that files cannot answer (energies, divergence) or whose case has no file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Skipped {
+    /// Case name.
+    pub case: String,
+    /// Metric.
+    pub metric: Metric,
+    /// Profile time, if the expectation names one.
+    pub at: Option<f64>,
+    /// Why it is not measured.
+    pub reason: String,
+    /// Source of truth of the expectation.
+    pub source: String,
+}
+
+/// A result set scored against a scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScoredSet {
+    /// The set's label (its directory as given).
+    pub label: String,
+    /// Producing code (`-` when unknown).
+    pub code: String,
+    /// Its version (`-` when unknown).
+    pub version: String,
+    /// Every case file, in case order of the scene.
+    pub cases: Vec<ScoredCase>,
+    /// Verdicts of the scene's expectations on the set's files.
+    pub verdicts: Vec<Verdict>,
+    /// Expectations not measured, with the reason.
+    pub skipped: Vec<Skipped>,
+}
+
+impl ScoredSet {
+    /// True when every expectation holds and no diagnostic fails.
+    pub fn passed(&self) -> bool {
+        self.verdicts.iter().all(|v| v.pass)
+            && self
+                .cases
+                .iter()
+                .all(|c| c.diagnostics.verdicts().iter().all(|v| v.1 != Some(false)))
+    }
+}
+
+/// Orders of one case across result sets at different N.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseConvergence {
+    /// Case name.
+    pub case: String,
+    /// The levels and the band (the report's study of this case, or measured only).
+    pub result: ConvergenceResult,
+    /// Why no band applies, if none does.
+    pub note: Option<String>,
+}
+
+impl CaseConvergence {
+    /// True when no fitted order is outside its band.
+    pub fn passed(&self) -> bool {
+        self.result.verdicts().iter().all(|v| v.pass != Some(false))
+    }
+}
+
+/// Every result set scored against one scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScoreOutcome {
+    /// Scene name.
+    pub scene: String,
+    /// The sets, in argument order.
+    pub sets: Vec<ScoredSet>,
+    /// Convergence of each case given at several N.
+    pub convergence: Vec<CaseConvergence>,
+}
+
+impl ScoreOutcome {
+    /// True when every set passes and every fitted order is in its band.
+    pub fn passed(&self) -> bool {
+        self.sets.iter().all(ScoredSet::passed)
+            && self.convergence.iter().all(CaseConvergence::passed)
+    }
+}

@@ -1,0 +1,405 @@
+//! The tables of scored result sets, one row per case (or per profile, expectation, mesh):
+//! `summary.csv`, `norms.csv`, `expectations.csv`, `diagnostics.csv` and, for several sets of one
+//! case at different N, `convergence.csv` and `convergence.orders.csv`. Every table starts with
+//! the set (its directory as given).
+
+use super::outcome::{CaseConvergence, ScoreOutcome, Scored, ScoredSet};
+use crate::compare::outcome::SceneOutcome;
+use crate::compare::tables::verdict_cells;
+use crate::results::table::{Cell, Precision, Table};
+
+fn verdict_cell(v: Option<bool>) -> Cell {
+    match v {
+        Some(true) => "pass".into(),
+        Some(false) => "FAIL".into(),
+        None => Cell::Empty,
+    }
+}
+
+/// One row per case: its size and step, then the worst norms over its profiles (stress
+/// profiles), the force measures (contact) or the closed-form deviation (spectra).
+pub fn summary_table(sets: &[ScoredSet]) -> Table {
+    let first = sets.iter().flat_map(|s| &s.cases).next().map(|c| &c.scored);
+    let mut table = match first {
+        Some(Scored::Force(_)) => Table::new(&[
+            "set",
+            "code",
+            "case",
+            "scheme",
+            "samples",
+            "dt",
+            "impulse",
+            "plateau",
+            "plateau_deviation",
+            "impulse_error",
+            "duration_error",
+            "force_l1_error",
+        ]),
+        Some(Scored::Spectrum(_)) => Table::new(&[
+            "set",
+            "code",
+            "case",
+            "masses",
+            "modes",
+            "closed_form_deviation",
+        ]),
+        _ => Table::new(&[
+            "set",
+            "code",
+            "case",
+            "N",
+            "values",
+            "scheme",
+            "mass",
+            "dt",
+            "dt_source",
+            "profiles",
+            "l1",
+            "l2",
+            "linf",
+            "overshoot",
+            "tv_ratio",
+        ]),
+    };
+    for set in sets {
+        for c in &set.cases {
+            let head: Vec<Cell> = vec![
+                set.label.as_str().into(),
+                set.code.as_str().into(),
+                c.case.as_str().into(),
+            ];
+            let rest: Vec<Cell> = match &c.scored {
+                Scored::Profiles { profiles, points } => {
+                    let n = c.worst_norms();
+                    vec![
+                        c.elements.into(),
+                        (if *points { "points" } else { "elements" }).into(),
+                        c.scheme.clone().into(),
+                        c.mass.clone().into(),
+                        c.dt.map(|d| d.0).into(),
+                        c.dt.map(|d| d.1).into(),
+                        profiles.len().into(),
+                        n.map(|n| n.l1).into(),
+                        n.map(|n| n.l2).into(),
+                        n.map(|n| n.linf).into(),
+                        n.map(|n| n.overshoot).into(),
+                        n.map(|n| n.tv_ratio).into(),
+                    ]
+                }
+                Scored::Force(f) => vec![
+                    c.scheme.clone().into(),
+                    f.time.len().into(),
+                    c.dt.map(|d| d.0).into(),
+                    f.impulse.into(),
+                    f.metrics.plateau.into(),
+                    f.metrics.plateau_deviation.into(),
+                    f.metrics.impulse_error.into(),
+                    f.metrics.duration_error.into(),
+                    f.metrics.force_l1_error.into(),
+                ],
+                Scored::Spectrum(s) => {
+                    let mut masses: Vec<&str> = s.rows.iter().map(|r| r.0.as_str()).collect();
+                    masses.dedup();
+                    vec![
+                        masses.join(" ").into(),
+                        s.rows.len().into(),
+                        s.deviation.into(),
+                    ]
+                }
+            };
+            table.push(head.into_iter().chain(rest).collect());
+        }
+    }
+    table
+}
+
+/// Norms per case and profile time: `set, case, t, l1, l2, linf, overshoot, tv_ratio`.
+pub fn norms_table(sets: &[ScoredSet]) -> Table {
+    let mut table = Table::new(&[
+        "set",
+        "case",
+        "t",
+        "l1",
+        "l2",
+        "linf",
+        "overshoot",
+        "tv_ratio",
+    ]);
+    for set in sets {
+        for c in &set.cases {
+            if let Scored::Profiles { profiles, .. } = &c.scored {
+                for p in profiles {
+                    let n = p.norms;
+                    table.push(vec![
+                        set.label.as_str().into(),
+                        c.case.as_str().into(),
+                        p.time.into(),
+                        n.l1.into(),
+                        n.l2.into(),
+                        n.linf.into(),
+                        n.overshoot.into(),
+                        n.tv_ratio.into(),
+                    ]);
+                }
+            }
+        }
+    }
+    table
+}
+
+/// The scene's expectations on each set: `set` and the columns of `courant run`'s
+/// `expectations.csv`; expectations files cannot answer have the verdict `skip` and the reason.
+pub fn expectations_table(sets: &[ScoredSet]) -> Table {
+    let mut table = Table::new(&[
+        "set", "case", "metric", "at", "measured", "min", "max", "equals", "verdict", "source",
+    ]);
+    for set in sets {
+        for v in &set.verdicts {
+            let mut row: Vec<Cell> = vec![set.label.as_str().into()];
+            row.extend(verdict_cells(v));
+            table.push(row);
+        }
+        for s in &set.skipped {
+            table.push(vec![
+                set.label.as_str().into(),
+                s.case.as_str().into(),
+                s.metric.name().into(),
+                s.at.into(),
+                format!("not measured: {}", s.reason).into(),
+                Cell::Empty,
+                Cell::Empty,
+                Cell::Empty,
+                "skip".into(),
+                s.source.as_str().into(),
+            ]);
+        }
+    }
+    table
+}
+
+/// The diagnostics of every case: the step they count in and its source, the time shift
+/// (least-squares, in steps), the offset in whole steps and its verdict, the sign and the load
+/// convention with theirs; `notes` says why a diagnostic is not measured.
+pub fn diagnostics_table(sets: &[ScoredSet]) -> Table {
+    let mut table = Table::new(&[
+        "set",
+        "case",
+        "dt",
+        "dt_source",
+        "time_shift_steps",
+        "shift_residual",
+        "time_offset_steps",
+        "time_offset_verdict",
+        "sign_error",
+        "sign_error_flipped",
+        "sign",
+        "sign_verdict",
+        "load_fraction",
+        "load_convention",
+        "load_verdict",
+        "notes",
+    ]);
+    for set in sets {
+        for c in &set.cases {
+            let d = &c.diagnostics;
+            let [offset, sign, load] = d.verdicts();
+            let notes: Vec<String> = [
+                &d.shift.as_ref().err(),
+                &d.sign.as_ref().err(),
+                &d.load.as_ref().err(),
+            ]
+            .iter()
+            .zip(["time_offset", "sign", "load"])
+            .filter_map(|(e, name)| e.map(|why| format!("{name}: {why}")))
+            .collect();
+            let text = |v: &String| {
+                if v == "-" {
+                    Cell::Empty
+                } else {
+                    Cell::Text(v.clone())
+                }
+            };
+            table.push(vec![
+                set.label.as_str().into(),
+                c.case.as_str().into(),
+                c.dt.map(|d| d.0).into(),
+                c.dt.map(|d| d.1).into(),
+                d.shift.as_ref().ok().map(|s| s.steps).into(),
+                d.shift.as_ref().ok().map(|s| s.residual).into(),
+                d.shift
+                    .as_ref()
+                    .ok()
+                    .map(|s| Cell::Text(s.offset.to_string()))
+                    .unwrap_or(Cell::Empty),
+                verdict_cell(offset.1),
+                d.sign.as_ref().ok().map(|s| s.error).into(),
+                d.sign.as_ref().ok().map(|s| s.error_flipped).into(),
+                text(&sign.2),
+                verdict_cell(sign.1),
+                d.load.as_ref().ok().map(|l| l.fraction).into(),
+                text(&load.2),
+                verdict_cell(load.1),
+                notes.join("; ").into(),
+            ]);
+        }
+    }
+    table
+}
+
+/// `case` and the convergence table of each study (N, dt, steps, errors and observed orders).
+pub fn convergence_table(studies: &[CaseConvergence]) -> Table {
+    let mut table: Option<Table> = None;
+    for c in studies {
+        let t = c.result.table();
+        let out = table.get_or_insert_with(|| {
+            let mut columns = vec!["case".to_string()];
+            columns.extend(t.columns.iter().cloned());
+            Table {
+                columns,
+                rows: Vec::new(),
+            }
+        });
+        for row in t.rows {
+            out.rows.push(
+                std::iter::once(Cell::from(c.case.as_str()))
+                    .chain(row)
+                    .collect(),
+            );
+        }
+    }
+    table.unwrap_or_else(|| Table::new(&["case"]))
+}
+
+/// `case, study, norm, fitted_order, expected, verdict` of each study.
+pub fn orders_table(studies: &[CaseConvergence]) -> Table {
+    let mut table = Table::new(&[
+        "case",
+        "study",
+        "norm",
+        "fitted_order",
+        "expected",
+        "verdict",
+    ]);
+    for c in studies {
+        for row in c.result.verdict_table().rows {
+            let mut cells = vec![c.case.as_str().into(), c.result.study.name.into()];
+            cells.extend(row);
+            table.push(cells);
+        }
+    }
+    table
+}
+
+/// The files `courant score --out DIR` writes into `DIR/<scene>/`, at round-trip precision.
+pub fn score_files(outcome: &ScoreOutcome) -> Vec<(String, String)> {
+    let full = Precision::RoundTrip;
+    let profiles = outcome
+        .sets
+        .iter()
+        .flat_map(|s| &s.cases)
+        .any(|c| matches!(c.scored, Scored::Profiles { .. }));
+    let mut files = vec![(
+        "summary.csv".to_string(),
+        summary_table(&outcome.sets).to_csv(full),
+    )];
+    if profiles {
+        files.push(("norms.csv".into(), norms_table(&outcome.sets).to_csv(full)));
+    }
+    files.push((
+        "expectations.csv".into(),
+        expectations_table(&outcome.sets).to_csv(full),
+    ));
+    files.push((
+        "diagnostics.csv".into(),
+        diagnostics_table(&outcome.sets).to_csv(full),
+    ));
+    if !outcome.convergence.is_empty() {
+        files.push((
+            "convergence.csv".into(),
+            convergence_table(&outcome.convergence).to_csv(full),
+        ));
+        files.push((
+            "convergence.orders.csv".into(),
+            orders_table(&outcome.convergence).to_csv(full),
+        ));
+    }
+    files
+}
+
+/// A scored set beside courant's own run of the same cases (`courant`: the scene's compared
+/// outcome), one row per case: the worst norms of each (`*_courant`), the largest difference of
+/// the two stress profiles at their common times relative to `|sigma0|` (same elements only),
+/// and the diagnostics. Cases courant did not run have empty `*_courant` cells.
+pub fn beside_courant_table(set: &ScoredSet, courant: &SceneOutcome, scale: f64) -> Table {
+    let mut table = Table::new(&[
+        "case",
+        "scheme",
+        "mass",
+        "N",
+        "dt",
+        "l1",
+        "l1_courant",
+        "l2",
+        "l2_courant",
+        "linf",
+        "linf_courant",
+        "overshoot",
+        "overshoot_courant",
+        "max_difference",
+        "time_shift_steps",
+        "time_offset_steps",
+        "sign",
+        "load_convention",
+    ]);
+    for c in &set.cases {
+        let Scored::Profiles { profiles, .. } = &c.scored else {
+            continue;
+        };
+        let own = courant.results.iter().find(|r| r.case == c.case);
+        let (n, m) = (c.worst_norms(), own.and_then(|r| r.worst_norms()));
+        let difference = own.and_then(|r| {
+            let differences: Vec<f64> = profiles
+                .iter()
+                .filter_map(|p| {
+                    let q = r
+                        .profiles
+                        .iter()
+                        .find(|q| (q.time - p.time).abs() <= 1e-9 * p.time.abs().max(1.0))?;
+                    (q.stress.len() == p.stress.len()).then(|| {
+                        p.stress
+                            .iter()
+                            .zip(&q.stress)
+                            .map(|(a, b)| (a - b).abs() / scale)
+                            .fold(0.0, f64::max)
+                    })
+                })
+                .collect();
+            (!differences.is_empty()).then(|| differences.into_iter().fold(0.0, f64::max))
+        });
+        let [_, sign, load] = c.diagnostics.verdicts();
+        let shift = c.diagnostics.shift.as_ref().ok();
+        table.push(vec![
+            c.case.as_str().into(),
+            c.scheme.clone().into(),
+            c.mass.clone().into(),
+            c.elements.into(),
+            c.dt.map(|d| d.0).into(),
+            n.map(|n| n.l1).into(),
+            m.map(|n| n.l1).into(),
+            n.map(|n| n.l2).into(),
+            m.map(|n| n.l2).into(),
+            n.map(|n| n.linf).into(),
+            m.map(|n| n.linf).into(),
+            n.map(|n| n.overshoot).into(),
+            m.map(|n| n.overshoot).into(),
+            difference.into(),
+            shift.map(|s| s.steps).into(),
+            shift
+                .map(|s| Cell::Text(s.offset.to_string()))
+                .unwrap_or(Cell::Empty),
+            sign.2.into(),
+            load.2.into(),
+        ]);
+    }
+    table
+}
