@@ -31,6 +31,44 @@ enum Command {
         /// Output directory.
         #[arg(long, default_value = "results")]
         out: PathBuf,
+        /// Also write each scene's results in the exchange format (what `courant score` reads)
+        /// to DIR/<scene>/.
+        #[arg(long, value_name = "DIR")]
+        exchange: Option<PathBuf>,
+    },
+    /// Grade another code's results (the exchange format: DIR/<case>.csv, results.toml) against
+    /// a scene's references, with the norms and expectations of `run`, plus diagnostics
+    /// (time-level offset, sign, load convention) and, for several directories of one case at
+    /// different N, its convergence orders.
+    ///
+    /// Prints one row per check as `check` does. Exit status: 0 when every check holds, 1 when
+    /// one fails, 2 on bad input (file, line, column named; nothing is written then).
+    Score {
+        /// Scene name or path.
+        scene: String,
+        /// Result directories, one per set (e.g. one per mesh for a convergence study).
+        #[arg(long, value_name = "DIR", num_args = 1.., required = true)]
+        results: Vec<PathBuf>,
+        /// Write summary.csv, norms.csv, expectations.csv, diagnostics.csv (and convergence.csv)
+        /// to DIR/<scene>/.
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+        /// Write a JUnit XML report here.
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
+    },
+    /// Write a scene's exact answers in the exchange format to DIR/<scene>/: at its own mesh
+    /// and output times, or at the rows of a query file (t, x_left, x_right | t, x | t | mode).
+    /// Every file has a `reference` column naming the reference that produced it.
+    Reference {
+        /// Scene name or path.
+        scene: String,
+        /// Query file: the positions and times (or modes) to evaluate at.
+        #[arg(long, value_name = "POINTS.csv")]
+        at: Option<PathBuf>,
+        /// Output directory.
+        #[arg(long, value_name = "DIR")]
+        out: PathBuf,
     },
     /// Regenerate the verification report: every built-in scene and the convergence studies,
     /// run in parallel, written whole (staged, then renamed) to DIR: index.md, per-scene CSV
@@ -68,7 +106,20 @@ enum Command {
 fn main() -> ExitCode {
     match Cli::parse().command {
         Command::List => courant::cli::list(),
-        Command::Run { scenes, out } => courant::cli::run::run(&scenes, &out),
+        Command::Run {
+            scenes,
+            out,
+            exchange,
+        } => courant::cli::run::run(&scenes, &out, exchange.as_deref()),
+        Command::Score {
+            scene,
+            results,
+            out,
+            junit,
+        } => courant::cli::score::score(&scene, &results, out.as_deref(), junit.as_deref()),
+        Command::Reference { scene, at, out } => {
+            courant::cli::reference::reference(&scene, at.as_deref(), &out)
+        }
         Command::Report { out } => courant::cli::report(&out),
         Command::Check {
             scenes,

@@ -95,28 +95,35 @@ fn render_verdicts(out: &mut String, verdicts: &[Verdict]) {
         out.push_str("  (no expectations)\n");
         return;
     }
-    let rows: Vec<[String; 6]> = verdicts
-        .iter()
-        .map(|v| {
-            let at = v.at.map(|t| format!(" at {t}")).unwrap_or_default();
-            [
-                verdict_word(v.pass).to_string(),
-                v.case.clone(),
-                format!("{}{at}", v.metric.name()),
-                format_measured(&v.measured),
-                format_bound(&v.bound),
-                v.source.clone(),
-            ]
-        })
-        .collect();
+    let rows: Vec<[String; 6]> = verdicts.iter().map(verdict_row).collect();
+    render_rows(out, &rows);
+}
+
+/// One verdict as a row: verdict, case, metric (`at t` if it names a time), measured value,
+/// bound, source.
+pub fn verdict_row(v: &Verdict) -> [String; 6] {
+    let at = v.at.map(|t| format!(" at {t}")).unwrap_or_default();
+    [
+        verdict_word(v.pass).to_string(),
+        v.case.clone(),
+        format!("{}{at}", v.metric.name()),
+        format_measured(&v.measured),
+        format_bound(&v.bound),
+        v.source.clone(),
+    ]
+}
+
+/// Rows under the header `verdict, case, metric, measured, bound, source`, columns aligned
+/// (measured values on the right), no trailing spaces.
+pub fn render_rows(out: &mut String, rows: &[[String; 6]]) {
     let header = ["verdict", "case", "metric", "measured", "bound", "source"].map(String::from);
     let mut widths = [0; 6];
-    for row in std::iter::once(&header).chain(&rows) {
+    for row in std::iter::once(&header).chain(rows) {
         for (w, cell) in widths.iter_mut().zip(row) {
             *w = (*w).max(cell.chars().count());
         }
     }
-    for row in std::iter::once(&header).chain(&rows) {
+    for row in std::iter::once(&header).chain(rows) {
         let mut line = String::from(" ");
         for (i, (w, cell)) in widths.iter().zip(row).enumerate() {
             // Measured values line up on the right, the rest on the left; no trailing spaces.

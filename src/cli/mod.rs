@@ -5,7 +5,9 @@
 //! pipeline: it may use every stage, and no stage uses it.
 
 pub mod check;
+pub mod reference;
 pub mod run;
+pub mod score;
 
 use crate::io::atomic::write_dir_atomically;
 use crate::pipeline::report_runs::run_for_report;

@@ -3,14 +3,18 @@
 use crate::compare::case::CaseResult;
 use crate::compare::files::scene_files;
 use crate::compare::outcome::SceneOutcome;
+use crate::compare::score::export::exchange_set;
 use crate::io::atomic::write_dir_atomically;
 use crate::pipeline::evaluate_scene;
 use crate::results::case::Status;
+use crate::results::exchange::writer::set_files;
 use crate::scene::builtin::{BUILTIN_SCENES, resolve};
 use crate::scene::cases::Scene;
 use std::process::ExitCode;
 
-pub fn run(args: &[String], out: &std::path::Path) -> ExitCode {
+/// Run scenes and write their files to `out/<scene>/`; with `exchange`, also their results in the
+/// exchange format to `exchange/<scene>/` (what `courant score` reads).
+pub fn run(args: &[String], out: &std::path::Path, exchange: Option<&std::path::Path>) -> ExitCode {
     let names: Vec<String> = if args.is_empty() {
         BUILTIN_SCENES.iter().map(|(n, _)| n.to_string()).collect()
     } else {
@@ -47,7 +51,21 @@ pub fn run(args: &[String], out: &std::path::Path) -> ExitCode {
             eprintln!("error: cannot write {}: {e}", dir.display());
             return ExitCode::from(2);
         }
-        println!("  -> {}\n", dir.display());
+        println!("  -> {}", dir.display());
+        if let Some(root) = exchange {
+            let dir = root.join(&scene.name);
+            match exchange_set(scene, &outcome, &dir.display().to_string()) {
+                Some(set) => {
+                    if let Err(e) = write_dir_atomically(&dir, &set_files(&set)) {
+                        eprintln!("error: cannot write {}: {e}", dir.display());
+                        return ExitCode::from(2);
+                    }
+                    println!("  -> {} (exchange format)", dir.display());
+                }
+                None => println!("  (no exchange form: a dispersion or contact-stability study)"),
+            }
+        }
+        println!();
     }
     if failed {
         ExitCode::from(1)

@@ -1,0 +1,192 @@
+//! The terminal report of `courant score`: per result set a line per case (size, step, worst
+//! norms or measures), then one table of checks in `courant check`'s layout (the scene's
+//! expectations, those skipped with the reason, and the diagnostics of every case), then the
+//! convergence studies across sets and a summary line.
+
+use super::render::{render_rows, verdict_row};
+use crate::compare::score::outcome::{ScoreOutcome, Scored, ScoredCase, ScoredSet};
+use crate::scene::cases::Scene;
+use std::fmt::Write as _;
+
+/// Counts of the checks of a score.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct ScoreCounts {
+    /// Expectation verdicts.
+    pub expectations: usize,
+    /// Expectations skipped (not measurable from files, or no file).
+    pub skipped: usize,
+    /// Diagnostics with a verdict.
+    pub diagnostics: usize,
+    /// Fitted orders with a band.
+    pub orders: usize,
+    /// Failed checks of all kinds.
+    pub failed: usize,
+}
+
+/// Count the checks of `outcome`.
+pub fn counts(outcome: &ScoreOutcome) -> ScoreCounts {
+    let mut c = ScoreCounts::default();
+    for set in &outcome.sets {
+        c.expectations += set.verdicts.len();
+        c.failed += set.verdicts.iter().filter(|v| !v.pass).count();
+        c.skipped += set.skipped.len();
+        for case in &set.cases {
+            for (_, verdict, ..) in case.diagnostics.verdicts() {
+                if let Some(pass) = verdict {
+                    c.diagnostics += 1;
+                    c.failed += usize::from(!pass);
+                }
+            }
+        }
+    }
+    for study in &outcome.convergence {
+        for v in study.result.verdicts() {
+            if let Some(pass) = v.pass {
+                c.orders += 1;
+                c.failed += usize::from(!pass);
+            }
+        }
+    }
+    c
+}
+
+fn word(v: Option<bool>) -> &'static str {
+    match v {
+        Some(true) => "pass",
+        Some(false) => "FAIL",
+        None => "n/a",
+    }
+}
+
+/// One line of what a case file measured.
+fn case_line(c: &ScoredCase) -> String {
+    let dt =
+        c.dt.map(|(dt, from)| format!(", dt = {dt:.6e} ({from})"))
+            .unwrap_or_default();
+    match &c.scored {
+        Scored::Profiles { profiles, points } => {
+            let n = c.worst_norms();
+            let f = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.3e}"));
+            format!(
+                "{}: {} {}{dt}, {} profile(s); worst L1 {}, L2 {}, Linf {}, overshoot {}",
+                c.case,
+                c.elements.map_or("?".into(), |n| n.to_string()),
+                if *points { "points" } else { "elements" },
+                profiles.len(),
+                f(n.map(|n| n.l1)),
+                f(n.map(|n| n.l2)),
+                f(n.map(|n| n.linf)),
+                f(n.map(|n| n.overshoot)),
+            )
+        }
+        Scored::Force(force) => format!(
+            "{}: {} samples{dt}; plateau deviation {:.3e}, impulse error {:.3e}, duration error {:.3e}, force L1 error {:.3e}",
+            c.case,
+            force.time.len(),
+            force.metrics.plateau_deviation,
+            force.metrics.impulse_error,
+            force.metrics.duration_error,
+            force.metrics.force_l1_error
+        ),
+        Scored::Spectrum(s) => format!(
+            "{}: {} mode(s); closed-form deviation {:.3e}",
+            c.case,
+            s.rows.len(),
+            s.deviation
+        ),
+    }
+}
+
+/// The check rows of a set: expectation verdicts, skipped expectations, diagnostics.
+pub fn check_rows(set: &ScoredSet) -> Vec<[String; 6]> {
+    let mut rows: Vec<[String; 6]> = set.verdicts.iter().map(verdict_row).collect();
+    for s in &set.skipped {
+        let at = s.at.map(|t| format!(" at {t}")).unwrap_or_default();
+        rows.push([
+            "skip".into(),
+            s.case.clone(),
+            format!("{}{at}", s.metric.name()),
+            "-".into(),
+            "-".into(),
+            format!("{} [{}]", s.reason, s.source),
+        ]);
+    }
+    for c in &set.cases {
+        for (name, verdict, measured, note) in c.diagnostics.verdicts() {
+            let expected = match name {
+                "time_offset" => "== 0 steps",
+                "sign" => "tension positive",
+                _ => "H(0) = 1",
+            };
+            rows.push([
+                word(verdict).into(),
+                c.case.clone(),
+                name.into(),
+                measured,
+                expected.into(),
+                note,
+            ]);
+        }
+    }
+    rows
+}
+
+/// The terminal report.
+pub fn terminal(scene: &Scene, outcome: &ScoreOutcome) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "{}: {}", scene.name, scene.description);
+    let _ = writeln!(out, "  source: {}", scene.source);
+    for set in &outcome.sets {
+        let _ = writeln!(
+            out,
+            "\n  results {} ({} {}), {} case file(s):",
+            set.label,
+            set.code,
+            set.version,
+            set.cases.len()
+        );
+        for c in &set.cases {
+            let _ = writeln!(out, "    {}", case_line(c));
+        }
+        render_rows(&mut out, &check_rows(set));
+    }
+    for study in &outcome.convergence {
+        let levels: Vec<String> = study
+            .result
+            .levels
+            .iter()
+            .map(|l| l.elements.to_string())
+            .collect();
+        let _ = writeln!(
+            out,
+            "\n  convergence of {} (N = {}; band: {}):",
+            study.case,
+            levels.join(", "),
+            study.note.as_deref().unwrap_or(study.result.study.name)
+        );
+        for v in study.result.verdicts() {
+            let _ = writeln!(
+                out,
+                "    {:4}  {} fitted order {}, expected {}",
+                word(v.pass),
+                v.norm,
+                v.fitted.map_or("-".into(), |p| format!("{p:.3}")),
+                v.expected
+            );
+        }
+    }
+    let c = counts(outcome);
+    let _ = writeln!(
+        out,
+        "\nscore: {}, {} set(s): {} expectation(s) ({} skipped), {} diagnostic(s), {} fitted order(s), {} failed: {}",
+        scene.name,
+        outcome.sets.len(),
+        c.expectations,
+        c.skipped,
+        c.diagnostics,
+        c.orders,
+        c.failed,
+        if c.failed == 0 { "pass" } else { "FAIL" }
+    );
+    out
+}

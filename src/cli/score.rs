@@ -1,0 +1,65 @@
+//! `courant score`: read result directories (the exchange format), grade them against a scene,
+//! print the checks as `courant check` does, write the tables and JUnit XML when asked.
+
+use crate::check::score_junit::xml;
+use crate::check::score_render::terminal;
+use crate::compare::score::tables::score_files;
+use crate::io::atomic::{write_dir_atomically, write_file_atomically};
+use crate::io::clock::date;
+use crate::pipeline::score::score_dirs;
+use crate::scene::builtin::resolve;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Score `results` (one or more directories) against `scene`. Exit status 0 when every check
+/// holds, 1 when one fails, 2 on bad input (nothing is written then).
+pub fn score(
+    scene: &str,
+    results: &[PathBuf],
+    out: Option<&Path>,
+    junit: Option<&Path>,
+) -> ExitCode {
+    let started = date();
+    let clock = std::time::Instant::now();
+    let scene = match resolve(scene) {
+        Ok(scene) => scene,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    if let Some(file) = junit.filter(|f| f.is_dir()) {
+        eprintln!("error: --junit {}: is a directory", file.display());
+        return ExitCode::from(2);
+    }
+    // Everything is read, checked and compared before anything is written.
+    let outcome = match score_dirs(&scene, results) {
+        Ok(outcome) => outcome,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    print!("{}", terminal(&scene, &outcome));
+    if let Some(out) = out {
+        let dir = out.join(&scene.name);
+        if let Err(e) = write_dir_atomically(&dir, &score_files(&outcome)) {
+            eprintln!("error: cannot write {}: {e}", dir.display());
+            return ExitCode::from(2);
+        }
+        println!("  -> {}", dir.display());
+    }
+    if let Some(file) = junit {
+        let text = xml(&scene, &outcome, &started, clock.elapsed().as_secs_f64());
+        if let Err(e) = write_file_atomically(file, &text) {
+            eprintln!("error: cannot write {}: {e}", file.display());
+            return ExitCode::from(2);
+        }
+        println!("  -> {}", file.display());
+    }
+    if outcome.passed() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
