@@ -2,12 +2,15 @@
 //! work-precision studies, in parallel (the results do not depend on the thread count: every
 //! case is independent and results are collected in order).
 
+use super::score::score_committed;
 use super::studies::{run_convergence, run_work_precision};
 use super::{EvaluateError, evaluate_scene};
 use crate::compare::convergence::ConvergenceResult;
 use crate::compare::outcome::SceneOutcome;
+use crate::compare::score::outcome::ScoredSet;
 use crate::compare::work_precision::WorkPoint;
 use crate::io::parallel::in_order;
+use crate::results::exchange::committed::CommittedSet;
 use crate::scene::cases::Scene;
 use crate::scene::studies::convergence::ConvergenceStudy;
 use crate::scene::studies::work_precision::WORK_PRECISION_STUDIES;
@@ -23,6 +26,9 @@ pub struct ReportRuns {
     pub convergence: Vec<ConvergenceResult>,
     /// Each work-precision study's points, in the order of [`WORK_PRECISION_STUDIES`].
     pub work: Vec<Vec<WorkPoint>>,
+    /// The committed result sets of other codes whose scene is among the scenes, scored: the
+    /// set, the index of its scene, the scored set.
+    pub other_codes: Vec<(&'static CommittedSet, usize, ScoredSet)>,
     /// Wall time of everything, in seconds.
     pub wall_time: f64,
 }
@@ -72,10 +78,12 @@ pub fn run_for_report(
             .map(run_work_precision)
             .collect(),
     )?;
+    let other_codes = score_committed(scenes)?;
     Ok(ReportRuns {
         scenes: outcomes,
         convergence,
         work,
+        other_codes,
         wall_time: started.elapsed().as_secs_f64(),
     })
 }

@@ -13,7 +13,8 @@
 //!   renderings; [`plot`]: SVG line charts; [`figures`] and [`figure_parts`]: a scene's figures,
 //!   split so that each stays legible;
 //! - sections: [`summary`], [`scenes`], [`convergence`], [`work_precision`], [`stability`],
-//!   [`timing`] (with [`bench_table`]).
+//!   [`other_codes`] (another code's committed results beside courant's), [`timing`] (with
+//!   [`bench_table`]).
 //!
 //! Enters: compared outcomes (`compare`, run by `pipeline`). Leaves: the report's files, in
 //! memory (written whole by `io::atomic`). Must not know: how outcomes are run or compared, the
@@ -24,6 +25,7 @@ pub mod convergence;
 pub mod document;
 pub mod figure_parts;
 pub mod figures;
+pub mod other_codes;
 pub mod plot;
 pub mod scenes;
 pub mod stability;
@@ -64,6 +66,11 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
         .flat_map(|((o, _), s)| stability_rows(s, o))
         .collect();
     page.extend(stability::section(&rows)?);
+    page.extend(other_codes::section(
+        scenes,
+        &runs.scenes,
+        &runs.other_codes,
+    ));
     page.push(Block::Heading(2, "How this report was made".into()));
     page.push(Block::Paragraph(format!(
         "By `cargo run --release -- report` (courant {}): every built-in scene ({} of them) and {} \
@@ -84,6 +91,6 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
     files.extend(timing::timing_files(scenes, runs));
     Ok(Report {
         files,
-        passed: failed.is_empty(),
+        passed: failed.is_empty() && other_codes::passed(&runs.other_codes),
     })
 }

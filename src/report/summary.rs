@@ -77,6 +77,7 @@ pub fn head(
     contents.push("Convergence studies".into());
     contents.push("Work and precision".into());
     contents.push("Stability at the extremes".into());
+    contents.push("Other codes".into());
     page.push(Block::List(contents));
     page
 }

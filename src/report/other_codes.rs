@@ -1,0 +1,145 @@
+//! The section "Other codes": every result set of another code committed in this repository
+//! (`external/<code>/results/<scene>/`, compiled in), graded as `courant score` grades it, beside
+//! courant's own run of the same cases: a table of norms and diagnostics, the checks, and per
+//! case one figure overlaying the other code, courant and the exact solution.
+
+use super::document::{Block, Page};
+use super::plot::{Axes, Series, SeriesStyle, line_chart};
+use crate::compare::outcome::SceneOutcome;
+use crate::compare::score::outcome::{Scored, ScoredSet};
+use crate::compare::score::tables::beside_courant_table;
+use crate::results::exchange::committed::CommittedSet;
+use crate::scene::cases::Scene;
+
+/// One scored committed set: the set, the index of its scene, the scored set.
+pub type OtherCode<'a> = (&'a CommittedSet, usize, ScoredSet);
+
+/// True when every committed set passes its checks.
+pub fn passed(others: &[OtherCode]) -> bool {
+    others.iter().all(|(_, _, s)| s.passed())
+}
+
+/// The section.
+pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[OtherCode]) -> Page {
+    let mut page = Page::default();
+    page.push(Block::Heading(2, "Other codes".into()));
+    page.push(Block::Paragraph(
+        "Results of other codes on courant's scenes, written in the results exchange format (README) \
+         and committed under `external/<code>/results/<scene>/`, graded with exactly the norms and \
+         expectations of courant's own runs (`courant score <scene> --results DIR`), beside courant's \
+         run of the same case. `max_difference` is the largest difference of the two codes' element \
+         stresses at the same times over |sigma0|; `time_offset_steps` the whole steps that best match \
+         the exact solution (0: the results are written at the time they claim), `time_shift_steps` the \
+         least-squares shift it is rounded from; expectations on energies are skipped (the format \
+         carries none). SfePy's driver, its pinned requirements and the command that regenerates its \
+         results are in `external/sfepy/`."
+            .into(),
+    ));
+    for (set, index, scored) in others {
+        let (scene, (outcome, _)) = (&scenes[*index], &outcomes[*index]);
+        let stem = format!("{}_{}", set.code, scene.name);
+        page.push(Block::Heading(
+            3,
+            format!("{} {} on {}", scored.code, scored.version, scene.name),
+        ));
+        let mut lines: Vec<String> = scored.verdicts.iter().map(|v| v.describe()).collect();
+        let mut failed = scored.verdicts.iter().filter(|v| !v.pass).count();
+        for case in &scored.cases {
+            for (name, verdict, measured, note) in case.diagnostics.verdicts() {
+                let word = match verdict {
+                    Some(true) => "pass",
+                    Some(false) => "FAIL",
+                    None => "n/a ",
+                };
+                failed += usize::from(verdict == Some(false));
+                lines.push(format!(
+                    "{word}  {} {name} = {measured}  [{note}]",
+                    case.case
+                ));
+            }
+        }
+        page.push(Block::Paragraph(format!(
+            "`{}`: {} case file(s) of scene {}; {} check(s) (the scene's expectations and each case's \
+             diagnostics), {} failed; {} expectation(s) skipped (not measurable from files).",
+            set.dir,
+            scored.cases.len(),
+            scene.name,
+            lines.len(),
+            failed,
+            scored.skipped.len()
+        )));
+        let scale = scene
+            .cases
+            .first()
+            .and_then(|c| c.reference.as_ref())
+            .map_or(1.0, |r| r.stress_scale());
+        page.table(
+            beside_courant_table(scored, outcome, scale),
+            format!("other_codes/{stem}.csv"),
+        );
+        page.push(Block::List(lines));
+        for case in &scored.cases {
+            if let Some((svg, caption)) = overlay(scene, outcome, &scored.code, case) {
+                page.figure(
+                    format!("other_codes/{stem}_{}.svg", case.case),
+                    svg,
+                    caption,
+                );
+            }
+        }
+    }
+    page
+}
+
+/// The other code's stresses (points), courant's (line) and the exact solution (dashed) at the
+/// case's last profile time.
+fn overlay(
+    scene: &Scene,
+    outcome: &SceneOutcome,
+    code: &str,
+    case: &crate::compare::score::outcome::ScoredCase,
+) -> Option<(String, String)> {
+    let Scored::Profiles { profiles, .. } = &case.scored else {
+        return None;
+    };
+    let p = profiles.last()?;
+    let mut series = vec![Series::new(
+        format!("{code} {}", case.case),
+        p.x.iter().copied().zip(p.stress.iter().copied()).collect(),
+        SeriesStyle::Points,
+    )];
+    let own = outcome
+        .results
+        .iter()
+        .find(|r| r.case == case.case)
+        .and_then(|r| {
+            r.profiles
+                .iter()
+                .find(|q| (q.time - p.time).abs() <= 1e-9 * p.time.abs().max(1.0))
+        });
+    if let Some(q) = own {
+        series.push(Series::new(
+            format!("courant {}", case.case),
+            q.x.iter().copied().zip(q.stress.iter().copied()).collect(),
+            SeriesStyle::Line,
+        ));
+    }
+    series.push(Series::new(
+        "exact",
+        p.x.iter()
+            .copied()
+            .zip(p.reference.iter().copied())
+            .collect(),
+        SeriesStyle::Dashed,
+    ));
+    let title = format!(
+        "{}: {code} and courant, {}, t = {:.4}",
+        scene.name, case.case, p.time
+    );
+    let svg = line_chart(&Axes::new(title.clone(), "x", "stress"), &series).ok()?;
+    let caption = format!(
+        "{title}: {code}'s element stresses (points), courant's run of the same case{} (line) and the exact element averages (dashed)",
+        if own.is_some() { "" } else { " (not run)" }
+    );
+    Some((svg, caption))
+}
