@@ -48,7 +48,15 @@ impl ErrorNorms {
         sign: f64,
     ) -> Self {
         let lengths: Vec<f64> = (0..stress.len()).map(|e| mesh.element_length(e)).collect();
-        Self::weighted(&lengths, mesh.length(), stress, reference, extreme, scale, sign)
+        Self::weighted(
+            &lengths,
+            mesh.length(),
+            stress,
+            reference,
+            extreme,
+            scale,
+            sign,
+        )
     }
 
     /// The norms with weight `w_i` for value `i` and length `L` (the formulas of the module with

@@ -92,8 +92,12 @@ pub fn exact_set(
         let profiles = queried
             .into_iter()
             .map(|(time, positions)| {
+                // `+ 0.0` writes an exact zero as 0, not -0 (sigma0 < 0 times no front).
                 let stress = exact_values(&positions, extent, reference, time)
-                    .map_err(|why| ScoreError::Scene(format!("{}: {why}", case.name)))?;
+                    .map_err(|why| ScoreError::Scene(format!("{}: {why}", case.name)))?
+                    .into_iter()
+                    .map(|v| v + 0.0)
+                    .collect();
                 Ok(Profile {
                     time,
                     positions,
@@ -111,7 +115,10 @@ pub fn exact_set(
             case.name.clone(),
             CaseMeta {
                 dt: Some(case.integrator.dt),
-                elements: Some((case.model.bar().element_count(), 0)),
+                // The scene's mesh; a query's rows are its own.
+                elements: query
+                    .is_none()
+                    .then(|| (case.model.bar().element_count(), 0)),
                 ..CaseMeta::default()
             },
         );
@@ -125,7 +132,10 @@ pub fn exact_set(
                 .map(|n| n as f64 * dt)
                 .collect(),
         };
-        let force = time.iter().map(|&t| case.reference.force(t)).collect();
+        let force = time
+            .iter()
+            .map(|&t| case.reference.force(t) + 0.0)
+            .collect();
         let history = ForceHistory {
             time,
             force,

@@ -298,13 +298,15 @@ pub fn check_on_bar(
     let tol = TOUCH * (end - start);
     let bar = format!("[{start}, {end}]");
     for p in profiles {
-        let last = p.lines.len() - 1;
+        let last = p.positions.len() - 1;
+        // Sets built in memory (not read from files) have no lines: 0 then.
+        let line = |i: usize| p.lines.get(i).copied().unwrap_or(0);
         match &p.positions {
             Positions::Elements { left, right } => {
                 if (left[0] - start).abs() > tol {
                     return Err(ExchangeError::at(
                         &file.file,
-                        p.lines[0],
+                        line(0),
                         file.column("x_left"),
                         "x_left",
                         format!(
@@ -316,7 +318,7 @@ pub fn check_on_bar(
                 if (right[last] - end).abs() > tol {
                     return Err(ExchangeError::at(
                         &file.file,
-                        p.lines[last],
+                        line(last),
                         file.column("x_right"),
                         "x_right",
                         format!(
@@ -330,7 +332,7 @@ pub fn check_on_bar(
                 if let Some(i) = x.iter().position(|&x| x < start - tol || x > end + tol) {
                     return Err(ExchangeError::at(
                         &file.file,
-                        p.lines[i],
+                        line(i),
                         file.column("x"),
                         "x",
                         format!("x = {} lies outside the bar {bar}", x[i]),

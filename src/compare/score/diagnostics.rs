@@ -20,13 +20,18 @@
 //! (measured here on the Fig. 1 bar: `r` = 0.23 and 0.38 for lumped CD at Co = 0.5, 1.3 and 2.1
 //! at Co = 0.1, at t = 0.5 and 1.5, with `s` biased by up to 0.25 at Co = 0.1). Hence:
 //!
-//! - offset = `round(mean s)` over the profiles, a failure unless 0;
+//! - offset = `round(mean s)` over the profiles, a failure unless 0; claimed only when the fit
+//!   explains the error as a shift of a few steps, `|s| <= 2.5` ([`MAX_OFFSET`]) and `r <= 3`
+//!   ([`MAX_RESIDUAL`]); beyond, the file differs from the reference by more than a time level
+//!   (e.g. a soft contact penalty that delays the force: measured here on the Fig. 5 impact,
+//!   `s = -4`, `r = 2.9` at beta_s = 0.25) and no verdict is given;
 //! - load convention, from the profiles with `r <= 0.5` ([`RESOLVED`]): the fraction
 //!   `f = mean s - offset` is `H(0) = 1` when `|f| <= 1/8`, `H(0) = 1/2` (a failure) when
 //!   `|f + 1/4| <= 1/8`, otherwise unexplained (no verdict); not detectable without such a profile.
 //!
-//! A contact force history is shifted the same way through its impulse `I(t) = int_0^t F`
-//! (trapezoid rule over the samples against the exact staircase's integral).
+//! A contact force history is fitted the same way through its impulse `I(t) = int_0^t F`
+//! (trapezoid rule over the samples against the exact staircase's integral), but the number is
+//! reported without a verdict (`compare::score::force` says why).
 //!
 //! **Sign.** The L1 error of the file against the reference and that of the negated file
 //! (normalised as the norms are: by `L`, `|sigma0|` and the number of profiles; a force history
@@ -35,6 +40,12 @@
 
 /// Largest residual `r` (in steps) of a profile that may decide the load convention.
 pub const RESOLVED: f64 = 0.5;
+
+/// Largest `|s|` (steps) read as a time-level offset.
+pub const MAX_OFFSET: f64 = 2.5;
+
+/// Largest residual `r` (steps) with which a shift is read as a time-level offset.
+pub const MAX_RESIDUAL: f64 = 3.0;
 
 /// The time shift of a file, in steps of its `dt`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -47,6 +58,14 @@ pub struct TimeShift {
     pub residual: f64,
     /// Profiles the shift was fitted on.
     pub profiles: usize,
+}
+
+impl TimeShift {
+    /// True when the fit explains the error as an offset of a few steps ([`MAX_OFFSET`],
+    /// [`MAX_RESIDUAL`]).
+    pub fn decided(&self) -> bool {
+        self.steps.abs() <= MAX_OFFSET && self.residual <= MAX_RESIDUAL
+    }
 }
 
 /// The L1 errors of the file and of the negated file against the reference.
@@ -120,6 +139,15 @@ impl Diagnostics {
     /// `time_offset`, `sign`, `load_convention` as checks.
     pub fn verdicts(&self) -> [DiagnosticRow; 3] {
         let shift = match &self.shift {
+            Ok(s) if !s.decided() => (
+                "time_offset",
+                None,
+                "-".into(),
+                format!(
+                    "not a time-level offset: the best shift is {:+.3} steps with residual {:.2} (an offset is read within {MAX_OFFSET} steps and residual {MAX_RESIDUAL})",
+                    s.steps, s.residual
+                ),
+            ),
             Ok(s) => (
                 "time_offset",
                 Some(s.offset == 0),
@@ -215,7 +243,9 @@ pub fn combine(fits: &[(f64, f64)]) -> (Result<TimeShift, String>, Result<LoadCh
         profiles: fits.len(),
     };
     let resolved: Vec<(f64, f64)> = fits.iter().copied().filter(|f| f.1 <= RESOLVED).collect();
-    let load = if resolved.is_empty() {
+    let load = if !shift.decided() {
+        Err("not detectable: the error is not a time-level shift".into())
+    } else if resolved.is_empty() {
         Err(format!(
             "not detectable: no profile resolves a quarter step (residual {:.2} > {RESOLVED})",
             shift.residual

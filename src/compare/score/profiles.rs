@@ -129,8 +129,15 @@ pub fn score_profiles(
     let (mut error, mut error_flipped) = (0.0, 0.0);
     let mut fits = Vec::new();
     for p in profiles {
-        let grid = Grid::of(&p.positions, extent)
-            .map_err(|why| ExchangeError::at(&bound.file.file, p.lines[0], 1, "", why))?;
+        let grid = Grid::of(&p.positions, extent).map_err(|why| {
+            ExchangeError::at(
+                &bound.file.file,
+                p.lines.first().copied().unwrap_or(0),
+                1,
+                "",
+                why,
+            )
+        })?;
         let exact = grid.exact(reference, p.time);
         let extreme = reference.extreme(p.time);
         let norms = match &grid {

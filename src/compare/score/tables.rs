@@ -179,7 +179,7 @@ pub fn expectations_table(sets: &[ScoredSet]) -> Table {
 
 /// The diagnostics of every case: the step they count in and its source, the time shift
 /// (least-squares, in steps), the offset in whole steps and its verdict, the sign and the load
-/// convention with theirs; `notes` says why a diagnostic is not measured.
+/// convention with theirs; `notes` says why a diagnostic has no verdict.
 pub fn diagnostics_table(sets: &[ScoredSet]) -> Table {
     let mut table = Table::new(&[
         "set",
@@ -203,15 +203,11 @@ pub fn diagnostics_table(sets: &[ScoredSet]) -> Table {
         for c in &set.cases {
             let d = &c.diagnostics;
             let [offset, sign, load] = d.verdicts();
-            let notes: Vec<String> = [
-                &d.shift.as_ref().err(),
-                &d.sign.as_ref().err(),
-                &d.load.as_ref().err(),
-            ]
-            .iter()
-            .zip(["time_offset", "sign", "load"])
-            .filter_map(|(e, name)| e.map(|why| format!("{name}: {why}")))
-            .collect();
+            let notes: Vec<String> = [&offset, &sign, &load]
+                .iter()
+                .filter(|r| r.1.is_none())
+                .map(|r| format!("{}: {}", r.0, r.3))
+                .collect();
             let text = |v: &String| {
                 if v == "-" {
                     Cell::Empty

@@ -141,11 +141,14 @@ impl Header {
                 continue;
             }
             let Some(&known) = all.iter().find(|c| **c == name) else {
+                // The nearest known name within two edits, if any.
                 let hint = all
                     .iter()
                     .chain([&REFERENCE])
-                    .find(|c| edit_distance(c, name) <= 2)
-                    .map(|c| format!(" (did you mean `{c}`?)"))
+                    .map(|c| (edit_distance(c, name), c))
+                    .filter(|(d, _)| *d <= 2)
+                    .min_by_key(|(d, _)| *d)
+                    .map(|(_, c)| format!(" (did you mean `{c}`?)"))
                     .unwrap_or_default();
                 return Err(ExchangeError::at(
                     file,
