@@ -306,3 +306,35 @@ fn reference_writes_the_exact_answers_with_the_reference_that_made_them() {
     );
     assert!(!bad.exists(), "nothing written on bad input");
 }
+
+#[test]
+fn the_readme_example_scores_as_documented() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    let block = |file: &str| -> String {
+        let start = format!("cat > myresults/fig1/{file} <<'END'\n");
+        let at = readme
+            .find(&start)
+            .unwrap_or_else(|| panic!("README has no {file}"))
+            + start.len();
+        let end = readme[at..].find("\nEND\n").unwrap();
+        format!("{}\n", &readme[at..at + end])
+    };
+    let dir = scratch("cli-readme").join("myresults/fig1");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("co1.csv"), block("co1.csv")).unwrap();
+    std::fs::write(dir.join("results.toml"), block("results.toml")).unwrap();
+    let out = courant(&["score", "fig1", "--results", s(&dir)]);
+    assert!(out.status.success(), "{}", text(&out));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    for row in [
+        "pass    co1   linf",
+        "skip    co1   energy_balance",
+        "skip    co0.5 overshoot",
+        "pass    co1   time_offset              0 steps",
+        "pass    co1   sign",
+        "pass    co1   load_convention         H(0) = 1",
+    ] {
+        assert!(stdout.contains(row), "{row:?} in:\n{stdout}");
+    }
+}

@@ -29,8 +29,8 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
          expectations of courant's own runs (`courant score <scene> --results DIR`), beside courant's \
          run of the same case. `max_difference` is the largest difference of the two codes' element \
          stresses at the same times over |sigma0|; `time_offset_steps` the whole steps that best match \
-         the exact solution (0: the results are written at the time they claim), `time_shift_steps` the \
-         least-squares shift it is rounded from; expectations on energies are skipped (the format \
+         the exact solution (0: the results are written at the time they claim; the least-squares shift \
+         it is rounded from is in the checks below); expectations on energies are skipped (the format \
          carries none). SfePy's driver, its pinned requirements and the command that regenerates its \
          results are in `external/sfepy/`."
             .into(),

@@ -323,26 +323,24 @@ pub fn score_files(outcome: &ScoreOutcome) -> Vec<(String, String)> {
 }
 
 /// A scored set beside courant's own run of the same cases (`courant`: the scene's compared
-/// outcome), one row per case: the worst norms of each (`*_courant`), the largest difference of
-/// the two stress profiles at their common times relative to `|sigma0|` (same elements only),
-/// and the diagnostics. Cases courant did not run have empty `*_courant` cells.
+/// outcome), one row per case: the worst L1, max and overshoot of each (`*_courant`), the
+/// largest difference of the two stress profiles at their common times relative to `|sigma0|`
+/// (same elements only), and the diagnostics (time-level offset, sign, load convention; the
+/// least-squares shifts are in `diagnostics.csv`). Cases courant did not run have empty
+/// `*_courant` cells.
 pub fn beside_courant_table(set: &ScoredSet, courant: &SceneOutcome, scale: f64) -> Table {
     let mut table = Table::new(&[
         "case",
-        "scheme",
         "mass",
         "N",
         "dt",
         "l1",
         "l1_courant",
-        "l2",
-        "l2_courant",
         "linf",
         "linf_courant",
         "overshoot",
         "overshoot_courant",
         "max_difference",
-        "time_shift_steps",
         "time_offset_steps",
         "sign",
         "load_convention",
@@ -376,21 +374,18 @@ pub fn beside_courant_table(set: &ScoredSet, courant: &SceneOutcome, scale: f64)
         let shift = c.diagnostics.shift.as_ref().ok();
         table.push(vec![
             c.case.as_str().into(),
-            c.scheme.clone().into(),
             c.mass.clone().into(),
             c.elements.into(),
             c.dt.map(|d| d.0).into(),
             n.map(|n| n.l1).into(),
             m.map(|n| n.l1).into(),
-            n.map(|n| n.l2).into(),
-            m.map(|n| n.l2).into(),
             n.map(|n| n.linf).into(),
             m.map(|n| n.linf).into(),
             n.map(|n| n.overshoot).into(),
             m.map(|n| n.overshoot).into(),
             difference.into(),
-            shift.map(|s| s.steps).into(),
             shift
+                .filter(|s| s.decided())
                 .map(|s| Cell::Text(s.offset.to_string()))
                 .unwrap_or(Cell::Empty),
             sign.2.into(),
