@@ -5,14 +5,13 @@ use super::baseline::csv_diff::FileOutcome;
 use super::baseline::scene_diff::FileComparison;
 use super::gate::CheckReport;
 use super::junit::{Failure, TestCase, TestSuite, render};
-use super::render::{format_bound, format_measured};
 use crate::compare::verdict::Verdict;
 use std::fmt::Write as _;
 
 /// The test-case name of a verdict: `<case> <metric>`, plus ` at <t>` when it names a time.
 pub fn testcase_name(v: &Verdict) -> String {
     let at = v.at.map(|t| format!(" at {t}")).unwrap_or_default();
-    format!("{} {}{at}", v.case, v.metric.name())
+    format!("{} {}{at}", v.case, v.metric_label())
 }
 
 /// The JUnit test suites: one per scene (properties: description, source, baseline
@@ -42,9 +41,7 @@ pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
                     let name = testcase_name(v);
                     let what = format!(
                         "measured {}, bound {}; source: {}",
-                        format_measured(&v.measured),
-                        format_bound(&v.bound),
-                        v.source
+                        v.measured, v.bound, v.source
                     );
                     TestCase {
                         classname: scene.name.clone(),

@@ -103,14 +103,17 @@ pub fn dispersion_table(results: &[DispersionResult]) -> Table {
     table
 }
 
-/// The force history: `t, force, reference, penalty_force, gap, active, impulse, kinetic,
-/// strain, penalty_spring, penalty_kinetic, total`.
+/// The force history: `t, force, reference, transferred_force, gap, active, impulse, kinetic,
+/// strain, penalty_spring, penalty_kinetic, total`. `force` is the graded force
+/// ([`ForceMeasure`](super::contact::ForceMeasure): the seed's `eps_s x penetration` for the
+/// penalty schemes, momentum/dt for the Lagrange multiplier), `transferred_force` the momentum
+/// delivered to the real masses at the level over the span of its velocity update.
 pub fn force_table(r: &ContactResult) -> Table {
     let mut table = Table::new(&[
         "t",
         "force",
         "reference",
-        "penalty_force",
+        "transferred_force",
         "gap",
         "active",
         "impulse",
@@ -123,9 +126,9 @@ pub fn force_table(r: &ContactResult) -> Table {
     for (s, reference) in r.run.history.iter().zip(&r.reference) {
         table.push(vec![
             s.time.into(),
-            s.force.into(),
+            r.measure.force(s).into(),
             (*reference).into(),
-            s.penalty_force.into(),
+            s.force.into(),
             s.gap.into(),
             Cell::Int(s.active as u64),
             s.impulse.into(),
@@ -151,6 +154,7 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
         "binding_limit",
         "dt",
         "steps",
+        "force_measure",
         "plateau",
         "plateau_deviation",
         "impulse_error",
@@ -159,6 +163,7 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
         "energy_ratio",
         "energy_ratio_conserved",
         "max_force",
+        "max_transferred_force",
         "status",
         "wall_time_s",
     ]);
@@ -177,13 +182,15 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
             format!("{:?}", r.run.critical.binding).into(),
             r.run.dt.into(),
             r.run.steps.into(),
+            r.measure.label().into(),
             r.plateau.into(),
-            r.plateau_deviation.into(),
+            r.errors.plateau_deviation.into(),
             r.impulse_error.into(),
-            r.duration_error.into(),
-            r.force_l1_error.into(),
+            r.errors.duration_error.into(),
+            r.errors.force_l1_error.into(),
             r.energy_ratio.into(),
             r.energy_ratio_conserved.into(),
+            r.errors.max_force.into(),
             r.run.max_force.into(),
             status.into(),
             r.wall_time.as_secs_f64().into(),

@@ -154,7 +154,7 @@ fn force_figures(
     let (shown, unstable): (Vec<_>, Vec<_>) = outcome
         .contact
         .iter()
-        .partition(|c| c.diverged.is_none() && c.energy_ratio_conserved <= ENERGY_BAND);
+        .partition(|c| c.energy_ratio_conserved.is_some_and(|e| e <= ENERGY_BAND));
     let keyed = shown
         .into_iter()
         .map(|c| (c.run.scheme.label().to_string(), c))
@@ -182,7 +182,11 @@ fn force_figures(
             .map(|c| {
                 Series::new(
                     c.case.clone(),
-                    c.run.history.iter().map(|s| (s.time, s.force)).collect(),
+                    c.run
+                        .history
+                        .iter()
+                        .map(|s| (s.time, c.measure.force(s)))
+                        .collect(),
                     SeriesStyle::Line,
                 )
             })
@@ -214,7 +218,28 @@ fn force_figures(
             Vec::new()
         };
         let part_title = numbered(&title, j, parts.len());
-        let axes = Axes::new(part_title.clone(), "t", "force");
+        // Peaks over several decades (the seed's CD force grows with beta_s): a log force axis,
+        // on which the open contact (force 0) is not drawn.
+        let peaks = part.iter().map(|c| c.errors.max_force).filter(|f| *f > 0.0);
+        let (lo, hi) = peaks.fold((f64::INFINITY, 0.0_f64), |(lo, hi), f| {
+            (lo.min(f), hi.max(f))
+        });
+        let log = hi > 100.0 * lo;
+        if log {
+            notes.push("log force axis: the peaks span several decades; an open contact (force 0) is not drawn".into());
+        }
+        let measures: Vec<&str> = part.iter().map(|c| c.measure.label()).collect();
+        let measure = if measures.iter().all(|m| *m == measures[0]) && !measures.is_empty() {
+            measures[0]
+        } else {
+            "eps_s x penetration or momentum/dt, see the summary"
+        };
+        let axes = Axes::new(
+            part_title.clone(),
+            "t",
+            &format!("contact force ({measure})"),
+        )
+        .log_y(log);
         if let Some(svg) = chart_naming_omissions(&axes, cases, exact, &mut notes) {
             let file = part_file("force", j, parts.len());
             let caption = caption(

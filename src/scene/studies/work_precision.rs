@@ -92,7 +92,12 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
                 "target = { length = 2.0, elements = 200 }",
                 "target = { length = 2.0, elements = {2n} }",
             ),
-            ("beta_s = [0.25, 25.0, 2500.0, 2.5e7]", "beta_s = 2500.0"),
+            // Graded by the force the bars receive (the seed's eps_s x penetration of CD with
+            // bipenalty rattles at beta_s = 2500; fig5 shows it).
+            (
+                "beta_s = [0.25, 25.0, 2500.0, 2.5e7]",
+                "beta_s = 2500.0\nforce = \"transferred\"",
+            ),
             // Every variant runs below its critical step: refuse it otherwise.
             ("allow_unstable = true", "allow_unstable = false"),
         ],
