@@ -237,7 +237,7 @@ fn force_figures(
         let axes = Axes::new(
             part_title.clone(),
             "t",
-            &format!("contact force ({measure})"),
+            format!("contact force ({measure})"),
         )
         .log_y(log);
         if let Some(svg) = chart_naming_omissions(&axes, cases, exact, &mut notes) {
