@@ -26,6 +26,10 @@ pub struct ForceErrors {
     pub force_l1_error: f64,
     /// Largest force over the run.
     pub max_force: f64,
+    /// Fraction of the samples inside the first plateau (10 % to 90 % of it) at which the force
+    /// is zero: a contact that opens and closes within steps (chatter) reads a plateau deviation
+    /// near 1 without a plateau at all.
+    pub open_in_plateau: f64,
 }
 
 impl ForceErrors {
@@ -47,11 +51,19 @@ impl ForceErrors {
             first.0 + 0.1 * (first.1 - first.0),
             first.0 + 0.9 * (first.1 - first.0),
         );
-        let plateau_deviation = history
+        let inside: Vec<&ContactSample> = history
             .iter()
             .filter(|s| s.time >= lo && s.time <= hi)
+            .collect();
+        let plateau_deviation = inside
+            .iter()
             .map(|s| (force(s) - plateau).abs() / plateau)
             .fold(0.0, f64::max);
+        let open_in_plateau = if inside.is_empty() {
+            0.0
+        } else {
+            inside.iter().filter(|s| force(s) == 0.0).count() as f64 / inside.len() as f64
+        };
         // Half the smallest plateau of the reference: the staircase of unequal impedances steps
         // down.
         let threshold = 0.5
@@ -83,6 +95,7 @@ impl ForceErrors {
             duration_error,
             force_l1_error,
             max_force: history.iter().map(force).fold(0.0, f64::max),
+            open_in_plateau,
         }
     }
 }

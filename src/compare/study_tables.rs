@@ -165,6 +165,7 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
         "max_force",
         "max_transferred_force",
         "status",
+        "note",
         "wall_time_s",
     ]);
     for r in results {
@@ -193,10 +194,35 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
             r.errors.max_force.into(),
             r.run.max_force.into(),
             status.into(),
+            contact_note(r).into(),
             r.wall_time.as_secs_f64().into(),
         ]);
     }
     table
+}
+
+/// What a contact row's numbers need said: chatter (a plateau deviation near 1 without a
+/// plateau), or a diverged run's missing conserved energy.
+fn contact_note(r: &ContactResult) -> String {
+    let mut notes = Vec::new();
+    if r.errors.open_in_plateau == 1.0 {
+        notes.push(
+            "contact open at every plateau sample: the bars separated before the plateau (plateau deviation 1)"
+                .to_string(),
+        );
+    } else if r.errors.open_in_plateau > 0.0 {
+        notes.push(format!(
+            "contact open at {:.0} % of the plateau samples (chatter: the plateau deviation is that of a force switching between 0 and its peak)",
+            100.0 * r.errors.open_in_plateau
+        ));
+    }
+    if r.diverged.is_some() {
+        notes.push(
+            "diverged: no conserved energy above the critical step; energy_ratio is where the guard stopped it"
+                .to_string(),
+        );
+    }
+    notes.join("; ")
 }
 
 /// `beta_s, r, cr, cr_closed_form` (`r` empty on the penalty-only curve).

@@ -84,7 +84,11 @@ fn profile_figures(
             diverged.iter().map(|r| (key(r), *r)).collect(),
             MAX_CASES,
         ));
-        let title = format!("{}: stress at t = {:.4}", scene.name, profile.time);
+        let title = format!(
+            "{}: stress at {}",
+            scene.name,
+            time_label(scene, longest, profile.time)
+        );
         for (j, part) in parts.iter().enumerate() {
             let cases: Vec<Series> = part
                 .iter()
@@ -117,8 +121,8 @@ fn profile_figures(
             }
             if j == 0 && !missing.is_empty() {
                 notes.push(format!(
-                    "not shown, diverged before t = {:.4}: {}",
-                    profile.time,
+                    "not shown, diverged before {}: {}",
+                    time_label(scene, longest, profile.time),
                     names(missing.iter().map(|r| r.case.as_str()))
                 ));
             }
@@ -341,4 +345,14 @@ pub fn stability_charts(sweep: &SweepResult) -> Vec<(Vec<String>, Vec<Series>)> 
             (part.into_iter().map(|(name, _)| name).collect(), series)
         })
         .collect()
+}
+
+/// A profile time as the scene states it: `t = 0.5 T` (transit times) or `t = 0.005`.
+fn time_label(scene: &Scene, result: &CaseResult, t: f64) -> String {
+    match scene.cases.iter().find(|c| c.name == result.case) {
+        Some(case) if case.times_in_transits => {
+            format!("t = {:.4} T", t / case.transit_time)
+        }
+        _ => format!("t = {t:.4}"),
+    }
 }

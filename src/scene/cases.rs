@@ -57,4 +57,7 @@ pub struct Case {
     pub reference: Option<Reference>,
     /// Transit time of the bar, `T = sum_e h_e/c_e`.
     pub transit_time: f64,
+    /// The scene states its times in transit times (`[output] time_unit = "transit"`): reports
+    /// show them as `t/T`.
+    pub times_in_transits: bool,
 }

@@ -9,7 +9,7 @@ use super::geometry::Geometry;
 use super::mass::mass_name;
 use super::outputs::Outputs;
 use super::reference::Reference;
-use super::schema::{RawCourantUnit, RawScene};
+use super::schema::{RawCourantUnit, RawScene, RawTimeUnit};
 use super::stepping::{Stepping, keep_step_plan};
 use courant_solver::{CentralDifference, CriticalStep, OutputRequest};
 
@@ -153,6 +153,7 @@ pub(super) fn build(
                     limit,
                     reference: reference.clone(),
                     transit_time: transit,
+                    times_in_transits: raw.output.time_unit == RawTimeUnit::Transit,
                 });
             }
         }
