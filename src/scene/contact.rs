@@ -36,6 +36,8 @@ pub struct ContactCase {
     pub reference: ImpactForce,
     /// The force graded and plotted.
     pub force: ForceMeasure,
+    /// Transit time of the striker, `L1/c1`: the time unit of the contact figures.
+    pub striker_transit: f64,
 }
 
 /// The force a contact case is graded and plotted by.
@@ -380,6 +382,7 @@ pub(super) fn cases(
                     penalty,
                     reference: reference.clone(),
                     force: ForceMeasure::for_scheme(force, &scheme),
+                    striker_transit: striker_impact.transit_time(),
                 });
             }
         }
