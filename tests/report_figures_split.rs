@@ -26,8 +26,6 @@ use courant_references::contact::{
 #[path = "common/xml.rs"]
 mod xml;
 
-/// Sizes of the figures `split` makes of groups of the given sizes (keys in order).
-
 /// A legend text names `case`: the case name, or the name with the Courant number it ran at when
 /// that differs from the one in the name (`co1.12 (Co = 1.1111)`: the step shrunk to hit the
 /// output time).
@@ -35,6 +33,7 @@ fn names(text: &str, case: &str) -> bool {
     text == case || text.starts_with(&format!("{case} (Co = "))
 }
 
+/// Sizes of the figures `split` makes of groups of the given sizes (keys in order).
 fn figure_sizes(groups: &[usize], max: usize) -> Vec<Vec<(usize, usize)>> {
     let items: Vec<(String, (usize, usize))> = groups
         .iter()
