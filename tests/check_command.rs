@@ -152,7 +152,7 @@ fn check_fig1_passes_on_the_committed_expectations() {
     assert_eq!(cases.len(), verdicts.len());
     assert_eq!(root.children[0].value("name"), "fig1");
     for v in &verdicts {
-        let name = format!("{} {}", v.case, v.metric.name());
+        let name = courant::check::junit_report::testcase_name(v);
         assert!(
             cases.iter().any(|c| c.value("name") == name),
             "no testcase {name}"

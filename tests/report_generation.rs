@@ -72,7 +72,7 @@ fn report_has_sections_tables_and_deterministic_content() {
             && index.contains("## fig6")
             && index.contains("## Convergence studies")
     );
-    assert!(index.contains("pass  co1 linf"), "verdicts listed");
+    assert!(index.contains("pass     co1 linf"), "verdicts listed");
     assert!(!index.contains("wall_time"), "timings stay out of index.md");
     let cpu = &a
         .files

@@ -5,14 +5,34 @@ use super::baseline::csv_diff::FileOutcome;
 use super::baseline::scene_diff::FileComparison;
 use super::gate::CheckReport;
 use super::junit::{Failure, TestCase, TestSuite, render};
-use super::render::{format_bound, format_measured};
 use crate::compare::verdict::Verdict;
 use std::fmt::Write as _;
 
 /// The test-case name of a verdict: `<case> <metric>`, plus ` at <t>` when it names a time.
 pub fn testcase_name(v: &Verdict) -> String {
     let at = v.at.map(|t| format!(" at {t}")).unwrap_or_default();
-    format!("{} {}{at}", v.case, v.metric.name())
+    format!("{} {}{at}", v.case, v.metric_label())
+}
+
+/// The test case of a verdict (`classname`, name [`testcase_name`]): measured value, bound and
+/// source as its output, a `<failure>` when it fails.
+pub fn verdict_case(classname: &str, v: &Verdict) -> TestCase {
+    let name = testcase_name(v);
+    let what = format!(
+        "measured {}, bound {}; source: {}",
+        v.measured, v.bound, v.source
+    );
+    TestCase {
+        classname: classname.to_string(),
+        failure: (!v.pass).then(|| Failure {
+            message: format!("{name}: {what}"),
+            kind: "expectation".into(),
+            details: v.describe(),
+        }),
+        name,
+        output: Some(what),
+        skipped: None,
+    }
 }
 
 /// The JUnit test suites: one per scene (properties: description, source, baseline
@@ -38,26 +58,7 @@ pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
             let mut cases: Vec<TestCase> = scene
                 .verdicts
                 .iter()
-                .map(|v| {
-                    let name = testcase_name(v);
-                    let what = format!(
-                        "measured {}, bound {}; source: {}",
-                        format_measured(&v.measured),
-                        format_bound(&v.bound),
-                        v.source
-                    );
-                    TestCase {
-                        classname: scene.name.clone(),
-                        failure: (!v.pass).then(|| Failure {
-                            message: format!("{name}: {what}"),
-                            kind: "expectation".into(),
-                            details: v.describe(),
-                        }),
-                        name,
-                        output: Some(what),
-                        skipped: None,
-                    }
-                })
+                .map(|v| verdict_case(&scene.name, v))
                 .collect();
             for file in scene.baseline.iter().flatten() {
                 cases.push(TestCase {

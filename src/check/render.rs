@@ -5,43 +5,8 @@
 use super::baseline::csv_diff::FileOutcome;
 use super::baseline::scene_diff::FileComparison;
 use super::gate::CheckReport;
-use crate::compare::verdict::{Measured, Verdict};
-use crate::results::table::Precision;
-use crate::scene::expectation::Bound;
+use crate::compare::verdict::Verdict;
 use std::fmt::Write as _;
-
-/// The measured value of a verdict, for reports.
-pub fn format_measured(measured: &Measured) -> String {
-    match measured {
-        Measured::Value(x) => format!("{x:.4e}"),
-        Measured::Flag(b) => b.to_string(),
-        Measured::Missing(why) => format!("missing ({why})"),
-    }
-}
-
-/// The bound of a verdict, for reports: `<= max`, `>= min`, `in [min, max]`, `== flag`.
-pub fn format_bound(bound: &Bound) -> String {
-    let num = |x: f64| Precision::RoundTrip.format(x);
-    match *bound {
-        Bound::Range {
-            min: Some(lo),
-            max: Some(hi),
-        } => format!("in [{}, {}]", num(lo), num(hi)),
-        Bound::Range {
-            min: Some(lo),
-            max: None,
-        } => format!(">= {}", num(lo)),
-        Bound::Range {
-            min: None,
-            max: Some(hi),
-        } => format!("<= {}", num(hi)),
-        Bound::Range {
-            min: None,
-            max: None,
-        } => "unbounded".into(),
-        Bound::Equals(b) => format!("== {b}"),
-    }
-}
 
 fn verdict_word(pass: bool) -> &'static str {
     if pass { "pass" } else { "FAIL" }
@@ -104,11 +69,11 @@ fn render_verdicts(out: &mut String, verdicts: &[Verdict]) {
 pub fn verdict_row(v: &Verdict) -> [String; 6] {
     let at = v.at.map(|t| format!(" at {t}")).unwrap_or_default();
     [
-        verdict_word(v.pass).to_string(),
+        v.word().to_string(),
         v.case.clone(),
-        format!("{}{at}", v.metric.name()),
-        format_measured(&v.measured),
-        format_bound(&v.bound),
+        format!("{}{at}", v.metric_label()),
+        v.measured.to_string(),
+        v.bound.to_string(),
         v.source.clone(),
     ]
 }

@@ -4,8 +4,7 @@
 //! one test case per fitted order.
 
 use super::junit::{Failure, TestCase, TestSuite, render};
-use super::junit_report::testcase_name;
-use super::render::{format_bound, format_measured};
+use super::junit_report::verdict_case;
 use crate::compare::score::outcome::ScoreOutcome;
 use crate::scene::cases::Scene;
 
@@ -24,26 +23,12 @@ pub fn xml(scene: &Scene, outcome: &ScoreOutcome, started: &str, time: f64) -> S
         let mut cases: Vec<TestCase> = set
             .verdicts
             .iter()
-            .map(|v| {
-                let name = testcase_name(v);
-                let what = format!(
-                    "measured {}, bound {}; source: {}",
-                    format_measured(&v.measured),
-                    format_bound(&v.bound),
-                    v.source
-                );
-                let failure = (!v.pass).then(|| Failure {
-                    message: format!("{name}: {what}"),
-                    kind: "expectation".into(),
-                    details: v.describe(),
-                });
-                case(name, failure, what, None)
-            })
+            .map(|v| verdict_case(&classname, v))
             .collect();
         for s in &set.skipped {
             let at = s.at.map(|t| format!(" at {t}")).unwrap_or_default();
             cases.push(case(
-                format!("{} {}{at}", s.case, s.metric.name()),
+                format!("{} {}{at}", s.case, s.label),
                 None,
                 s.source.clone(),
                 Some(s.reason.clone()),

@@ -83,10 +83,10 @@ fn case_line(c: &ScoredCase) -> String {
             "{}: {} samples{dt}; plateau deviation {:.3e}, impulse error {:.3e}, duration error {:.3e}, force L1 error {:.3e}",
             c.case,
             force.time.len(),
-            force.metrics.plateau_deviation,
-            force.metrics.impulse_error,
-            force.metrics.duration_error,
-            force.metrics.force_l1_error
+            force.errors.plateau_deviation,
+            force.impulse_error,
+            force.errors.duration_error.unwrap_or(f64::NAN),
+            force.errors.force_l1_error
         ),
         Scored::Spectrum(s) => format!(
             "{}: {} mode(s); closed-form deviation {:.3e}",
@@ -106,7 +106,7 @@ pub fn check_rows(set: &ScoredSet) -> Vec<[String; 6]> {
         rows.push([
             "skip".into(),
             s.case.clone(),
-            format!("{}{at}", s.metric.name()),
+            format!("{}{at}", s.label),
             "-".into(),
             "-".into(),
             format!("{} [{}]", s.reason, s.source),

@@ -126,10 +126,10 @@ pub fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
                 c.case,
                 c.run.courant,
                 c.run.critical.critical_courant(),
-                c.plateau_deviation,
+                c.errors.plateau_deviation,
                 c.impulse_error,
-                c.duration_error,
-                c.force_l1_error,
+                c.errors.duration_error.unwrap_or(f64::NAN),
+                c.errors.force_l1_error,
                 c.energy_ratio
             );
         }

@@ -9,8 +9,8 @@
 //!                                             ^^^^^^
 //! ```
 //!
-//! - [`document`]: the document model ([`document::Block`], [`document::Page`]) and its two
-//!   renderings; [`plot`]: SVG line charts; [`figures`] and [`figure_parts`]: a scene's figures,
+//! - [`document`]: the document model ([`document::Block`], [`document::Page`]), rendered by
+//!   [`markdown`] and [`html`] with numbers as [`numbers`] shows them; [`plot`]: SVG line charts; [`figures`] and [`figure_parts`]: a scene's figures,
 //!   split so that each stays legible;
 //! - sections: [`summary`], [`scenes`], [`convergence`], [`work_precision`], [`stability`],
 //!   [`other_codes`] (another code's committed results beside courant's), [`timing`] (with
@@ -25,6 +25,9 @@ pub mod convergence;
 pub mod document;
 pub mod figure_parts;
 pub mod figures;
+pub mod html;
+pub mod markdown;
+pub mod numbers;
 pub mod other_codes;
 pub mod plot;
 pub mod scenes;
@@ -83,10 +86,10 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
         runs.convergence.len()
     )));
     let Page { blocks, mut files } = page;
-    files.push(("index.md".into(), document::markdown(&blocks)));
+    files.push(("index.md".into(), markdown::markdown(&blocks)));
     files.push((
         "index.html".into(),
-        document::html("courant verification report", &blocks),
+        html::html("courant verification report", &blocks),
     ));
     files.extend(timing::timing_files(scenes, runs));
     Ok(Report {

@@ -95,7 +95,8 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
 }
 
 /// The other code's stresses (points), courant's (line) and the exact solution (dashed) at the
-/// case's last profile time.
+/// case's last profile time, drawn as `x / L` against `stress / |sigma0|` like the scenes'
+/// profiles.
 fn overlay(
     scene: &Scene,
     outcome: &SceneOutcome,
@@ -106,9 +107,21 @@ fn overlay(
         return None;
     };
     let p = profiles.last()?;
+    let scene_case = scene.cases.iter().find(|c| c.name == case.case)?;
+    let length = scene_case.model.bar().mesh().length();
+    let scale = scene_case
+        .reference
+        .as_ref()
+        .map_or(1.0, |r| r.stress_scale());
+    let scaled = |x: &[f64], v: &[f64]| -> Vec<(f64, f64)> {
+        x.iter()
+            .zip(v)
+            .map(|(x, v)| (x / length, v / scale))
+            .collect()
+    };
     let mut series = vec![Series::new(
         format!("{code} {}", case.case),
-        p.x.iter().copied().zip(p.stress.iter().copied()).collect(),
+        scaled(&p.x, &p.stress),
         SeriesStyle::Points,
     )];
     let own = outcome
@@ -123,23 +136,23 @@ fn overlay(
     if let Some(q) = own {
         series.push(Series::new(
             format!("courant {}", case.case),
-            q.x.iter().copied().zip(q.stress.iter().copied()).collect(),
+            scaled(&q.x, &q.stress),
             SeriesStyle::Line,
         ));
     }
     series.push(Series::new(
         "exact",
-        p.x.iter()
-            .copied()
-            .zip(p.reference.iter().copied())
-            .collect(),
+        scaled(&p.x, &p.reference),
         SeriesStyle::Dashed,
     ));
-    let title = format!(
-        "{}: {code} and courant, {}, t = {:.4}",
-        scene.name, case.case, p.time
-    );
-    let svg = line_chart(&Axes::new(title.clone(), "x", "stress"), &series).ok()?;
+    let time = if scene_case.times_in_transits {
+        format!("t = {:.4} T", p.time / scene_case.transit_time)
+    } else {
+        format!("t = {:.4}", p.time)
+    };
+    let title = format!("{}: {code} and courant, {}, {time}", scene.name, case.case);
+    let axes = Axes::new(title.clone(), "x / L", "stress / |sigma0|");
+    let svg = line_chart(&axes, &series).ok()?;
     let caption = format!(
         "{title}: {code}'s element stresses (points), courant's run of the same case{} (line) and the exact element averages (dashed)",
         if own.is_some() { "" } else { " (not run)" }

@@ -59,6 +59,7 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         "contact_extremes",
         include_str!("../../scenes/contact_extremes.toml"),
     ),
+    ("pc_ratio", include_str!("../../scenes/pc_ratio.toml")),
 ];
 
 /// The text of a built-in scene.

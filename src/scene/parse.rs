@@ -2,10 +2,12 @@
 
 use super::cases::Scene;
 use super::error::{SceneError, Source};
-use super::expectation::{Study, expectation};
+use super::expectation::{ExpectContext, Finding, Study, expectation, finding};
 use super::geometry::Geometry;
-use super::schema::{RawContactScene, RawHeader, RawScene};
+use super::schema::{RawContactScene, RawFinding, RawHeader, RawScene};
 use super::{contact, dispersion, spectrum, time_stepping};
+use courant_solver::MassKind;
+use toml::Spanned;
 
 impl Scene {
     /// Parse and validate a scene. `file` is the path or name shown in errors; `name` becomes the
@@ -79,10 +81,19 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
         if let Some(dup) = names.iter().find(|n| !seen.insert(*n)) {
             return Err(src.error(None, kind, format!("case {dup} appears twice")));
         }
+        let masses: Vec<MassKind> = spectra.first().map_or(Vec::new(), |c| c.masses.clone());
+        let ctx = ExpectContext {
+            names: &names,
+            has_reference: false,
+            study,
+            profile_times: &[],
+            unit: 1.0,
+            masses: &masses,
+        };
         let expectations = raw
             .expectations
             .iter()
-            .map(|e| expectation(src, e, &names, false, study, &[], 1.0))
+            .map(|e| expectation(src, e, &ctx))
             .collect::<Result<Vec<_>, _>>()?;
         return Ok(Scene {
             name: name.to_string(),
@@ -94,9 +105,13 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             contact: Vec::new(),
             contact_sweeps: Vec::new(),
             expectations,
+            stability: raw.scene.stability,
+            findings: findings(src, &raw.findings, &names, raw.scene.stability)?,
         });
     }
     let (cases, expectations) = time_stepping::build(src, &raw, &geometry)?;
+    let names: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
+    let findings = findings(src, &raw.findings, &names, raw.scene.stability)?;
     Ok(Scene {
         name: name.to_string(),
         description: raw.scene.description.into_inner(),
@@ -107,6 +122,8 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
         contact: Vec::new(),
         contact_sweeps: Vec::new(),
         expectations,
+        stability: raw.scene.stability,
+        findings,
     })
 }
 
@@ -136,10 +153,18 @@ fn build_contact(name: &str, src: &Source, raw: RawContactScene) -> Result<Scene
     } else {
         vec!["stability".into()]
     };
+    let ctx = ExpectContext {
+        names: &names,
+        has_reference: false,
+        study,
+        profile_times: &[],
+        unit: 1.0,
+        masses: &[],
+    };
     let expectations = raw
         .expectations
         .iter()
-        .map(|e| expectation(src, e, &names, false, study, &[], 1.0))
+        .map(|e| expectation(src, e, &ctx))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Scene {
         name: name.to_string(),
@@ -151,5 +176,19 @@ fn build_contact(name: &str, src: &Source, raw: RawContactScene) -> Result<Scene
         contact: cases,
         contact_sweeps: sweeps,
         expectations,
+        stability: raw.scene.stability,
+        findings: findings(src, &raw.findings, &names, raw.scene.stability)?,
     })
+}
+
+/// The scene's `[[finding]]` tables.
+fn findings(
+    src: &Source,
+    raw: &[Spanned<RawFinding>],
+    names: &[String],
+    stability: bool,
+) -> Result<Vec<Finding>, SceneError> {
+    raw.iter()
+        .map(|f| finding(src, f, names, stability))
+        .collect()
 }

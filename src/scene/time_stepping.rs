@@ -4,12 +4,12 @@
 use super::bar::model_of;
 use super::cases::Case;
 use super::error::{SceneError, Source};
-use super::expectation::{Expectation, Study, expectation};
+use super::expectation::{ExpectContext, Expectation, Study, expectation};
 use super::geometry::Geometry;
 use super::mass::mass_name;
 use super::outputs::Outputs;
 use super::reference::Reference;
-use super::schema::{RawCourantUnit, RawScene};
+use super::schema::{RawCourantUnit, RawScene, RawTimeUnit};
 use super::stepping::{Stepping, keep_step_plan};
 use courant_solver::{CentralDifference, CriticalStep, OutputRequest};
 
@@ -153,6 +153,7 @@ pub(super) fn build(
                     limit,
                     reference: reference.clone(),
                     transit_time: transit,
+                    times_in_transits: raw.output.time_unit == RawTimeUnit::Transit,
                 });
             }
         }
@@ -167,20 +168,18 @@ pub(super) fn build(
     }
     let has_reference = cases.iter().any(|c| c.reference.is_some());
     let names: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
+    let ctx = ExpectContext {
+        names: &names,
+        has_reference,
+        study: Study::TimeStepping,
+        profile_times: &outputs.profile_times,
+        unit: outputs.unit,
+        masses: &[],
+    };
     let expectations = raw
         .expectations
         .iter()
-        .map(|e| {
-            expectation(
-                src,
-                e,
-                &names,
-                has_reference,
-                Study::TimeStepping,
-                &outputs.profile_times,
-                outputs.unit,
-            )
-        })
+        .map(|e| expectation(src, e, &ctx))
         .collect::<Result<Vec<_>, _>>()?;
     Ok((cases, expectations))
 }

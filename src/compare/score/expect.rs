@@ -1,10 +1,14 @@
 //! The scene's `[[expect]]` rows on a result set: an expectation's `cases` are matched with the
 //! files' stems (an expectation without `cases` applies to every case), measured with the norms
-//! and measures of `courant run`, judged by the same rule ([`judge`]). What files cannot carry
-//! (energies, whether a run diverged) and cases without a file are skipped, with the reason.
+//! and measures of `courant run`, judged by the same rule ([`judge`]). With `relative_to` the
+//! value is the ratio to that case's file (`force_history_difference`: the distance between the
+//! two files' histories). A file's force is graded whatever force measure an expectation names
+//! (a file has one force). What files cannot carry (energies, whether a run diverged, critical
+//! steps, stability verdicts) and cases without a file are skipped, with the reason.
 
 use super::bind::profile_times;
-use super::outcome::{Scored, ScoredCase, Skipped};
+use super::outcome::{Scored, ScoredCase, ScoredForce, Skipped};
+use crate::compare::contact::ForceErrors;
 use crate::compare::expect::{at_time, judge};
 use crate::compare::norms::ErrorNorms;
 use crate::compare::verdict::{Measured, Verdict};
@@ -14,26 +18,87 @@ use crate::scene::expectation::{Expectation, Metric};
 /// Verdicts of every expectation of `scene` on `cases`, and the expectations skipped.
 pub fn evaluate(scene: &Scene, cases: &[ScoredCase]) -> (Vec<Verdict>, Vec<Skipped>) {
     let (mut verdicts, mut skipped) = (Vec::new(), Vec::new());
+    let file = |name: &str| cases.iter().find(|c| c.case == name);
     for expectation in &scene.expectations {
         for name in &expectation.cases {
-            let skip = |reason: String| Skipped {
-                case: name.clone(),
-                metric: expectation.metric,
-                at: expectation.at,
-                reason,
-                source: expectation.source.clone(),
+            let skip = |reason: String| {
+                let label = judge(expectation, name.clone(), Measured::Missing(String::new()))
+                    .metric_label();
+                Skipped {
+                    case: name.clone(),
+                    metric: expectation.metric,
+                    label,
+                    at: expectation.at,
+                    reason,
+                    source: expectation.source.clone(),
+                }
             };
-            let Some(case) = cases.iter().find(|c| &c.case == name) else {
+            let Some(case) = file(name) else {
                 skipped.push(skip(format!("no {name}.csv in this set")));
                 continue;
             };
-            match measure(scene, expectation, case) {
-                Ok(measured) => verdicts.push(judge(expectation, name.clone(), measured)),
+            let other = match &expectation.relative_to {
+                None => None,
+                Some(other) => match file(other) {
+                    Some(o) => Some(o),
+                    None => {
+                        skipped.push(skip(format!("no {other}.csv in this set")));
+                        continue;
+                    }
+                },
+            };
+            let measured = match (other, expectation.metric) {
+                (Some(o), Metric::ForceHistoryDifference) => force_history_difference(case, o),
+                (Some(o), _) => ratio(
+                    measure(scene, expectation, case),
+                    measure(scene, expectation, o),
+                    &o.case,
+                ),
+                (None, _) => measure(scene, expectation, case),
+            };
+            match measured {
+                Ok(m) => verdicts.push(judge(expectation, name.clone(), m)),
                 Err(reason) => skipped.push(skip(reason)),
             }
         }
     }
     (verdicts, skipped)
+}
+
+/// `a / b`, as `courant run` forms a ratio to another case.
+fn ratio(
+    a: Result<Measured, String>,
+    b: Result<Measured, String>,
+    other: &str,
+) -> Result<Measured, String> {
+    Ok(match (a?, b?) {
+        (Measured::Value(a), Measured::Value(b)) if b != 0.0 => Measured::Value(a / b),
+        (Measured::Value(_), Measured::Value(_)) => {
+            Measured::Missing(format!("{other} measures 0: no ratio"))
+        }
+        (Measured::Missing(why), _) => Measured::Missing(why),
+        (_, Measured::Missing(why)) => Measured::Missing(format!("{other}: {why}")),
+        _ => Measured::Missing("not a number".into()),
+    })
+}
+
+/// `max_k |F_a(t_k) - F_b(t_k)| / F1` over the samples of two files at the same times (bit for
+/// bit), F1 the exact first plateau of `a`.
+fn force_history_difference(a: &ScoredCase, b: &ScoredCase) -> Result<Measured, String> {
+    let (Scored::Force(fa), Scored::Force(fb)) = (&a.scored, &b.scored) else {
+        return Err("the files hold no force histories".into());
+    };
+    let common = fa.time.len().min(fb.time.len());
+    if common == 0 || (0..common).any(|k| fa.time[k].to_bits() != fb.time[k].to_bits()) {
+        return Ok(Measured::Missing(format!(
+            "{} and {} do not sample the same times",
+            a.case, b.case
+        )));
+    }
+    let worst = (0..common)
+        .map(|k| (fa.force[k] - fb.force[k]).abs())
+        .fold(0.0, f64::max);
+    Ok(Measured::Value(worst / fa.plateau))
 }
 
 /// What a file says of the expectation's metric, or why it cannot say.
@@ -69,32 +134,78 @@ fn measure(
         }
         Ok(Measured::Value(worst))
     };
-    let force = |pick: fn(&super::outcome::ScoredForce) -> f64| match &case.scored {
-        Scored::Force(f) => Ok(Measured::Value(pick(f))),
+    let force = |pick: fn(&ScoredForce) -> Option<f64>| match &case.scored {
+        Scored::Force(f) => Ok(pick(f).map_or(
+            Measured::Missing("the force never reached half the plateau".into()),
+            Measured::Value,
+        )),
         _ => Err("the file holds no force history".to_string()),
     };
+    let errors = |f: &ScoredForce| -> ForceErrors { f.errors };
     match expectation.metric {
         Metric::L1 => norm(|n| n.l1),
         Metric::L2 => norm(|n| n.l2),
         Metric::Linf => norm(|n| n.linf),
         Metric::Overshoot => norm(|n| n.overshoot),
         Metric::TvRatio => norm(|n| n.tv_ratio),
-        Metric::PlateauDeviation => force(|f| f.metrics.plateau_deviation),
-        Metric::ImpulseError => force(|f| f.metrics.impulse_error),
-        Metric::DurationError => force(|f| f.metrics.duration_error),
-        Metric::ForceL1Error => force(|f| f.metrics.force_l1_error),
+        Metric::PlateauDeviation => force(|f| Some(f.errors.plateau_deviation)),
+        Metric::ImpulseError => force(|f| Some(f.impulse_error)),
+        Metric::DurationError => force(|f| f.errors.duration_error),
+        Metric::ForceL1Error => force(|f| Some(f.errors.force_l1_error)),
+        Metric::MaxForce => match &case.scored {
+            Scored::Force(f) => Ok(Measured::Value(errors(f).max_force)),
+            _ => Err("the file holds no force history".into()),
+        },
+        Metric::ForceHistoryDifference => Err("needs relative_to".into()),
         Metric::ClosedFormDeviation => match &case.scored {
             Scored::Spectrum(s) => Ok(Measured::Value(s.deviation)),
             _ => Err("the file holds no spectrum".into()),
         },
+        Metric::MassDeviation => mass_deviation(expectation, case),
         Metric::EnergyBalance | Metric::EnergyLost | Metric::EnergyRatio => {
             Err("not measurable from files: format 1 carries no energies".into())
         }
         Metric::Diverged => Err(
             "not measurable from files: a result file does not say whether its run diverged".into(),
         ),
+        Metric::CriticalCourant | Metric::ElementBoundRatio | Metric::Stability => Err(
+            "not measurable from files: format 1 carries no critical steps or stability verdicts"
+                .into(),
+        ),
         Metric::DispersionDeviation | Metric::PhaseErrorOrder | Metric::CourantDeviation => {
             Err("not measurable from files: format 1 has no dispersion or stability data".into())
         }
     }
+}
+
+/// `max |omega_a / omega_b - 1|` over the elastic modes both mass kinds of the file give (the
+/// rigid mode, 0 up to round-off, left out), as `courant run` measures it.
+fn mass_deviation(expectation: &Expectation, case: &ScoredCase) -> Result<Measured, String> {
+    let Scored::Spectrum(s) = &case.scored else {
+        return Err("the file holds no spectrum".into());
+    };
+    let Some((mass, against)) = expectation.masses else {
+        return Err("needs the two mass kinds".into());
+    };
+    let of = |label: String| -> Vec<(usize, f64)> {
+        s.rows
+            .iter()
+            .filter(|r| r.0 == label)
+            .map(|r| (r.1, r.2))
+            .collect()
+    };
+    let (a, b) = (of(mass.label()), of(against.label()));
+    if a.is_empty() || b.is_empty() {
+        return Ok(Measured::Missing(
+            "the file lacks one of the two masses".into(),
+        ));
+    }
+    let top = b.iter().map(|r| r.1).fold(0.0, f64::max);
+    Ok(Measured::Value(
+        a.iter()
+            .filter_map(|(mode, v)| b.iter().find(|r| r.0 == *mode).map(|r| (v, r.1)))
+            .filter(|(_, w)| *w > 1e-6 * top)
+            .map(|(v, w)| (v / w - 1.0).abs())
+            .fold(0.0, f64::max),
+    ))
 }

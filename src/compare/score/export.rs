@@ -23,7 +23,8 @@ fn case_file(case: &str, data: CaseData) -> CaseFile {
 }
 
 /// The set of a compared scene (`label` names it): element-average profiles on each case's
-/// mesh (stress profiles), `t, force, gap` (contact), `mode, omega, mass` (spectra), and a
+/// mesh (stress profiles), `t, force, gap` (contact: the force the scene grades), `mode, omega,
+/// mass` (spectra), and a
 /// `results.toml` with code `courant`, its version and per case scheme, mass, dt and elements.
 /// `None` for a scene the format has no form for (dispersion, contact stability).
 pub fn exchange_set(scene: &Scene, outcome: &SceneOutcome, label: &str) -> Option<ExchangeSet> {
@@ -61,7 +62,9 @@ pub fn exchange_set(scene: &Scene, outcome: &SceneOutcome, label: &str) -> Optio
         let h = &c.run.history;
         let history = ForceHistory {
             time: h.iter().map(|s| s.time).collect(),
-            force: h.iter().map(|s| s.force).collect(),
+            // The force the scene grades (the seed's eps_s x penetration, or the momentum
+            // delivered over dt), so that the file is graded as the run is.
+            force: h.iter().map(|s| c.measure.force(s)).collect(),
             penetration: None,
             gap: Some(h.iter().map(|s| s.gap).collect()),
             lines: Vec::new(),

@@ -3,7 +3,7 @@
 //! that cannot be measured from files), and convergence studies across sets.
 
 use super::diagnostics::Diagnostics;
-use crate::compare::contact::ForceMetrics;
+use crate::compare::contact::ForceErrors;
 use crate::compare::convergence::ConvergenceResult;
 use crate::compare::norms::ErrorNorms;
 use crate::compare::verdict::Verdict;
@@ -48,8 +48,12 @@ pub struct ScoredForce {
     pub reference: Vec<f64>,
     /// Impulse of the samples (trapezoid rule).
     pub impulse: f64,
-    /// Accuracy measures (those of `courant run`).
-    pub metrics: ForceMetrics,
+    /// `|impulse - exact| / exact`.
+    pub impulse_error: f64,
+    /// First-plateau force of the reference.
+    pub plateau: f64,
+    /// Plateau, duration and L1 errors, largest force (those of `courant run`).
+    pub errors: ForceErrors,
 }
 
 /// A spectrum beside the closed forms.
@@ -120,6 +124,8 @@ pub struct Skipped {
     pub case: String,
     /// Metric.
     pub metric: Metric,
+    /// The metric as the verdict would name it (`l1 / co0.5`, `mass_deviation rmm0.5 vs amm0.5`).
+    pub label: String,
     /// Profile time, if the expectation names one.
     pub at: Option<f64>,
     /// Why it is not measured.

@@ -34,6 +34,7 @@ pub fn summary_table(sets: &[ScoredSet]) -> Table {
             "impulse_error",
             "duration_error",
             "force_l1_error",
+            "max_force",
         ]),
         Some(Scored::Spectrum(_)) => Table::new(&[
             "set",
@@ -91,11 +92,12 @@ pub fn summary_table(sets: &[ScoredSet]) -> Table {
                     f.time.len().into(),
                     c.dt.map(|d| d.0).into(),
                     f.impulse.into(),
-                    f.metrics.plateau.into(),
-                    f.metrics.plateau_deviation.into(),
-                    f.metrics.impulse_error.into(),
-                    f.metrics.duration_error.into(),
-                    f.metrics.force_l1_error.into(),
+                    f.plateau.into(),
+                    f.errors.plateau_deviation.into(),
+                    f.impulse_error.into(),
+                    f.errors.duration_error.into(),
+                    f.errors.force_l1_error.into(),
+                    f.errors.max_force.into(),
                 ],
                 Scored::Spectrum(s) => {
                     let mut masses: Vec<&str> = s.rows.iter().map(|r| r.0.as_str()).collect();
@@ -163,7 +165,7 @@ pub fn expectations_table(sets: &[ScoredSet]) -> Table {
             table.push(vec![
                 set.label.as_str().into(),
                 s.case.as_str().into(),
-                s.metric.name().into(),
+                s.label.as_str().into(),
                 s.at.into(),
                 format!("not measured: {}", s.reason).into(),
                 Cell::Empty,
