@@ -254,5 +254,16 @@ fn several_meshes_give_the_orders_of_the_report_study() {
         measured.note.is_some(),
         "no report study runs Co = 0.1: measured only"
     );
-    assert!(outcome.passed());
+    // The scene's bounds hold on its mesh (N = 100); some it measured there do not hold on
+    // these meshes (fig1's overshoot ratio of co0.1 to co0.5), the orders and the diagnostics do.
+    for set in &outcome.sets {
+        for c in &set.cases {
+            assert!(
+                c.diagnostics.verdicts().iter().all(|v| v.1 != Some(false)),
+                "{}",
+                c.case
+            );
+        }
+    }
+    assert!(outcome.convergence.iter().all(|c| c.passed()));
 }

@@ -151,6 +151,19 @@ pub fn terminal(scene: &Scene, outcome: &ScoreOutcome) -> String {
         );
         for c in &set.cases {
             let _ = writeln!(out, "    {}", case_line(c));
+            let scene_n = scene
+                .cases
+                .iter()
+                .find(|s| s.name == c.case)
+                .map(|s| s.model.bar().element_count());
+            if let (Some(n), Some(e)) = (scene_n, c.elements)
+                && n != e
+            {
+                let _ = writeln!(
+                    out,
+                    "      (the scene's case has {n} elements: bounds measured on its mesh may not hold on this one)"
+                );
+            }
         }
         render_rows(&mut out, &check_rows(set));
     }

@@ -4,6 +4,7 @@
 //! tables.
 
 use super::case::CaseResult;
+use super::norms::ErrorNorms;
 use super::verdict::{Measured, Verdict};
 use crate::results::case::Status;
 use crate::results::table::{Cell, Table};
@@ -156,19 +157,24 @@ pub fn norms_table(results: &[CaseResult]) -> Table {
     for r in results {
         for p in &r.profiles {
             if let Some(n) = p.norms {
-                table.push(vec![
-                    r.case.as_str().into(),
-                    p.time.into(),
-                    n.l1.into(),
-                    n.l2.into(),
-                    n.linf.into(),
-                    n.overshoot.into(),
-                    n.tv_ratio.into(),
-                ]);
+                table.push(norms_cells(&r.case, p.time, &n));
             }
         }
     }
     table
+}
+
+/// One row of norms: `case, t, l1, l2, linf, overshoot, tv_ratio`.
+pub fn norms_cells(case: &str, time: f64, n: &ErrorNorms) -> Vec<Cell> {
+    vec![
+        case.into(),
+        time.into(),
+        n.l1.into(),
+        n.l2.into(),
+        n.linf.into(),
+        n.overshoot.into(),
+        n.tv_ratio.into(),
+    ]
 }
 
 /// Expectation verdicts: `case, metric, at, measured, min, max, equals, verdict, source`.

@@ -5,7 +5,7 @@
 
 use super::outcome::{CaseConvergence, ScoreOutcome, Scored, ScoredSet};
 use crate::compare::outcome::SceneOutcome;
-use crate::compare::tables::verdict_cells;
+use crate::compare::tables::{norms_cells, verdict_cells};
 use crate::results::table::{Cell, Precision, Table};
 
 fn verdict_cell(v: Option<bool>) -> Cell {
@@ -131,17 +131,9 @@ pub fn norms_table(sets: &[ScoredSet]) -> Table {
         for c in &set.cases {
             if let Scored::Profiles { profiles, .. } = &c.scored {
                 for p in profiles {
-                    let n = p.norms;
-                    table.push(vec![
-                        set.label.as_str().into(),
-                        c.case.as_str().into(),
-                        p.time.into(),
-                        n.l1.into(),
-                        n.l2.into(),
-                        n.linf.into(),
-                        n.overshoot.into(),
-                        n.tv_ratio.into(),
-                    ]);
+                    let mut row: Vec<Cell> = vec![set.label.as_str().into()];
+                    row.extend(norms_cells(&c.case, p.time, &p.norms));
+                    table.push(row);
                 }
             }
         }
