@@ -149,7 +149,13 @@ fn relative<R: Named>(
     if e.metric == Metric::ForceHistoryDifference {
         return value(e, r, Some(reference));
     }
-    match (value(e, r, None), value(e, reference, None)) {
+    ratio(value(e, r, None), value(e, reference, None), other)
+}
+
+/// `a / b` of a case's value and the value of the case `other` it is relative to (missing
+/// when either is, or `b` is 0).
+pub fn ratio(a: Measured, b: Measured, other: &str) -> Measured {
+    match (a, b) {
         (Measured::Value(a), Measured::Value(b)) if b != 0.0 => Measured::Value(a / b),
         (Measured::Value(_), Measured::Value(_)) => {
             Measured::Missing(format!("{other} measures 0: no ratio"))

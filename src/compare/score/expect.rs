@@ -12,7 +12,7 @@
 use super::bind::profile_times;
 use super::outcome::{Scored, ScoredCase, ScoredForce, Skipped};
 use crate::compare::contact::ForceErrors;
-use crate::compare::expect::{at_time, judge};
+use crate::compare::expect::{at_time, judge, ratio};
 use crate::compare::norms::ErrorNorms;
 use crate::compare::verdict::{Measured, Verdict};
 use crate::scene::cases::Scene;
@@ -52,11 +52,8 @@ pub fn evaluate(scene: &Scene, cases: &[ScoredCase]) -> (Vec<Verdict>, Vec<Skipp
             };
             let measured = match (other, expectation.metric) {
                 (Some(o), Metric::ForceHistoryDifference) => force_history_difference(case, o),
-                (Some(o), _) => ratio(
-                    measure(scene, expectation, case),
-                    measure(scene, expectation, o),
-                    &o.case,
-                ),
+                (Some(o), _) => measure(scene, expectation, case)
+                    .and_then(|a| measure(scene, expectation, o).map(|b| ratio(a, b, &o.case))),
                 (None, _) => measure(scene, expectation, case),
             };
             match measured {
@@ -66,23 +63,6 @@ pub fn evaluate(scene: &Scene, cases: &[ScoredCase]) -> (Vec<Verdict>, Vec<Skipp
         }
     }
     (verdicts, skipped)
-}
-
-/// `a / b`, as `courant run` forms a ratio to another case.
-fn ratio(
-    a: Result<Measured, String>,
-    b: Result<Measured, String>,
-    other: &str,
-) -> Result<Measured, String> {
-    Ok(match (a?, b?) {
-        (Measured::Value(a), Measured::Value(b)) if b != 0.0 => Measured::Value(a / b),
-        (Measured::Value(_), Measured::Value(_)) => {
-            Measured::Missing(format!("{other} measures 0: no ratio"))
-        }
-        (Measured::Missing(why), _) => Measured::Missing(why),
-        (_, Measured::Missing(why)) => Measured::Missing(format!("{other}: {why}")),
-        _ => Measured::Missing("not a number".into()),
-    })
 }
 
 /// `max_k |F_a(t_k) - F_b(t_k)| / F1` over the samples of two files at the same times (bit for
