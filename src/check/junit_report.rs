@@ -38,21 +38,31 @@ pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
                 .verdicts
                 .iter()
                 .map(|v| {
-                    let name = testcase_name(v);
-                    let what = format!(
-                        "measured {}, bound {}; source: {}",
-                        v.measured, v.bound, v.source
-                    );
+                    // A failure says once how far the value is past its bound, its body the
+                    // source; a passing case says what was measured against which bound.
+                    let failure = (!v.pass).then(|| Failure {
+                        message: v.excess(),
+                        kind: "expectation".into(),
+                        details: format!("bound {}; source: {}", v.bound, v.source),
+                    });
+                    let output = v.pass.then(|| {
+                        let finding = if v.finding {
+                            " (a stated finding: theory and run disagree)"
+                        } else {
+                            ""
+                        };
+                        format!(
+                            "measured {}, bound {}{finding}; source: {}",
+                            v.measured, v.bound, v.source
+                        )
+                    });
                     TestCase {
                         classname: scene.name.clone(),
-                        failure: (!v.pass).then(|| Failure {
-                            message: format!("{name}: {what}"),
-                            kind: "expectation".into(),
-                            details: v.describe(),
-                        }),
-                        name,
-                        output: Some(what),
+                        name: testcase_name(v),
+                        failure,
+                        output,
                         skipped: None,
+                        time: scene.time_of(&v.case),
                     }
                 })
                 .collect();
@@ -67,6 +77,7 @@ pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
                     }),
                     output: Some(file_details(file)),
                     skipped: file.skipped().then(|| file.summary()),
+                    time: 0.0,
                 });
             }
             TestSuite {
