@@ -14,24 +14,33 @@ pub fn testcase_name(v: &Verdict) -> String {
     format!("{} {}{at}", v.case, v.metric_label())
 }
 
-/// The test case of a verdict (`classname`, name [`testcase_name`]): measured value, bound and
-/// source as its output, a `<failure>` when it fails.
-pub fn verdict_case(classname: &str, v: &Verdict) -> TestCase {
-    let name = testcase_name(v);
-    let what = format!(
-        "measured {}, bound {}; source: {}",
-        v.measured, v.bound, v.source
-    );
+/// The test case of a verdict (`classname`, name [`testcase_name`], `time` in seconds): a
+/// failure says once how far the value is past its bound, its body the source; a passing case
+/// says what was measured against which bound.
+pub fn verdict_case(classname: &str, v: &Verdict, time: f64) -> TestCase {
+    let failure = (!v.pass).then(|| Failure {
+        message: v.excess(),
+        kind: "expectation".into(),
+        details: format!("bound {}; source: {}", v.bound, v.source),
+    });
+    let output = v.pass.then(|| {
+        let finding = if v.finding {
+            " (a stated finding: theory and run disagree)"
+        } else {
+            ""
+        };
+        format!(
+            "measured {}, bound {}{finding}; source: {}",
+            v.measured, v.bound, v.source
+        )
+    });
     TestCase {
         classname: classname.to_string(),
-        failure: (!v.pass).then(|| Failure {
-            message: format!("{name}: {what}"),
-            kind: "expectation".into(),
-            details: v.describe(),
-        }),
-        name,
-        output: Some(what),
+        name: testcase_name(v),
+        failure,
+        output,
         skipped: None,
+        time,
     }
 }
 
@@ -58,7 +67,7 @@ pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
             let mut cases: Vec<TestCase> = scene
                 .verdicts
                 .iter()
-                .map(|v| verdict_case(&scene.name, v))
+                .map(|v| verdict_case(&scene.name, v, scene.time_of(&v.case)))
                 .collect();
             for file in scene.baseline.iter().flatten() {
                 cases.push(TestCase {
@@ -71,6 +80,7 @@ pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
                     }),
                     output: Some(file_details(file)),
                     skipped: file.skipped().then(|| file.summary()),
+                    time: 0.0,
                 });
             }
             TestSuite {

@@ -19,11 +19,12 @@ pub fn xml(scene: &Scene, outcome: &ScoreOutcome, started: &str, time: f64) -> S
             failure,
             output: Some(output),
             skipped,
+            time: 0.0,
         };
         let mut cases: Vec<TestCase> = set
             .verdicts
             .iter()
-            .map(|v| verdict_case(&classname, v))
+            .map(|v| verdict_case(&classname, v, 0.0))
             .collect();
         for s in &set.skipped {
             let at = s.at.map(|t| format!(" at {t}")).unwrap_or_default();
@@ -85,6 +86,7 @@ pub fn xml(scene: &Scene, outcome: &ScoreOutcome, started: &str, time: f64) -> S
                             .then(|| "no band: measured only".to_string()),
                         name,
                         output: Some(what),
+                        time: 0.0,
                     }
                 })
             })

@@ -96,6 +96,35 @@ impl Verdict {
         }
     }
 
+    /// How far a verdict is from its bound, in words: `1.20e-3 above the max 1e-3 (+20 %)`,
+    /// `false, expected true`, `observed energy growth x5.300, theory predicts stable`.
+    pub fn excess(&self) -> String {
+        match (&self.measured, self.bound) {
+            (Measured::Value(x), _) if !x.is_finite() => format!("{x} is not a finite number"),
+            (Measured::Value(x), Bound::Range { min, max }) => {
+                let past = |edge: f64, side: &str| {
+                    let relative = if edge != 0.0 {
+                        format!(" ({:+.3} %)", 100.0 * (x - edge) / edge.abs())
+                    } else {
+                        String::new()
+                    };
+                    format!("{x:.4e} is {side} {edge:e}{relative}")
+                };
+                match (min, max) {
+                    (Some(lo), _) if *x < lo => past(lo, "below the min"),
+                    (_, Some(hi)) if *x > hi => past(hi, "above the max"),
+                    _ => format!("{x:.4e} is within the bound"),
+                }
+            }
+            (Measured::Flag(b), Bound::Equals(want)) => format!("{b}, expected {want}"),
+            (Measured::Text(t), Bound::Theory(p)) => {
+                format!("observed {t}, theory predicts {p}")
+            }
+            (Measured::Missing(why), _) => format!("not measured: {why}"),
+            (measured, bound) => format!("measured {measured}, bound {bound}"),
+        }
+    }
+
     /// One line for the terminal.
     pub fn describe(&self) -> String {
         let at = self.at.map(|t| format!(" at t = {t}")).unwrap_or_default();

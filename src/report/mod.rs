@@ -46,8 +46,10 @@ use document::{Block, Page};
 pub struct Report {
     /// `(relative path, contents)`.
     pub files: Vec<(String, String)>,
-    /// True when every expectation held.
+    /// True when every verdict held.
     pub passed: bool,
+    /// Every verdict of the report, counted.
+    pub tally: summary::Tally,
 }
 
 /// Render the report of `scenes` from their runs (`runs.scenes` in the same order).
@@ -60,23 +62,33 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
     for ((outcome, _), scene) in runs.scenes.iter().zip(scenes) {
         page.extend(scenes::section(scene, outcome));
     }
-    page.extend(convergence::section(&runs.convergence));
-    page.extend(work_precision::section(&runs.work));
+    if !runs.convergence.is_empty() {
+        page.extend(convergence::section(&runs.convergence));
+    }
+    if !runs.work.is_empty() {
+        page.extend(work_precision::section(&runs.work));
+    }
     let rows: Vec<_> = runs
         .scenes
         .iter()
         .zip(scenes)
         .flat_map(|((o, _), s)| stability_rows(s, o))
         .collect();
-    page.extend(stability::section(&rows)?);
-    page.extend(other_codes::section(
-        scenes,
-        &runs.scenes,
-        &runs.other_codes,
-    ));
+    // The built-in report (with its studies) always has the section: it also holds the contact
+    // closed forms; a report of some scenes has it when one is a stability scene.
+    if !rows.is_empty() || !runs.convergence.is_empty() {
+        page.extend(stability::section(&rows)?);
+    }
+    if !runs.other_codes.is_empty() {
+        page.extend(other_codes::section(
+            scenes,
+            &runs.scenes,
+            &runs.other_codes,
+        ));
+    }
     page.push(Block::Heading(2, "How this report was made".into()));
     page.push(Block::Paragraph(format!(
-        "By `cargo run --release -- report` (courant {}): every built-in scene ({} of them) and {} \
+        "By `cargo run --release -- report` (courant {}): {} scene(s) and {} \
          convergence studies, their scenes, studies and cases run in parallel; the content is identical whatever the thread count. The \
          commit, date, CPU, thread count and rustc of this run are in `timing.md`, with the wall times: \
          they change from run to run and machine to machine, while everything on this page changes only \
@@ -95,5 +107,6 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
     Ok(Report {
         files,
         passed: failed.is_empty() && other_codes::passed(&runs.other_codes),
+        tally: summary::tally(&runs.scenes, &runs.convergence),
     })
 }

@@ -60,6 +60,18 @@ impl Tally {
     }
 }
 
+/// Every verdict of the scenes and studies, counted.
+pub fn tally(outcomes: &[(SceneOutcome, f64)], convergence: &[ConvergenceResult]) -> Tally {
+    let mut total = Tally::default();
+    outcomes
+        .iter()
+        .for_each(|(o, _)| total.add(Tally::of_scene(o)));
+    convergence
+        .iter()
+        .for_each(|c| total.add(Tally::of_study(c)));
+    total
+}
+
 /// The anchor of a scene's expectations table.
 pub fn expectations_anchor(scene: &str) -> String {
     format!("{scene}-expectations")
@@ -153,11 +165,12 @@ pub fn head(
             Inline::link("orders", format!("#{}", anchor(c.study.title))),
         ));
     }
-    rows.push(row(
-        Inline::text("all"),
-        total,
-        Inline::link("stability table", "#stability-at-the-extremes"),
-    ));
+    let stability = if scenes.iter().any(|s| s.stability) || !convergence.is_empty() {
+        Inline::link("stability table", "#stability-at-the-extremes")
+    } else {
+        Inline::text("-")
+    };
+    rows.push(row(Inline::text("all"), total, stability));
     let findings: Vec<String> = outcomes
         .iter()
         .zip(scenes)
@@ -210,13 +223,20 @@ pub fn head(
             )
         })
         .collect();
-    for section in [
-        "Convergence studies",
-        "Work and precision",
-        "Stability at the extremes",
-        "Other codes",
-        "How this report was made",
-    ] {
+    let mut sections = Vec::new();
+    if !convergence.is_empty() {
+        sections.push("Convergence studies");
+        sections.push("Work and precision");
+    }
+    if scenes.iter().any(|s| s.stability) || !convergence.is_empty() {
+        sections.push("Stability at the extremes");
+    }
+    // The built-in report (the one with studies) grades the committed results of other codes.
+    if !convergence.is_empty() {
+        sections.push("Other codes");
+    }
+    sections.push("How this report was made");
+    for section in sections {
         contents.push(Inline::link(section, format!("#{}", anchor(section))));
     }
     page.push(Block::Links(contents));

@@ -68,6 +68,11 @@ pub enum Metric {
     /// against what theory predicts for its step (not an `[[expect]]` metric; a disagreement is
     /// declared with `[[finding]]`).
     Stability,
+    /// A convergence study's order fitted on its finest meshes, against the band theory allows
+    /// (automatic, not an `[[expect]]` metric).
+    FittedOrder,
+    /// A convergence study's largest error over its meshes, where theory says exact (automatic).
+    MaxError,
 }
 
 /// Every metric, its scene-file name and the study it belongs to.
@@ -127,7 +132,13 @@ const METRICS: &[(Metric, &str, Study)] = &[
         Study::ContactStability,
     ),
     (Metric::Stability, "stability", Study::TimeStepping),
+    (Metric::FittedOrder, "fitted_order", Study::TimeStepping),
+    (Metric::MaxError, "max_error", Study::TimeStepping),
 ];
+
+/// Metrics whose verdicts courant makes by itself (stability scenes, convergence studies): not
+/// for `[[expect]]`.
+const AUTOMATIC: [Metric; 3] = [Metric::Stability, Metric::FittedOrder, Metric::MaxError];
 
 /// The kind of study a scene is; each metric belongs to one.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -380,7 +391,11 @@ pub(super) fn expectation(
     let raw = spanned.get_ref();
     let fail = |msg: String| src.error(Some(spanned.span()), "expect", msg);
     let metric = Metric::parse(&raw.metric).ok_or_else(|| {
-        let all: Vec<&str> = METRICS.iter().map(|m| m.1).collect();
+        let all: Vec<&str> = METRICS
+            .iter()
+            .filter(|m| !AUTOMATIC.contains(&m.0))
+            .map(|m| m.1)
+            .collect();
         fail(format!(
             "metric = \"{}\" is not one of {}",
             raw.metric,
@@ -391,6 +406,12 @@ pub(super) fn expectation(
         return Err(fail(
             "the stability verdict is automatic in a stability scene (`[scene] stability = true`); declare a disagreement with `[[finding]]`".into(),
         ));
+    }
+    if AUTOMATIC.contains(&metric) {
+        return Err(fail(format!(
+            "metric \"{}\" is a convergence study's own verdict, not an expectation",
+            metric.name()
+        )));
     }
     if metric.needs_reference() && !has_reference {
         return Err(fail(format!(

@@ -1,7 +1,7 @@
 //! Reading a scene: TOML to a validated [`Scene`], dispatched by study kind.
 
 use super::cases::Scene;
-use super::error::{SceneError, Source};
+use super::error::{SceneError, Source, collect_all};
 use super::expectation::{ExpectContext, Finding, Study, expectation, finding};
 use super::geometry::Geometry;
 use super::schema::{RawContactScene, RawFinding, RawHeader, RawScene};
@@ -9,18 +9,63 @@ use super::{contact, dispersion, spectrum, time_stepping};
 use courant_solver::MassKind;
 use toml::Spanned;
 
+/// Unknown keys reported in one pass, at most.
+const MAX_UNKNOWN_KEYS: usize = 20;
+
+/// `text` with line `line` (1-based) replaced by spaces: positions elsewhere stay the same.
+fn blank_line(text: &str, line: usize) -> String {
+    text.split_inclusive('\n')
+        .enumerate()
+        .map(|(i, l)| {
+            if i + 1 == line {
+                l.chars().map(|c| if c == '\n' { c } else { ' ' }).collect()
+            } else {
+                l.to_string()
+            }
+        })
+        .collect()
+}
+
+/// One reading of a scene: its first error.
+fn parse_once(name: &str, file: &str, text: &str) -> Result<Scene, SceneError> {
+    let src = Source { file, text };
+    let table: toml::Table = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
+    if table.contains_key("contact") || table.contains_key("contact_stability") {
+        let raw: RawContactScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
+        return build_contact(name, &src, raw);
+    }
+    let raw: RawScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
+    build(name, &src, raw)
+}
+
 impl Scene {
     /// Parse and validate a scene. `file` is the path or name shown in errors; `name` becomes the
     /// output directory.
+    ///
+    /// Every unknown key of the file is reported in one pass (each is set aside and the file read
+    /// again), with the first other error found after them; invalid `[[expect]]` tables are all
+    /// reported too.
     pub fn parse(name: &str, file: &str, text: &str) -> Result<Scene, SceneError> {
-        let src = Source { file, text };
-        let table: toml::Table = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
-        if table.contains_key("contact") || table.contains_key("contact_stability") {
-            let raw: RawContactScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
-            return build_contact(name, &src, raw);
+        let first = match parse_once(name, file, text) {
+            Ok(scene) => return Ok(scene),
+            Err(e) => e,
+        };
+        let mut errors = vec![first];
+        let mut rest = text.to_string();
+        // Bounded: each round blanks one line of the file.
+        for _ in 0..MAX_UNKNOWN_KEYS {
+            let last = errors.last().expect("one error at least");
+            if !last.message.starts_with("unknown field") || last.line == 0 {
+                break;
+            }
+            rest = blank_line(&rest, last.line);
+            match parse_once(name, file, &rest) {
+                Ok(_) => break,
+                Err(e) if e.line == last.line && e.message == last.message => break,
+                Err(e) => errors.push(e),
+            }
         }
-        let raw: RawScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
-        build(name, &src, raw)
+        Err(SceneError::all(errors).expect("one error at least"))
     }
 
     /// Read a scene from a file; its name is the file stem.
@@ -32,6 +77,7 @@ impl Scene {
             column: 0,
             key: String::new(),
             message: format!("cannot read the file: {e}"),
+            also: Vec::new(),
         })?;
         let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
         Scene::parse(name, &file, &text)
@@ -90,11 +136,7 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             unit: 1.0,
             masses: &masses,
         };
-        let expectations = raw
-            .expectations
-            .iter()
-            .map(|e| expectation(src, e, &ctx))
-            .collect::<Result<Vec<_>, _>>()?;
+        let expectations = collect_all(raw.expectations.iter().map(|e| expectation(src, e, &ctx)))?;
         return Ok(Scene {
             name: name.to_string(),
             description: raw.scene.description.get_ref().clone(),
@@ -161,11 +203,7 @@ fn build_contact(name: &str, src: &Source, raw: RawContactScene) -> Result<Scene
         unit: 1.0,
         masses: &[],
     };
-    let expectations = raw
-        .expectations
-        .iter()
-        .map(|e| expectation(src, e, &ctx))
-        .collect::<Result<Vec<_>, _>>()?;
+    let expectations = collect_all(raw.expectations.iter().map(|e| expectation(src, e, &ctx)))?;
     Ok(Scene {
         name: name.to_string(),
         description: raw.scene.description.get_ref().clone(),
@@ -188,7 +226,5 @@ fn findings(
     names: &[String],
     stability: bool,
 ) -> Result<Vec<Finding>, SceneError> {
-    raw.iter()
-        .map(|f| finding(src, f, names, stability))
-        .collect()
+    collect_all(raw.iter().map(|f| finding(src, f, names, stability)))
 }

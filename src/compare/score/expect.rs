@@ -151,6 +151,9 @@ fn measure(
         Metric::Diverged => Err(
             "not measurable from files: a result file does not say whether its run diverged".into(),
         ),
+        Metric::FittedOrder | Metric::MaxError => {
+            Err("convergence verdicts come from several sets (the study across --results)".into())
+        }
         Metric::CriticalCourant | Metric::ElementBoundRatio | Metric::Stability => Err(
             "not measurable from files: format 1 carries no critical steps or stability verdicts"
                 .into(),
