@@ -52,11 +52,11 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
                 let word = match verdict {
                     Some(true) => "pass",
                     Some(false) => "FAIL",
-                    None => "n/a ",
+                    None => "n/a",
                 };
                 failed += usize::from(verdict == Some(false));
                 lines.push(format!(
-                    "{word}  {} {name} = {measured}  [{note}]",
+                    "{word:7}  {} {name} = {measured}  [{note}]",
                     case.case
                 ));
             }
