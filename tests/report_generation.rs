@@ -74,13 +74,17 @@ fn report_has_sections_tables_and_deterministic_content() {
     );
     // One expectations table per scene (no second list of the same verdicts), and the headline
     // counts exactly the verdict cells of the page: the scenes' expectations tables and the
-    // convergence order tables (rows with a band).
+    // convergence order tables (rows with a band) and the checks of other codes' committed results.
     assert!(index.contains("[`fig1/expectations.csv`]"));
     assert!(!index.contains("Expectations:"), "no second list");
     let cells: usize = a
         .files
         .iter()
-        .filter(|(name, _)| name.ends_with("/expectations.csv") || name.ends_with(".orders.csv"))
+        .filter(|(name, _)| {
+            name.ends_with("/expectations.csv")
+                || name.ends_with(".orders.csv")
+                || name.ends_with(".checks.csv")
+        })
         .map(|(_, csv)| {
             csv.lines()
                 .skip(1)

@@ -33,6 +33,7 @@ pub mod plot;
 pub mod scenes;
 pub mod stability;
 pub mod summary;
+pub mod tally;
 pub mod timing;
 pub mod work_precision;
 
@@ -49,7 +50,7 @@ pub struct Report {
     /// True when every verdict held.
     pub passed: bool,
     /// Every verdict of the report, counted.
-    pub tally: summary::Tally,
+    pub tally: tally::Tally,
 }
 
 /// Render the report of `scenes` from their runs (`runs.scenes` in the same order).
@@ -57,8 +58,14 @@ pub struct Report {
 /// # Errors
 /// A contact closed form of the stability section refuses its parameters.
 pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
-    let failed = summary::failures(scenes, &runs.scenes, &runs.convergence);
-    let mut page = summary::head(scenes, &runs.scenes, &runs.convergence, &failed);
+    let failed = summary::failures(scenes, &runs.scenes, &runs.convergence, &runs.other_codes);
+    let mut page = summary::head(
+        scenes,
+        &runs.scenes,
+        &runs.convergence,
+        &runs.other_codes,
+        &failed,
+    );
     for ((outcome, _), scene) in runs.scenes.iter().zip(scenes) {
         page.extend(scenes::section(scene, outcome));
     }
@@ -106,7 +113,13 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
     files.extend(timing::timing_files(scenes, runs));
     Ok(Report {
         files,
-        passed: failed.is_empty() && other_codes::passed(&runs.other_codes),
-        tally: summary::tally(&runs.scenes, &runs.convergence),
+        passed: failed.is_empty(),
+        tally: runs.other_codes.iter().fold(
+            tally::tally(&runs.scenes, &runs.convergence),
+            |mut t, (_, _, scored)| {
+                t.add(other_codes::tally(scored));
+                t
+            },
+        ),
     })
 }

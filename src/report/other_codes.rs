@@ -5,18 +5,80 @@
 
 use super::document::{Block, Page};
 use super::plot::{Axes, Series, SeriesStyle, line_chart};
+use super::tally::Tally;
 use crate::compare::outcome::SceneOutcome;
 use crate::compare::score::outcome::{Scored, ScoredSet};
 use crate::compare::score::tables::beside_courant_table;
 use crate::results::exchange::committed::CommittedSet;
+use crate::results::table::Table;
 use crate::scene::cases::Scene;
 
 /// One scored committed set: the set, the index of its scene, the scored set.
 pub type OtherCode<'a> = (&'a CommittedSet, usize, ScoredSet);
 
-/// True when every committed set passes its checks.
-pub fn passed(others: &[OtherCode]) -> bool {
-    others.iter().all(|(_, _, s)| s.passed())
+/// The anchor of a set's checks table.
+pub fn checks_anchor(stem: &str) -> String {
+    format!("{stem}-checks")
+}
+
+/// The verdicts of a set: the scene's expectations on its files and each case's decided
+/// diagnostics (an undecided diagnostic is no verdict).
+pub fn tally(scored: &ScoredSet) -> Tally {
+    let mut t = Tally::default();
+    for v in &scored.verdicts {
+        match (v.pass, v.finding) {
+            (true, true) => t.findings += 1,
+            (true, false) => t.passed += 1,
+            (false, _) => t.failed += 1,
+        }
+    }
+    for case in &scored.cases {
+        for (_, verdict, _, _) in case.diagnostics.verdicts() {
+            match verdict {
+                Some(true) => t.passed += 1,
+                Some(false) => t.failed += 1,
+                None => {}
+            }
+        }
+    }
+    t
+}
+
+/// Every check of a set, one row each: `case, check, measured, bound, verdict, source` (a
+/// diagnostic's note as its source; `n/a` where it decides nothing).
+fn checks_table(scored: &ScoredSet) -> Table {
+    let mut t = Table::new(&["case", "check", "measured", "bound", "verdict", "source"]);
+    for v in &scored.verdicts {
+        t.push(vec![
+            v.case.as_str().into(),
+            v.metric_label().into(),
+            v.measured.to_string().into(),
+            v.bound.to_string().into(),
+            v.word().into(),
+            v.source.as_str().into(),
+        ]);
+    }
+    for case in &scored.cases {
+        for (name, verdict, measured, note) in case.diagnostics.verdicts() {
+            if note.starts_with("not applicable") {
+                continue;
+            }
+            t.push(vec![
+                case.case.as_str().into(),
+                name.into(),
+                measured.into(),
+                "-".into(),
+                match verdict {
+                    Some(true) => "pass",
+                    Some(false) => "FAIL",
+                    None => "n/a",
+                }
+                .into(),
+                note.into(),
+            ]);
+        }
+    }
+    t
 }
 
 /// The section.
@@ -42,33 +104,16 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
             3,
             format!("{} {} on {}", scored.code, scored.version, scene.name),
         ));
-        let mut lines: Vec<String> = scored.verdicts.iter().map(|v| v.describe()).collect();
-        let mut failed = scored.verdicts.iter().filter(|v| !v.pass).count();
-        for case in &scored.cases {
-            for (name, verdict, measured, note) in case.diagnostics.verdicts() {
-                if note.starts_with("not applicable") {
-                    continue;
-                }
-                let word = match verdict {
-                    Some(true) => "pass",
-                    Some(false) => "FAIL",
-                    None => "n/a",
-                };
-                failed += usize::from(verdict == Some(false));
-                lines.push(format!(
-                    "{word:7}  {} {name} = {measured}  [{note}]",
-                    case.case
-                ));
-            }
-        }
+        let checks = checks_table(scored);
+        let tally = tally(scored);
         page.push(Block::Paragraph(format!(
-            "`{}`: {} case file(s) of scene {}; {} check(s) (the scene's expectations and each case's \
+            "`{}`: {} case file(s) of scene {}; {} verdict(s) (the scene's expectations and each case's \
              diagnostics), {} failed; {} expectation(s) skipped (not measurable from files).",
             set.dir,
             scored.cases.len(),
             scene.name,
-            lines.len(),
-            failed,
+            tally.total(),
+            tally.failed,
             scored.skipped.len()
         )));
         let scale = scene
@@ -80,7 +125,11 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
             beside_courant_table(scored, outcome, scale),
             format!("other_codes/{stem}.csv"),
         );
-        page.push(Block::List(lines));
+        page.table_with_id(
+            checks,
+            format!("other_codes/{stem}.checks.csv"),
+            checks_anchor(&stem),
+        );
         for case in &scored.cases {
             if let Some((svg, caption)) = overlay(scene, outcome, &scored.code, case) {
                 page.figure(

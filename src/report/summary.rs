@@ -6,71 +6,11 @@
 //! convergence study's order table (rows with a band; `measured` rows are not verdicts).
 
 use super::document::{Block, Inline, Page, anchor};
+use super::other_codes::{OtherCode, checks_anchor, tally as other_tally};
+use super::tally::Tally;
 use crate::compare::convergence::ConvergenceResult;
 use crate::compare::outcome::SceneOutcome;
 use crate::scene::cases::Scene;
-
-/// Verdicts counted.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Tally {
-    /// Passed (findings not included).
-    pub passed: usize,
-    /// Disagreements with stability theory the scenes state, with their sources.
-    pub findings: usize,
-    /// Failed.
-    pub failed: usize,
-}
-
-impl Tally {
-    /// Every verdict.
-    pub fn total(self) -> usize {
-        self.passed + self.findings + self.failed
-    }
-
-    fn add(&mut self, other: Tally) {
-        self.passed += other.passed;
-        self.findings += other.findings;
-        self.failed += other.failed;
-    }
-
-    /// The verdicts of a scene.
-    pub fn of_scene(outcome: &SceneOutcome) -> Self {
-        let mut t = Tally::default();
-        for v in &outcome.verdicts {
-            match (v.pass, v.finding) {
-                (true, true) => t.findings += 1,
-                (true, false) => t.passed += 1,
-                (false, _) => t.failed += 1,
-            }
-        }
-        t
-    }
-
-    /// The order verdicts of a convergence study (norms with a band).
-    pub fn of_study(study: &ConvergenceResult) -> Self {
-        let mut t = Tally::default();
-        for v in study.verdicts() {
-            match v.pass {
-                Some(true) => t.passed += 1,
-                Some(false) => t.failed += 1,
-                None => {}
-            }
-        }
-        t
-    }
-}
-
-/// Every verdict of the scenes and studies, counted.
-pub fn tally(outcomes: &[(SceneOutcome, f64)], convergence: &[ConvergenceResult]) -> Tally {
-    let mut total = Tally::default();
-    outcomes
-        .iter()
-        .for_each(|(o, _)| total.add(Tally::of_scene(o)));
-    convergence
-        .iter()
-        .for_each(|c| total.add(Tally::of_study(c)));
-    total
-}
 
 /// The anchor of a scene's expectations table.
 pub fn expectations_anchor(scene: &str) -> String {
@@ -83,6 +23,7 @@ pub fn failures(
     scenes: &[Scene],
     outcomes: &[(SceneOutcome, f64)],
     convergence: &[ConvergenceResult],
+    others: &[OtherCode],
 ) -> Vec<String> {
     outcomes
         .iter()
@@ -106,6 +47,27 @@ pub fn failures(
                         v.expected
                     )
                 })
+        }))
+        .chain(others.iter().flat_map(|(set, index, scored)| {
+            let scene = &scenes[*index].name;
+            let code = &set.code;
+            scored
+                .verdicts
+                .iter()
+                .filter(|v| !v.pass)
+                .map(move |v| format!("other code {code} on {scene}: {}", v.describe()))
+                .chain(scored.cases.iter().flat_map(move |case| {
+                    case.diagnostics
+                        .verdicts()
+                        .into_iter()
+                        .filter(|(_, verdict, _, _)| *verdict == Some(false))
+                        .map(move |(name, _, measured, note)| {
+                            format!(
+                                "other code {code} on {scene}: {}/{name} = {measured} ({note})",
+                                case.case
+                            )
+                        })
+                }))
         }))
         .collect()
 }
@@ -132,6 +94,7 @@ pub fn head(
     scenes: &[Scene],
     outcomes: &[(SceneOutcome, f64)],
     convergence: &[ConvergenceResult],
+    others: &[OtherCode],
     failed: &[String],
 ) -> Page {
     let mut page = Page::default();
@@ -165,6 +128,19 @@ pub fn head(
             Inline::link("orders", format!("#{}", anchor(c.study.title))),
         ));
     }
+    for (set, index, scored) in others {
+        let tally = other_tally(scored);
+        total.add(tally);
+        let scene = &scenes[*index].name;
+        rows.push(row(
+            Inline::text(format!("other code: {} on {scene}", set.code)),
+            tally,
+            Inline::link(
+                "checks",
+                format!("#{}", checks_anchor(&format!("{}_{scene}", set.code))),
+            ),
+        ));
+    }
     let stability = if scenes.iter().any(|s| s.stability) || !convergence.is_empty() {
         Inline::link("stability table", "#stability-at-the-extremes")
     } else {
@@ -184,7 +160,8 @@ pub fn head(
     page.push(Block::Paragraph(format!(
         "{} verdicts: {} pass, {} findings (runs that disagree with stability theory as their scene \
          states, with its source), {} FAIL. Verdicts are the scenes' expectations, the stability verdict \
-         of every case of a stability scene, and the convergence-order bands.",
+         of every case of a stability scene, the convergence-order bands and the checks of other codes' \
+         committed results.",
         total.total(),
         total.passed,
         total.findings,
