@@ -252,7 +252,9 @@ pub(super) fn cases(
                         scheme
                             .validate()
                             .map_err(|e| fail("contact.beta_s", e.to_string()))?;
-                        courant * ContactCriticalStep::of(&problem, &scheme).applicable
+                        let critical = ContactCriticalStep::of(&problem, &scheme)
+                            .map_err(|e| fail("contact.courant_unit", e.to_string()))?;
+                        courant * critical.applicable
                     }
                 };
                 let steps_f = (end_time / dt).ceil();

@@ -64,7 +64,10 @@ pub(super) fn build(
                         courant_solver::MassOperator::new(&model, mass).map_err(|e| {
                             src.error(Some(stepping.span.clone()), stepping.key, e.to_string())
                         })?;
-                    Some(CriticalStep::of(&model, mass, &operator).exact)
+                    let critical = CriticalStep::of(&model, mass, &operator).map_err(|e| {
+                        src.error(Some(stepping.span.clone()), stepping.key, e.to_string())
+                    })?;
+                    Some(critical.exact)
                 }
                 _ => None,
             };
