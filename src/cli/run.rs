@@ -103,16 +103,19 @@ pub fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
                 None => "completed".to_string(),
                 Some(d) => format!("DIVERGED: {d}"),
             };
+            // Undefined figures (see the summary's documentation) print as `-`.
+            let duration = c.duration_error.map_or("-".into(), |d| format!("{d:.3e}"));
+            let energy = c.energy_ratio.map_or("-".into(), |e| format!("{e:.4}"));
             println!(
-                "  {:<32} {:>8.4} {:>8.4} {:>10.3e} {:>10.3e} {:>10.3e} {:>10.3e} {:>10.4}  {status}",
+                "  {:<32} {:>8.4} {:>8.4} {:>10.3e} {:>10.3e} {:>10} {:>10.3e} {:>10}  {status}",
                 c.case,
                 c.run.courant,
                 c.run.critical.critical_courant(),
                 c.plateau_deviation,
                 c.impulse_error,
-                c.duration_error,
+                duration,
                 c.force_l1_error,
-                c.energy_ratio
+                energy
             );
         }
     }

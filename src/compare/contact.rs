@@ -28,22 +28,32 @@ pub struct ContactResult {
     /// `|impulse - exact|/exact`.
     pub impulse_error: f64,
     /// `|duration - exact|/exact`, the duration between the first and last crossings of half the
-    /// smallest plateau force of the reference (NaN when the force never reached it).
-    pub duration_error: f64,
+    /// smallest plateau force of the reference; `None` when no recorded sample reached it
+    /// ([`DURATION_UNDEFINED`]).
+    pub duration_error: Option<f64>,
     /// `sum_k |F(t_k) - F_exact(t_k)| (t_k - t_{k-1}) / impulse_exact` over the recorded
     /// samples: the L1 norm in time of the force error, relative to the exact impulse (a
     /// discrete L1 error of the force history, seed Figs. 4-5 against 1D wave theory).
     pub force_l1_error: f64,
-    /// Energy of the real masses (kinetic + strain) at the end over the initial energy.
-    pub energy_ratio: f64,
+    /// Energy of the real masses (kinetic + strain) at the end over the initial energy; `None`
+    /// when it is undefined ([`ENERGY_RATIO_UNDEFINED`]).
+    pub energy_ratio: Option<f64>,
     /// Central difference's conserved energy of the real masses at the end,
     /// `1/2 v^{n-1/2} M v^{n+1/2} + 1/2 u^n K u^n` (Hughes 1987, §9.1), over the initial energy:
     /// once the bodies have separated, the energy the run left in them, without the step-scale
-    /// oscillation that inflates `energy_ratio` near the critical step.
-    pub energy_ratio_conserved: f64,
+    /// oscillation that inflates `energy_ratio` near the critical step. `None` as
+    /// `energy_ratio`.
+    pub energy_ratio_conserved: Option<f64>,
     /// Wall time of the run.
     pub wall_time: Duration,
 }
+
+/// Why a contact case has no `duration_error`.
+pub const DURATION_UNDEFINED: &str = "undefined: no recorded force sample reached half the smallest plateau (raise the sampling: history_every)";
+
+/// Why a contact case has no `energy_ratio`.
+pub const ENERGY_RATIO_UNDEFINED: &str =
+    "undefined: no energy at the first sample, or a non-finite energy at the last (a diverged run)";
 
 /// Compare a contact record with the analytic force of 1D wave theory.
 pub fn compare_contact(record: ContactRecord, reference: &ImpactForce) -> ContactResult {
@@ -90,8 +100,8 @@ pub fn compare_contact(record: ContactRecord, reference: &ImpactForce) -> Contac
         .map(|s| s.time)
         .collect();
     let duration_error = match (above.first(), above.last()) {
-        (Some(a), Some(b)) => ((b - a) - reference.duration()).abs() / reference.duration(),
-        _ => f64::NAN,
+        (Some(a), Some(b)) => Some(((b - a) - reference.duration()).abs() / reference.duration()),
+        _ => None,
     };
     let force_l1_error = run
         .history
@@ -102,9 +112,12 @@ pub fn compare_contact(record: ContactRecord, reference: &ImpactForce) -> Contac
         / reference.impulse();
     let energy = |s: &ContactSample| s.kinetic + s.strain;
     let conserved = |s: &ContactSample| s.kinetic_staggered + s.strain;
+    let ratio = |end: f64, start: f64| Some(end / start).filter(|r| r.is_finite());
     let (energy_ratio, energy_ratio_conserved) = match (run.history.first(), run.history.last()) {
-        (Some(a), Some(b)) if energy(a) > 0.0 => (energy(b) / energy(a), conserved(b) / energy(a)),
-        _ => (f64::NAN, f64::NAN),
+        (Some(a), Some(b)) if energy(a) > 0.0 => {
+            (ratio(energy(b), energy(a)), ratio(conserved(b), energy(a)))
+        }
+        _ => (None, None),
     };
     ContactResult {
         case,

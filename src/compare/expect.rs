@@ -1,6 +1,7 @@
 //! Checking a scene's expectations against its compared results.
 
 use super::case::CaseResult;
+use super::contact::{DURATION_UNDEFINED, ENERGY_RATIO_UNDEFINED};
 use super::norms::ErrorNorms;
 use super::outcome::SceneOutcome;
 use super::verdict::{Measured, Verdict};
@@ -55,9 +56,15 @@ pub fn evaluate(scene: &Scene, outcome: &SceneOutcome) -> Vec<Verdict> {
                     let value = match expectation.metric {
                         Metric::PlateauDeviation => Measured::Value(r.plateau_deviation),
                         Metric::ImpulseError => Measured::Value(r.impulse_error),
-                        Metric::DurationError => Measured::Value(r.duration_error),
+                        Metric::DurationError => r.duration_error.map_or(
+                            Measured::Missing(DURATION_UNDEFINED.into()),
+                            Measured::Value,
+                        ),
                         Metric::ForceL1Error => Measured::Value(r.force_l1_error),
-                        Metric::EnergyRatio => Measured::Value(r.energy_ratio),
+                        Metric::EnergyRatio => r.energy_ratio.map_or(
+                            Measured::Missing(ENERGY_RATIO_UNDEFINED.into()),
+                            Measured::Value,
+                        ),
                         _ => Measured::Flag(r.diverged.is_some()),
                     };
                     (r.case.clone(), value)
@@ -97,8 +104,8 @@ pub fn evaluate(scene: &Scene, outcome: &SceneOutcome) -> Vec<Verdict> {
 }
 
 fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
-    let norm_of = |pick: fn(&ErrorNorms) -> f64| -> Measured {
-        let selected: Vec<f64> = result
+    let norm_of = |pick: fn(&ErrorNorms) -> Option<f64>| -> Measured {
+        let selected: Vec<Option<f64>> = result
             .profiles
             .iter()
             .filter(|p| {
@@ -118,13 +125,20 @@ fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
         if selected.len() < expected {
             return Measured::Missing("the run ended before every profile time".into());
         }
-        Measured::Value(selected.into_iter().fold(f64::NEG_INFINITY, f64::max))
+        let defined: Vec<f64> = selected.into_iter().flatten().collect();
+        if defined.is_empty() {
+            return Measured::Missing(
+                "undefined: the exact profile has no variation (one element, or no front yet)"
+                    .into(),
+            );
+        }
+        Measured::Value(defined.into_iter().fold(f64::NEG_INFINITY, f64::max))
     };
     match expectation.metric {
-        Metric::L1 => norm_of(|n| n.l1),
-        Metric::L2 => norm_of(|n| n.l2),
-        Metric::Linf => norm_of(|n| n.linf),
-        Metric::Overshoot => norm_of(|n| n.overshoot),
+        Metric::L1 => norm_of(|n| Some(n.l1)),
+        Metric::L2 => norm_of(|n| Some(n.l2)),
+        Metric::Linf => norm_of(|n| Some(n.linf)),
+        Metric::Overshoot => norm_of(|n| Some(n.overshoot)),
         Metric::TvRatio => norm_of(|n| n.tv_ratio),
         Metric::EnergyLost => Measured::Value(result.energy_lost()),
         Metric::EnergyBalance => Measured::Value(result.energy.relative_balance_error()),

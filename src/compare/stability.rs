@@ -178,11 +178,11 @@ impl StabilityRow {
             // A completed run: CD's conserved energy left in the bodies; a diverged one: the
             // guard's own measure (kinetic + strain) where it stopped the run, since the
             // staggered energy is not positive above the critical step.
-            energy_ratio: Some(if r.diverged.is_none() {
+            energy_ratio: if r.diverged.is_none() {
                 r.energy_ratio_conserved
             } else {
                 r.energy_ratio
-            }),
+            },
         }
     }
 

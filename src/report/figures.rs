@@ -151,10 +151,9 @@ fn force_figures(
     if outcome.contact.is_empty() {
         return;
     }
-    let (shown, unstable): (Vec<_>, Vec<_>) = outcome
-        .contact
-        .iter()
-        .partition(|c| c.diverged.is_none() && c.energy_ratio_conserved <= ENERGY_BAND);
+    let (shown, unstable): (Vec<_>, Vec<_>) = outcome.contact.iter().partition(|c| {
+        c.diverged.is_none() && c.energy_ratio_conserved.is_some_and(|e| e <= ENERGY_BAND)
+    });
     let keyed = shown
         .into_iter()
         .map(|c| (c.run.scheme.label().to_string(), c))
