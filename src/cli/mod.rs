@@ -26,6 +26,12 @@ pub fn list() -> ExitCode {
 }
 
 pub fn report(out: &std::path::Path) -> ExitCode {
+    // Refused before minutes of work: only an absent, empty or courant-written directory is
+    // replaced.
+    if let Err(e) = crate::io::manifest::check_replaceable(out) {
+        eprintln!("error: {e}");
+        return ExitCode::from(2);
+    }
     let generated = builtin::all()
         .map_err(|e| e.to_string())
         .and_then(|scenes| {

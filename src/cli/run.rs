@@ -4,6 +4,7 @@ use crate::compare::case::CaseResult;
 use crate::compare::files::scene_files;
 use crate::compare::outcome::SceneOutcome;
 use crate::io::atomic::write_dir_atomically;
+use crate::io::manifest::check_replaceable;
 use crate::pipeline::evaluate_scene;
 use crate::results::case::Status;
 use crate::scene::builtin::{BUILTIN_SCENES, resolve};
@@ -28,26 +29,47 @@ pub fn run(args: &[String], out: &std::path::Path) -> ExitCode {
             }
         }
     }
+    let dirs: Vec<_> = scenes.iter().map(|s| out.join(&s.name)).collect();
+    for dir in &dirs {
+        if let Err(e) = check_replaceable(dir) {
+            eprintln!("error: {e}");
+            bad = true;
+        }
+    }
     if bad {
         return ExitCode::from(2);
     }
+    // Run everything before writing anything: a scene that fails to run writes nothing, not
+    // even the scenes before it.
     let mut failed = false;
+    let mut written = Vec::with_capacity(scenes.len());
     for scene in &scenes {
         let outcome = match evaluate_scene(scene) {
             Ok(r) => r,
             Err(e) => {
-                eprintln!("error: {}: {e}", scene.name);
+                eprintln!("error: {}: {e} (nothing was written)", scene.name);
                 return ExitCode::from(2);
             }
         };
         print_scene(scene, &outcome);
         failed |= !outcome.passed();
-        let dir = out.join(&scene.name);
-        if let Err(e) = write_dir_atomically(&dir, &scene_files(&outcome)) {
-            eprintln!("error: cannot write {}: {e}", dir.display());
+        written.push(scene_files(&outcome));
+    }
+    for (i, (dir, files)) in dirs.iter().zip(&written).enumerate() {
+        if let Err(e) = write_dir_atomically(dir, files) {
+            let before: Vec<String> = dirs[..i].iter().map(|d| d.display().to_string()).collect();
+            eprintln!(
+                "error: cannot write {}: {e}{}",
+                dir.display(),
+                if before.is_empty() {
+                    " (nothing was written)".to_string()
+                } else {
+                    format!(" (written before it: {})", before.join(", "))
+                }
+            );
             return ExitCode::from(2);
         }
-        println!("  -> {}\n", dir.display());
+        println!("  -> {}", dir.display());
     }
     if failed {
         ExitCode::from(1)

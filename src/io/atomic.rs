@@ -10,6 +10,10 @@
 //!   `.NAME.old-PID`, renaming the staging directory into place and removing the old one. A run
 //!   killed between the two renames leaves no `NAME`, only `.NAME.old-PID`.
 //!
+//! Only a directory that is absent, empty or a courant output (its [`MANIFEST`] lists everything
+//! in it) is replaced; anything else is refused before anything is touched
+//! ([`super::manifest`]). The manifest is written with the files.
+//!
 //! Every write first recovers from interrupted runs ([`recover_interrupted`]): if `NAME` is
 //! missing and a `.NAME.old-PID` of a process that is not running exists, it is renamed back to
 //! `NAME`; the `.NAME.partial-PID` and `.NAME.old-PID` of processes that are no longer running
@@ -19,34 +23,56 @@
 //! next write to put back, and its leftovers go at the next write. Writers of the same
 //! directory must not run concurrently.
 
+use super::manifest::{MANIFEST, Refusal, check_replaceable, manifest_text};
 use std::io;
 use std::path::{Path, PathBuf};
+use thiserror::Error;
+
+/// Why a directory was not written.
+#[derive(Debug, Error)]
+pub enum WriteError {
+    /// The directory is not one courant may replace; nothing was touched.
+    #[error(transparent)]
+    Refused(#[from] Refusal),
+    /// An I/O error of recovery, writing or renaming; the previous contents are kept.
+    #[error(transparent)]
+    Io(#[from] io::Error),
+}
 
 /// Replace `dir` with a directory holding exactly `files` (relative path, contents; parent
-/// directories are created), after recovering from interrupted earlier writes (module docs).
+/// directories are created) and its [`MANIFEST`], after recovering from interrupted earlier
+/// writes (module docs).
 ///
 /// # Errors
-/// Any I/O error of recovery, writing or renaming; `dir` then still holds the previous
-/// contents (or is absent if it was before).
-pub fn write_dir_atomically(dir: &Path, files: &[(String, String)]) -> io::Result<()> {
+/// [`WriteError::Refused`] when `dir` is not absent, empty or a courant output (nothing is
+/// touched); any I/O error of recovery, writing or renaming (`dir` then still holds the
+/// previous contents, or is absent if it was before).
+pub fn write_dir_atomically(dir: &Path, files: &[(String, String)]) -> Result<(), WriteError> {
     let (parent, name) = parent_and_name(dir);
+    check_replaceable(dir)?;
     std::fs::create_dir_all(&parent)?;
     recover_interrupted(dir)?;
+    // Recovery may have put a set-aside courant output back: check what is there now.
+    check_replaceable(dir)?;
     let pid = std::process::id();
     let staging = parent.join(format!(".{name}.partial-{pid}"));
     let retired = parent.join(format!(".{name}.old-{pid}"));
     let _ = std::fs::remove_dir_all(&staging);
     std::fs::create_dir_all(&staging)?;
-    let written = files.iter().try_for_each(|(file, text)| {
-        let path = staging.join(file);
-        if let Some(dir) = path.parent() {
-            std::fs::create_dir_all(dir)?;
-        }
-        std::fs::write(path, text)
-    });
+    let manifest = manifest_text(files.iter().map(|(f, _)| f.as_str()));
+    let written = files
+        .iter()
+        .chain(std::iter::once(&(MANIFEST.to_string(), manifest)))
+        .try_for_each(|(file, text)| {
+            let path = staging.join(file);
+            if let Some(dir) = path.parent() {
+                std::fs::create_dir_all(dir)?;
+            }
+            std::fs::write(path, text)
+        });
     if let Err(e) = written.and_then(|()| replace(&staging, dir, &retired)) {
         let _ = std::fs::remove_dir_all(&staging);
-        return Err(e);
+        return Err(e.into());
     }
     Ok(())
 }
@@ -230,9 +256,11 @@ mod tests {
         base
     }
 
+    /// A courant output holding `index.md` (with its manifest).
     fn make(dir: &Path, marker: &str) {
         std::fs::create_dir_all(dir).unwrap();
         std::fs::write(dir.join("index.md"), marker).unwrap();
+        std::fs::write(dir.join(MANIFEST), manifest_text(["index.md"])).unwrap();
     }
 
     fn entries(base: &Path) -> Vec<String> {
