@@ -119,7 +119,7 @@ pub(super) fn build(
                 mass_name(mass)
             };
             cases.push(DispersionCase {
-                name: format!("{prefix}-co{co}"),
+                name: format!("{prefix}-co{}", super::names::number(co)),
                 mass,
                 fourth_order,
                 courant: co,

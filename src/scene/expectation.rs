@@ -187,6 +187,15 @@ pub(super) fn expectation(
 ) -> Result<Expectation, SceneError> {
     let raw = spanned.get_ref();
     let fail = |msg: String| src.error(Some(spanned.span()), "expect", msg);
+    for (name, value) in [("min", raw.min), ("max", raw.max), ("at", raw.at)] {
+        if let Some(v) = value.filter(|v| !v.is_finite()) {
+            return Err(src.error(
+                Some(src.value_span(spanned.span(), name)),
+                &format!("expect.{name}"),
+                format!("{name} = {v} is not a finite number; a bound (or time) must be one"),
+            ));
+        }
+    }
     let metric = Metric::parse(&raw.metric).ok_or_else(|| {
         fail(format!(
             "metric = \"{}\" is not one of l1, l2, linf, overshoot, energy_balance, energy_lost, tv_ratio, diverged, closed_form_deviation, dispersion_deviation, phase_error_order, plateau_deviation, impulse_error, duration_error, force_l1_error, energy_ratio, courant_deviation",
