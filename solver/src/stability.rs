@@ -370,6 +370,19 @@ mod tests {
         assert!((cs.exact / cs.element - 1.0).abs() < 1e-14);
     }
 
+    /// Every bisection is bounded: a bound that never covers the spectrum, or a non-finite one,
+    /// is a typed error after at most `BOUND_DOUBLINGS` doublings, never a loop.
+    #[test]
+    fn bisections_stop_with_an_error_at_their_bounds() {
+        let e = lift_above_spectrum(1.0, |_| false).unwrap_err();
+        assert_eq!(e.iterations, BOUND_DOUBLINGS);
+        assert!(bisect_top(f64::INFINITY, 0.0, |_| true).is_err());
+        assert!(largest_eigenvalue(&[1.0], &[], f64::NAN).is_err());
+        // A well-posed one closes to adjacent doubles: [0, 8] on "x > 3".
+        let top = bisect_top(8.0, 0.0, |x| x > 3.0).unwrap();
+        assert!((top - 3.0).abs() <= 4.0 * f64::EPSILON * 3.0, "{top}");
+    }
+
     #[test]
     fn graded_bar_is_controlled_by_its_stiff_end() {
         let cs = CriticalStep::lumped(&crate::fixtures::graded_seed_bar(100).unwrap()).unwrap();

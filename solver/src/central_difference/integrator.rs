@@ -81,7 +81,7 @@ impl CentralDifference {
     /// uniform bar, where `dt = dt_crit`, is accepted after the plan's rounding).
     pub fn check_stability(&self, model: &Model) -> Result<CriticalStep, RunError> {
         let operator = MassOperator::new(model, self.mass)?;
-        Ok(self.check_stability_with(model, &operator)?)
+        self.check_stability_with(model, &operator)
     }
 
     /// The stability limit of this integrator's scheme on `model`, given the critical steps of

@@ -396,6 +396,18 @@ mod tests {
         }
     }
 
+    /// A bar of area 1e300 made the doubling of the bisection's bound loop forever (its
+    /// off-diagonal squared overflows): now a typed error within the iteration bounds.
+    #[test]
+    fn an_overflowing_pencil_is_an_error_not_a_hang() {
+        let bar = Bar::homogeneous(Mesh::uniform(1.0, 10).unwrap(), 1.0, 1.0, 1e300).unwrap();
+        let problem = ContactProblem::wall_impact(bar, End::Right, 1.0, 0.0).unwrap();
+        let started = std::time::Instant::now();
+        let e = ContactCriticalStep::of(&problem, &ContactScheme::LagrangeMultiplier).unwrap_err();
+        assert!(started.elapsed().as_secs_f64() < 1.0);
+        assert!(e.to_string().contains("critical-step bisection"), "{e}");
+    }
+
     #[test]
     fn contact_free_free_free_bar_has_courant_one() {
         let c = ContactCriticalStep::of(&wall(50), &ContactScheme::LagrangeMultiplier).unwrap();
