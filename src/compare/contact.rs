@@ -60,10 +60,33 @@ pub fn compare_contact(record: ContactRecord, reference: &ImpactForce) -> Contac
     let ContactRecord {
         case,
         penalty,
-        run,
+        mut run,
         diverged,
         wall_time,
     } = record;
+    if diverged.is_some() {
+        // A diverged run's record ends where its values stop being numbers: the guard stops it
+        // at the step its energy overflows, and that step's sample may hold infinities.
+        let finite = |s: &ContactSample| {
+            [
+                s.time,
+                s.force,
+                s.penalty_force,
+                s.gap,
+                s.impulse,
+                s.kinetic,
+                s.kinetic_staggered,
+                s.strain,
+                s.penalty_spring,
+                s.penalty_kinetic,
+                s.total,
+            ]
+            .iter()
+            .all(|x| x.is_finite())
+        };
+        let end = run.history.iter().position(|s| !finite(s));
+        run.history.truncate(end.unwrap_or(run.history.len()));
+    }
     let exact: Vec<f64> = run
         .history
         .iter()

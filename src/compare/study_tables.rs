@@ -167,6 +167,15 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
             None => "completed".to_string(),
             Some(d) => format!("diverged at step {}", d.step),
         };
+        // A diverged run's figures may have overflowed: those are empty cells (the status says
+        // where it diverged). A completed run's figures are finite.
+        let figure = |x: f64| -> Cell {
+            if r.diverged.is_some() && !x.is_finite() {
+                Cell::Empty
+            } else {
+                Cell::Num(x)
+            }
+        };
         table.push(vec![
             r.case.as_str().into(),
             r.run.scheme.label().into(),
@@ -178,13 +187,13 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
             r.run.dt.into(),
             r.run.steps.into(),
             r.plateau.into(),
-            r.plateau_deviation.into(),
-            r.impulse_error.into(),
-            r.duration_error.into(),
-            r.force_l1_error.into(),
+            figure(r.plateau_deviation),
+            figure(r.impulse_error),
+            r.duration_error.map_or(Cell::Empty, figure),
+            figure(r.force_l1_error),
             r.energy_ratio.into(),
             r.energy_ratio_conserved.into(),
-            r.run.max_force.into(),
+            figure(r.run.max_force),
             status.into(),
             r.wall_time.as_secs_f64().into(),
         ]);

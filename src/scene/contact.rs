@@ -335,6 +335,13 @@ pub(super) fn cases(
                         format!("case {case_name}: needs {steps_f:.2e} steps; at most 1e8"),
                     ));
                 }
+                magnitude::courant(
+                    src,
+                    Some(study.courant.span()),
+                    "contact.courant",
+                    &case_name,
+                    dt / problem.stiffest_transit(),
+                )?;
                 let integrator = ContactIntegrator {
                     dt,
                     scheme,

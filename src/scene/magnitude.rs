@@ -62,6 +62,30 @@ pub fn inputs(
         .try_for_each(|v| input(src, span.clone(), key, what, v))
 }
 
+/// A case's Courant number `Co = c dt/h` (stiffest element) with its square within the bounds:
+/// `Co^2` scales every update (`dt^2 K/M`), so a step of Co = 5e49 (allowed unstable) overflowed
+/// in its first step. Else the error at `span`/`key` naming the case.
+pub fn courant(
+    src: &Source,
+    span: Option<Range<usize>>,
+    key: &str,
+    case: &str,
+    co: f64,
+) -> Result<(), SceneError> {
+    if within(co * co) {
+        Ok(())
+    } else {
+        Err(src.error(
+            span,
+            key,
+            format!(
+                "case {case}: Courant number {co:e} (c dt/h of the stiffest element): its square scales every step; {}",
+                rule()
+            ),
+        ))
+    }
+}
+
 /// A scale of an assembled model, for the caller to say which input it blames.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Scale {

@@ -120,6 +120,15 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             .map(|c| (c.span(), "integrator.courant"))
             .or(i.dt.as_ref().map(|d| (d.span(), "integrator.dt")))
     });
+    for case in &cases {
+        super::magnitude::courant(
+            src,
+            stepping.as_ref().map(|s| s.0.clone()),
+            stepping.as_ref().map_or("integrator", |s| s.1),
+            &case.name,
+            case.integrator.dt / case.critical.element_transit,
+        )?;
+    }
     let names_at: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
     names::check(
         src,
