@@ -1,9 +1,10 @@
-//! `courant run`: validate every scene, then run each, print its results and write its files.
+//! `courant run`: validate every scene, then run each and print its results, and write the
+//! files of all of them, or of none.
 
 use crate::compare::case::CaseResult;
 use crate::compare::files::scene_files;
 use crate::compare::outcome::SceneOutcome;
-use crate::io::atomic::write_dir_atomically;
+use crate::io::atomic::stage_dir;
 use crate::io::manifest::check_replaceable;
 use crate::pipeline::evaluate_scene;
 use crate::results::case::Status;
@@ -30,8 +31,15 @@ pub fn run(args: &[String], out: &std::path::Path) -> ExitCode {
         }
     }
     let dirs: Vec<_> = scenes.iter().map(|s| out.join(&s.name)).collect();
-    for dir in &dirs {
-        if let Err(e) = check_replaceable(dir) {
+    for (i, dir) in dirs.iter().enumerate() {
+        if dirs[..i].contains(dir) {
+            eprintln!(
+                "error: {}: two scenes would write it (scene {} given twice)",
+                dir.display(),
+                scenes[i].name
+            );
+            bad = true;
+        } else if let Err(e) = check_replaceable(dir) {
             eprintln!("error: {e}");
             bad = true;
         }
@@ -39,37 +47,58 @@ pub fn run(args: &[String], out: &std::path::Path) -> ExitCode {
     if bad {
         return ExitCode::from(2);
     }
-    // Run everything before writing anything: a scene that fails to run writes nothing, not
-    // even the scenes before it.
+    // Run every scene before any is put in place: each is staged to a hidden sibling as it
+    // completes (its files leave memory), and only when all are staged are they committed. A
+    // scene that fails drops the staged ones: nothing is written.
+    let out_existed = out.exists();
+    let nothing_written = || {
+        if !out_existed {
+            let _ = std::fs::remove_dir(out);
+        }
+    };
     let mut failed = false;
-    let mut written = Vec::with_capacity(scenes.len());
-    for scene in &scenes {
+    let mut staged = Vec::with_capacity(scenes.len());
+    for (scene, dir) in scenes.iter().zip(&dirs) {
         let outcome = match evaluate_scene(scene) {
             Ok(r) => r,
             Err(e) => {
                 eprintln!("error: {}: {e} (nothing was written)", scene.name);
+                drop(staged);
+                nothing_written();
                 return ExitCode::from(2);
             }
         };
         print_scene(scene, &outcome);
         failed |= !outcome.passed();
-        written.push(scene_files(&outcome));
+        match stage_dir(dir, &scene_files(&outcome)) {
+            Ok(s) => staged.push(s),
+            Err(e) => {
+                eprintln!(
+                    "error: cannot write {}: {e} (nothing was written)",
+                    dir.display()
+                );
+                drop(staged);
+                nothing_written();
+                return ExitCode::from(2);
+            }
+        }
     }
-    for (i, (dir, files)) in dirs.iter().zip(&written).enumerate() {
-        if let Err(e) = write_dir_atomically(dir, files) {
-            let before: Vec<String> = dirs[..i].iter().map(|d| d.display().to_string()).collect();
+    let mut written: Vec<String> = Vec::with_capacity(staged.len());
+    for s in staged {
+        let dir = s.dir().display().to_string();
+        if let Err(e) = s.commit() {
             eprintln!(
-                "error: cannot write {}: {e}{}",
-                dir.display(),
-                if before.is_empty() {
+                "error: cannot write {dir}: {e}{}",
+                if written.is_empty() {
                     " (nothing was written)".to_string()
                 } else {
-                    format!(" (written before it: {})", before.join(", "))
+                    format!(" (written before it: {})", written.join(", "))
                 }
             );
             return ExitCode::from(2);
         }
-        println!("  -> {}", dir.display());
+        println!("  -> {dir}");
+        written.push(dir);
     }
     if failed {
         ExitCode::from(1)
