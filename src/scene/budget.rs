@@ -6,7 +6,7 @@
 //!
 //! | limit | value | why |
 //! |---|---|---|
-//! | elements of one bar | [`MAX_ELEMENTS`] | a model of 10^6 elements takes ~150 MB and 0.5 s to validate (measured, lumped) |
+//! | elements of one bar | [`MAX_ELEMENTS`] | a lumped model of 5x10^5 elements takes ~75 MB and 0.25 s to validate (measured); more could not run one transit within the node-step cap |
 //! | cases of a scene | [`MAX_CASES`] | each case holds its model and writes its files |
 //! | elements validated | [`MAX_VALIDATED_ELEMENTS`] | summed over the cases (a matrix mass counts [`MATRIX_MASS_WEIGHT`] times, a contact case [`CONTACT_WEIGHT`] times): each case's exact critical step is a Sturm bisection over its mesh |
 //! | node-steps | [`MAX_NODE_STEPS`] | summed over the cases: about 4 minutes at 2.5 ns per node-step |
@@ -28,13 +28,14 @@ use std::ops::Range;
 pub const MAX_NODE_STEPS: f64 = 1e11;
 /// Most elements of one bar (a mesh of a time-stepping, spectrum or dispersion scene, a contact
 /// striker or target).
-pub const MAX_ELEMENTS: i64 = 1_000_000;
+pub const MAX_ELEMENTS: i64 = 500_000;
 /// Most cases of one scene.
 pub const MAX_CASES: usize = 10_000;
 /// Most elements validated per scene, summed over its cases with their weights: validation of
-/// 10^6 lumped elements took 0.47 s here (release build), of 10^6 consistent-mass elements
-/// 2.9 s.
-pub const MAX_VALIDATED_ELEMENTS: f64 = 1e6;
+/// 10^6 lumped elements took 0.47 to 0.9 s here (release build, idle to loaded machine), of 10^6
+/// consistent-mass elements 2.9 s; at this limit a scene validates in about a quarter of a
+/// second.
+pub const MAX_VALIDATED_ELEMENTS: f64 = 5e5;
 /// Validation weight of a case with a consistent, averaged or reciprocal mass: its exact
 /// critical step is a banded Sturm bisection, measured 6 times the lumped one.
 pub const MATRIX_MASS_WEIGHT: f64 = 6.0;

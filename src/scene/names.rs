@@ -94,7 +94,10 @@ mod tests {
             "a/b".into(),
             String::new(),
         ] {
-            assert!(check(&src, None, "k", &[bad.clone()]).is_err(), "{bad}");
+            assert!(
+                check(&src, None, "k", std::slice::from_ref(&bad)).is_err(),
+                "{bad}"
+            );
         }
     }
 }

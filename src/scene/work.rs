@@ -48,6 +48,13 @@ impl Work {
         for case in &scene.dispersion {
             work.add_dispersion(case);
         }
+        for case in &scene.spectra {
+            // A dense eigen-solution per mass kind, ~n^3 flops, counted one node-step per flop
+            // (an over-count: a node-step is ~2.5 ns).
+            let n = case.model.bar().node_count() as f64;
+            let values = case.masses.len() as f64 * n * 4.0;
+            work.add(&case.name, case.masses.len() as f64 * n.powi(3), values);
+        }
         for sweep in &scene.contact_sweeps {
             work.add_sweep(sweep);
         }
