@@ -2,25 +2,72 @@
 
 use super::budget;
 use super::cases::Scene;
-use super::error::{SceneError, Source};
-use super::expectation::{Study, expectation};
+use super::error::{SceneError, Source, collect_all};
+use super::expectation::{ExpectContext, Finding, Study, expectation, finding};
 use super::geometry::Geometry;
-use super::schema::{RawContactScene, RawHeader, RawScene};
+use super::schema::{RawContactScene, RawFinding, RawHeader, RawScene};
 use super::work::Work;
 use super::{contact, dispersion, names, spectrum, time_stepping};
+use courant_solver::MassKind;
+use toml::Spanned;
+
+/// Unknown keys reported in one pass, at most.
+const MAX_UNKNOWN_KEYS: usize = 20;
+
+/// `text` with line `line` (1-based) replaced by spaces: positions elsewhere stay the same.
+fn blank_line(text: &str, line: usize) -> String {
+    text.split_inclusive('\n')
+        .enumerate()
+        .map(|(i, l)| {
+            if i + 1 == line {
+                l.chars().map(|c| if c == '\n' { c } else { ' ' }).collect()
+            } else {
+                l.to_string()
+            }
+        })
+        .collect()
+}
+
+/// One reading of a scene: its first error.
+fn parse_once(name: &str, file: &str, text: &str) -> Result<Scene, SceneError> {
+    let src = Source { file, text };
+    let table: toml::Table = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
+    if table.contains_key("contact") || table.contains_key("contact_stability") {
+        let raw: RawContactScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
+        return build_contact(name, &src, raw);
+    }
+    let raw: RawScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
+    build(name, &src, raw)
+}
 
 impl Scene {
     /// Parse and validate a scene. `file` is the path or name shown in errors; `name` becomes the
     /// output directory.
+    ///
+    /// Every unknown key of the file is reported in one pass (each is set aside and the file read
+    /// again), with the first other error found after them; invalid `[[expect]]` tables are all
+    /// reported too.
     pub fn parse(name: &str, file: &str, text: &str) -> Result<Scene, SceneError> {
-        let src = Source { file, text };
-        let table: toml::Table = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
-        if table.contains_key("contact") || table.contains_key("contact_stability") {
-            let raw: RawContactScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
-            return build_contact(name, &src, raw);
+        let first = match parse_once(name, file, text) {
+            Ok(scene) => return Ok(scene),
+            Err(e) => e,
+        };
+        let mut errors = vec![first];
+        let mut rest = text.to_string();
+        // Bounded: each round blanks one line of the file.
+        for _ in 0..MAX_UNKNOWN_KEYS {
+            let last = errors.last().expect("one error at least");
+            if !last.message.starts_with("unknown field") || last.line == 0 {
+                break;
+            }
+            rest = blank_line(&rest, last.line);
+            match parse_once(name, file, &rest) {
+                Ok(_) => break,
+                Err(e) if e.line == last.line && e.message == last.message => break,
+                Err(e) => errors.push(e),
+            }
         }
-        let raw: RawScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
-        build(name, &src, raw)
+        Err(SceneError::all(errors).expect("one error at least"))
     }
 
     /// Read a scene from a file; its name is the file stem.
@@ -32,6 +79,7 @@ impl Scene {
             column: 0,
             key: String::new(),
             message,
+            also: Vec::new(),
         };
         // Never open a FIFO or a device: reading one may block forever or never end.
         if let Some(kind) = crate::io::file_kind::non_regular_kind(path) {
@@ -90,11 +138,16 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             return Err(src.error(None, kind, format!("case {dup} appears twice")));
         }
         names::check(src, None, kind, &names)?;
-        let expectations = raw
-            .expectations
-            .iter()
-            .map(|e| expectation(src, e, &names, false, study, &[], 1.0))
-            .collect::<Result<Vec<_>, _>>()?;
+        let masses: Vec<MassKind> = spectra.first().map_or(Vec::new(), |c| c.masses.clone());
+        let ctx = ExpectContext {
+            names: &names,
+            has_reference: false,
+            study,
+            profile_times: &[],
+            unit: 1.0,
+            masses: &masses,
+        };
+        let expectations = collect_all(raw.expectations.iter().map(|e| expectation(src, e, &ctx)))?;
         let elements = (Some(raw.mesh.elements.span()), "mesh.elements");
         return within_budget(
             src,
@@ -109,6 +162,8 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
                 contact: Vec::new(),
                 contact_sweeps: Vec::new(),
                 expectations,
+                stability: raw.scene.stability,
+                findings: findings(src, &raw.findings, &names, raw.scene.stability)?,
             },
         );
     }
@@ -120,22 +175,22 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             .map(|c| (c.span(), "integrator.courant"))
             .or(i.dt.as_ref().map(|d| (d.span(), "integrator.dt")))
     });
+    let (stepping_span, stepping_key) = (
+        stepping.as_ref().map(|s| s.0.clone()),
+        stepping.as_ref().map_or("integrator", |s| s.1),
+    );
     for case in &cases {
         super::magnitude::courant(
             src,
-            stepping.as_ref().map(|s| s.0.clone()),
-            stepping.as_ref().map_or("integrator", |s| s.1),
+            stepping_span.clone(),
+            stepping_key,
             &case.name,
             case.integrator.dt / case.critical.element_transit,
         )?;
     }
-    let names_at: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
-    names::check(
-        src,
-        stepping.as_ref().map(|s| s.0.clone()),
-        stepping.as_ref().map_or("integrator", |s| s.1),
-        &names_at,
-    )?;
+    let names: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
+    names::check(src, stepping_span, stepping_key, &names)?;
+    let findings = findings(src, &raw.findings, &names, raw.scene.stability)?;
     let output = &raw.output;
     let steps_blame = (Some(raw.mesh.elements.span()), "mesh.elements");
     let output_blame = match (
@@ -165,6 +220,8 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             contact: Vec::new(),
             contact_sweeps: Vec::new(),
             expectations,
+            stability: raw.scene.stability,
+            findings,
         },
     )
 }
@@ -223,11 +280,15 @@ fn build_contact(name: &str, src: &Source, raw: RawContactScene) -> Result<Scene
         Some(h) => (Some(h.span()), "contact.history_every"),
         None => steps_blame.clone(),
     };
-    let expectations = raw
-        .expectations
-        .iter()
-        .map(|e| expectation(src, e, &names, false, study, &[], 1.0))
-        .collect::<Result<Vec<_>, _>>()?;
+    let ctx = ExpectContext {
+        names: &names,
+        has_reference: false,
+        study,
+        profile_times: &[],
+        unit: 1.0,
+        masses: &[],
+    };
+    let expectations = collect_all(raw.expectations.iter().map(|e| expectation(src, e, &ctx)))?;
     within_budget(
         src,
         [&steps_blame, &output_blame, &steps_blame],
@@ -241,6 +302,18 @@ fn build_contact(name: &str, src: &Source, raw: RawContactScene) -> Result<Scene
             contact: cases,
             contact_sweeps: sweeps,
             expectations,
+            stability: raw.scene.stability,
+            findings: findings(src, &raw.findings, &names, raw.scene.stability)?,
         },
     )
+}
+
+/// The scene's `[[finding]]` tables.
+fn findings(
+    src: &Source,
+    raw: &[Spanned<RawFinding>],
+    names: &[String],
+    stability: bool,
+) -> Result<Vec<Finding>, SceneError> {
+    collect_all(raw.iter().map(|f| finding(src, f, names, stability)))
 }
