@@ -138,7 +138,7 @@ pub struct ContactResult {
 }
 
 /// Why a contact case has no `duration_error`.
-pub const DURATION_UNDEFINED: &str = "undefined: no recorded force sample reached half the smallest plateau (raise the sampling: history_every)";
+pub const DURATION_UNDEFINED: &str = "undefined: no recorded force sample reached half the smallest plateau (the contact opened before, or the sampling, history_every, missed it)";
 
 /// Why a contact case has no `energy_ratio`.
 pub const ENERGY_RATIO_UNDEFINED: &str =

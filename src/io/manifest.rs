@@ -125,7 +125,10 @@ pub fn check_replaceable(dir: &Path) -> Result<(), Refusal> {
     };
     let (allowed, why) = match &manifest {
         Some(files) => (files.clone(), "its manifest does not list it"),
-        None => (BTreeSet::new(), "the directory has no manifest"),
+        None => (
+            BTreeSet::new(),
+            "the directory has no manifest; an output of a courant older than the manifest has none either: remove it by hand once",
+        ),
     };
     // Directories that hold listed files are courant's too.
     let parents: BTreeSet<String> = allowed
