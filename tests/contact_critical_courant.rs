@@ -81,7 +81,7 @@ fn wall_case(beta_s: f64, r: f64) -> ContactCriticalStep {
     )
     .unwrap();
     let penalty = problem.penalty(beta_s, mass_penalty(r)).unwrap();
-    ContactCriticalStep::of(&problem, &ContactScheme::Bipenalty(penalty))
+    ContactCriticalStep::of(&problem, &ContactScheme::Bipenalty(penalty)).unwrap()
 }
 
 fn rel(a: f64, b: f64) -> f64 {
@@ -174,7 +174,8 @@ fn two_equal_bars_have_the_wall_courant_number_at_twice_the_penalty() {
             )
             .unwrap();
             let penalty = problem.penalty(beta_s, mass_penalty(r)).unwrap();
-            let step = ContactCriticalStep::of(&problem, &ContactScheme::Bipenalty(penalty));
+            let step =
+                ContactCriticalStep::of(&problem, &ContactScheme::Bipenalty(penalty)).unwrap();
             let closed = two_bar_critical_courant(beta_s, beta_m).unwrap();
             let solver = step.courant(step.contact_active);
             assert!(
@@ -205,7 +206,7 @@ fn nodal_estimate_is_unconservative_and_gershgorin_conservative() {
     let problem = ContactProblem::fig5(100, 1.0).unwrap();
     for beta_s in [1.0, 1e3, 1e6] {
         let penalty = problem.penalty(beta_s, MassPenalty::Ratio(2.0)).unwrap();
-        let step = ContactCriticalStep::of(&problem, &ContactScheme::Bipenalty(penalty));
+        let step = ContactCriticalStep::of(&problem, &ContactScheme::Bipenalty(penalty)).unwrap();
         assert!(
             step.gershgorin < step.applicable && step.applicable < step.nodal,
             "beta_s = {beta_s}: {step:?}"

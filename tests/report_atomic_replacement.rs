@@ -9,6 +9,7 @@
 //! directories of the dead process are removed (on Linux, where liveness is known).
 
 use courant::io::atomic::{recover_interrupted, write_dir_atomically};
+use courant::io::manifest::{MANIFEST, manifest_text};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::Duration;
@@ -38,6 +39,8 @@ fn a_killed_report_run_keeps_the_previous_report_and_its_leftovers_are_recovered
     let out = base.join("reports");
     std::fs::create_dir_all(&out).unwrap();
     std::fs::write(out.join("index.md"), MARKER).unwrap();
+    // A previous courant report: marked by its manifest (an unmarked directory is refused).
+    std::fs::write(out.join(MANIFEST), manifest_text(["index.md"])).unwrap();
 
     let mut child = Command::new(env!("CARGO_BIN_EXE_courant"))
         .args(["report", "--out", out.to_str().unwrap()])
@@ -55,8 +58,8 @@ fn a_killed_report_run_keeps_the_previous_report_and_its_leftovers_are_recovered
     assert!(!status.success(), "the run was killed: {status:?}");
     let pid = child.id();
 
-    // The previous report is untouched: same single file, same content, nothing set aside.
-    assert_eq!(entries(&out), ["index.md"]);
+    // The previous report is untouched: same files, same content, nothing set aside.
+    assert_eq!(entries(&out), [MANIFEST, "index.md"]);
     assert_eq!(
         std::fs::read_to_string(out.join("index.md")).unwrap(),
         MARKER

@@ -270,6 +270,12 @@ fn courant_report_replaces_the_output_directory_whole() {
     let dir = std::env::temp_dir().join(format!("courant-report-{}", std::process::id()));
     std::fs::create_dir_all(dir.join("old")).unwrap();
     std::fs::write(dir.join("old/stale.txt"), "stale").unwrap();
+    // A previous courant output (its manifest lists the stale file): replaced whole.
+    std::fs::write(
+        dir.join("old").join(courant::io::manifest::MANIFEST),
+        courant::io::manifest::manifest_text(["stale.txt"]),
+    )
+    .unwrap();
     let status = std::process::Command::new(env!("CARGO_BIN_EXE_courant"))
         .args(["report", "--out", dir.join("old").to_str().unwrap()])
         .status()

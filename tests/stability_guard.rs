@@ -17,7 +17,7 @@ use courant_solver::{
 const N: usize = 100;
 
 fn critical() -> CriticalStep {
-    CriticalStep::lumped(&fig1_model(N, TimeFunction::HEAVISIDE))
+    CriticalStep::lumped(&fig1_model(N, TimeFunction::HEAVISIDE)).unwrap()
 }
 
 #[test]

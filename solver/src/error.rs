@@ -60,9 +60,26 @@ pub enum InputError {
         /// The last valid node index.
         last: usize,
     },
+    /// An iterative method reached its iteration bound (the model's numbers are beyond what it
+    /// resolves, e.g. entries whose products overflow).
+    #[error(transparent)]
+    NoConvergence(#[from] NoConvergence),
     /// Anything else, with a sentence that names the field and the rule.
     #[error("{0}")]
     Other(String),
+}
+
+/// An iterative method stopped at its iteration bound without an answer. Every iterative method
+/// of the solver has such a bound: none can loop forever, whatever its input.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("{method} found no answer within {iterations} iterations: {why}")]
+pub struct NoConvergence {
+    /// The method, e.g. `the critical-step bisection (Sturm counts of K - x M)`.
+    pub method: &'static str,
+    /// Its iteration bound.
+    pub iterations: usize,
+    /// What was left, e.g. the bracket, or the non-finite value met.
+    pub why: String,
 }
 
 /// The time step is above the critical step of the scheme and unstable runs were not allowed.

@@ -45,7 +45,7 @@ pub use bar::{Bar, Field};
 pub use central_difference::{
     CentralDifference, OutputRequest, RunError, SchemeLimit, StabilityPolicy, Start,
 };
-pub use error::{DivergenceError, InputError, UnstableStepError};
+pub use error::{DivergenceError, InputError, NoConvergence, UnstableStepError};
 pub use load::{End, Load, NodalLoad, TimeFunction};
 pub use mass::{MassKind, MassOperator};
 pub use mesh::Mesh;

@@ -130,7 +130,7 @@ mod tests {
         ] {
             let omega = angular_frequencies(&model, kind).unwrap();
             let op = MassOperator::new(&model, kind).unwrap();
-            let c = CriticalStep::of(&model, kind, &op);
+            let c = CriticalStep::of(&model, kind, &op).unwrap();
             let dense = *omega.last().unwrap();
             assert!(
                 (c.omega_max - dense).abs() <= 1e-10 * dense,

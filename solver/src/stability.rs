@@ -17,8 +17,22 @@
 //!   (congruent to `K - x M`). Unlike power iteration it does not slow down when the top of the
 //!   spectrum is clustered, as it is on uniform meshes. Runs use this one.
 
+use crate::error::NoConvergence;
 use crate::mass::{MassKind, MassOperator};
 use crate::model::Model;
+
+/// Iteration bound of every bisection on Sturm counts: halving a bracket `[0, hi]` reaches
+/// adjacent doubles in at most about 1100 steps whatever `hi`, and in about 60 when the upper
+/// bound is within a few orders of magnitude of `lambda_max` (the bounds used here are within a
+/// factor 4).
+pub const BISECTION_STEPS: usize = 1100;
+
+/// Doublings allowed to lift a starting bound above the spectrum (round-off may leave an
+/// eigenvalue a hair above a Gershgorin bound; 64 doublings is a factor 1.8e19).
+pub const BOUND_DOUBLINGS: usize = 64;
+
+/// The method name of the critical-step bisection in [`NoConvergence`] errors.
+const BISECTION: &str = "the critical-step bisection (Sturm counts of K - x M)";
 
 /// The critical-step estimates of one model and mass kind.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -45,15 +59,32 @@ pub struct CriticalStep {
 
 impl CriticalStep {
     /// All estimates for a lumped-mass model.
-    pub fn lumped(model: &Model) -> Self {
+    ///
+    /// # Errors
+    /// [`NoConvergence`] when the bisection does not close within [`BISECTION_STEPS`] (only for
+    /// entries whose products overflow or underflow).
+    pub fn lumped(model: &Model) -> Result<Self, NoConvergence> {
         let (diag, off) = scaled_stiffness(model);
         let gershgorin_bound = gershgorin_upper_bound(&diag, &off);
-        let lambda_max = largest_eigenvalue(&diag, &off, gershgorin_bound);
-        Self::from_eigenvalues(model, MassKind::Lumped, lambda_max, gershgorin_bound)
+        let lambda_max = largest_eigenvalue(&diag, &off, gershgorin_bound)?;
+        Ok(Self::from_eigenvalues(
+            model,
+            MassKind::Lumped,
+            lambda_max,
+            gershgorin_bound,
+        ))
     }
 
     /// All estimates for `model` with the mass `operator` of `kind`.
-    pub fn of(model: &Model, kind: MassKind, operator: &MassOperator) -> Self {
+    ///
+    /// # Errors
+    /// [`NoConvergence`] when no bound above the spectrum is found within [`BOUND_DOUBLINGS`]
+    /// doublings or the bisection does not close within [`BISECTION_STEPS`].
+    pub fn of(
+        model: &Model,
+        kind: MassKind,
+        operator: &MassOperator,
+    ) -> Result<Self, NoConvergence> {
         if kind == MassKind::Lumped {
             return Self::lumped(model);
         }
@@ -62,26 +93,15 @@ impl CriticalStep {
         let n = p.order();
         // Start from the Gershgorin bound and make sure it is above the spectrum (doubling),
         // so the bisection never depends on the bound being right.
-        let mut hi = gershgorin_bound.max(f64::MIN_POSITIVE) * (1.0 + 1e-12);
-        for _ in 0..64 {
-            if p.negative_pivots_of_shifted(&q, hi) == n {
-                break;
-            }
-            hi *= 2.0;
-        }
-        let mut lo = 0.0_f64;
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            if p.negative_pivots_of_shifted(&q, mid) == n {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
-        Self::from_eigenvalues(model, kind, 0.5 * (lo + hi), gershgorin_bound)
+        let start = gershgorin_bound.max(f64::MIN_POSITIVE) * (1.0 + 1e-12);
+        let hi = lift_above_spectrum(start, |x| p.negative_pivots_of_shifted(&q, x) == n)?;
+        let lambda_max = bisect_top(hi, 0.0, |x| p.negative_pivots_of_shifted(&q, x) == n)?;
+        Ok(Self::from_eigenvalues(
+            model,
+            kind,
+            lambda_max,
+            gershgorin_bound,
+        ))
     }
 
     fn from_eigenvalues(
@@ -223,25 +243,80 @@ fn count_below(diag: &[f64], off: &[f64], x: f64) -> usize {
 
 /// Largest eigenvalue of a symmetric tridiagonal matrix by bisection on the Sturm count, to a
 /// relative width of a few ulps. `upper` must bound the spectrum from above.
-pub fn largest_eigenvalue(diag: &[f64], off: &[f64], upper: f64) -> f64 {
+///
+/// # Errors
+/// [`NoConvergence`] for a non-finite `upper` or a bisection that does not close within
+/// [`BISECTION_STEPS`].
+pub fn largest_eigenvalue(diag: &[f64], off: &[f64], upper: f64) -> Result<f64, NoConvergence> {
     let n = diag.len();
-    let (mut lo, mut hi) = (0.0_f64, upper * (1.0 + 4.0 * f64::EPSILON));
+    let hi = upper * (1.0 + 4.0 * f64::EPSILON);
     if hi <= 0.0 {
-        return 0.0;
+        return Ok(0.0);
     }
-    // Invariant: fewer than n eigenvalues below hi is false (all are below hi); lo has < n below.
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
+    bisect_top(hi, 0.0, |x| count_below(diag, off, x) == n)
+}
+
+/// `start`, doubled (at most [`BOUND_DOUBLINGS`] times) until `all_below(x)` holds: every
+/// eigenvalue is below it.
+///
+/// # Errors
+/// [`NoConvergence`] when the bound becomes non-finite or the doublings run out.
+pub fn lift_above_spectrum(
+    start: f64,
+    all_below: impl Fn(f64) -> bool,
+) -> Result<f64, NoConvergence> {
+    let mut hi = start;
+    for _ in 0..=BOUND_DOUBLINGS {
+        if !hi.is_finite() {
             break;
         }
-        if count_below(diag, off, mid) == n {
+        if all_below(hi) {
+            return Ok(hi);
+        }
+        hi *= 2.0;
+    }
+    Err(NoConvergence {
+        method: BISECTION,
+        iterations: BOUND_DOUBLINGS,
+        why: format!(
+            "no upper bound of the spectrum from {start:e} (doubled to {hi:e}): the model's entries are too large or too small for f64"
+        ),
+    })
+}
+
+/// The largest eigenvalue by bisection of `[0, hi]` on `all_below(x)` (every eigenvalue is below
+/// `x`), which must hold at `hi`, to adjacent doubles or a bracket of relative width
+/// `rel_width` (0: adjacent doubles).
+///
+/// # Errors
+/// [`NoConvergence`] for a non-finite `hi` or when [`BISECTION_STEPS`] halvings do not close
+/// the bracket.
+pub fn bisect_top(
+    hi: f64,
+    rel_width: f64,
+    all_below: impl Fn(f64) -> bool,
+) -> Result<f64, NoConvergence> {
+    let fail = |why: String| NoConvergence {
+        method: BISECTION,
+        iterations: BISECTION_STEPS,
+        why,
+    };
+    if !hi.is_finite() {
+        return Err(fail(format!("its upper bound {hi} is not finite")));
+    }
+    let (mut lo, mut hi) = (0.0_f64, hi);
+    for _ in 0..BISECTION_STEPS {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi || hi - lo <= rel_width * hi {
+            return Ok(0.5 * (lo + hi));
+        }
+        if all_below(mid) {
             hi = mid;
         } else {
             lo = mid;
         }
     }
-    0.5 * (lo + hi)
+    Err(fail(format!("the bracket [{lo:e}, {hi:e}] is still open")))
 }
 
 #[cfg(test)]
@@ -267,7 +342,7 @@ mod tests {
     fn exact_step_matches_the_closed_form_of_the_uniform_free_fixed_bar() {
         for n in [1, 2, 10, 100, 1000] {
             let bar = Bar::homogeneous(Mesh::uniform(1.0, n).unwrap(), 1.0, 1.0, 1.0).unwrap();
-            let cs = CriticalStep::lumped(&model(bar, Supports::FREE_FIXED));
+            let cs = CriticalStep::lumped(&model(bar, Supports::FREE_FIXED)).unwrap();
             let h = 1.0 / n as f64;
             let omega = 2.0 / h * (std::f64::consts::PI / (4.0 * n as f64)).cos();
             assert!(
@@ -290,13 +365,27 @@ mod tests {
                 left: Support::Free,
                 right: Support::Free,
             },
-        ));
+        ))
+        .unwrap();
         assert!((cs.exact / cs.element - 1.0).abs() < 1e-14);
+    }
+
+    /// Every bisection is bounded: a bound that never covers the spectrum, or a non-finite one,
+    /// is a typed error after at most `BOUND_DOUBLINGS` doublings, never a loop.
+    #[test]
+    fn bisections_stop_with_an_error_at_their_bounds() {
+        let e = lift_above_spectrum(1.0, |_| false).unwrap_err();
+        assert_eq!(e.iterations, BOUND_DOUBLINGS);
+        assert!(bisect_top(f64::INFINITY, 0.0, |_| true).is_err());
+        assert!(largest_eigenvalue(&[1.0], &[], f64::NAN).is_err());
+        // A well-posed one closes to adjacent doubles: [0, 8] on "x > 3".
+        let top = bisect_top(8.0, 0.0, |x| x > 3.0).unwrap();
+        assert!((top - 3.0).abs() <= 4.0 * f64::EPSILON * 3.0, "{top}");
     }
 
     #[test]
     fn graded_bar_is_controlled_by_its_stiff_end() {
-        let cs = CriticalStep::lumped(&crate::fixtures::graded_seed_bar(100).unwrap());
+        let cs = CriticalStep::lumped(&crate::fixtures::graded_seed_bar(100).unwrap()).unwrap();
         assert_eq!(cs.controlling_element, 0);
         assert!(
             cs.exact >= cs.element,

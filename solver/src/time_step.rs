@@ -43,7 +43,7 @@ pub fn plan(nominal_dt: f64, output_times: &[f64], end_time: f64) -> Result<Time
     };
     let smallest = positive_times().fold(end_time, f64::min);
     let tol = (ROUNDING_SLACK * smallest).max(64.0 * f64::EPSILON * end_time);
-    let tau = positive_times().fold(end_time, |g, t| float_gcd(g, t, tol));
+    let tau = positive_times().try_fold(end_time, |g, t| float_gcd(g, t, tol))?;
     // Snap tau so that the end time is an exact multiple of it.
     let intervals = (end_time / tau).round().max(1.0);
     let per_interval = (end_time / intervals / nominal_dt * (1.0 - ROUNDING_SLACK))
@@ -131,10 +131,19 @@ fn validate(dt: f64, output_times: &[f64], end_time: f64) -> Result<(), InputErr
 /// Largest number of steps a plan may have.
 pub const MAX_STEPS: usize = 100_000_000;
 
-/// Greatest common divisor of two positive reals within an absolute tolerance (Euclid).
-fn float_gcd(a: f64, b: f64, tol: f64) -> f64 {
+/// Iteration bound of [`float_gcd`]: Euclid's remainders at least halve every two steps, so
+/// from `a` down to the tolerance `tol >= 64 eps a` of [`plan`] takes at most
+/// `2 log2(1/(64 eps)) < 94` steps.
+const EUCLID_STEPS: usize = 128;
+
+/// Greatest common divisor of two positive reals within an absolute tolerance (Euclid), in at
+/// most [`EUCLID_STEPS`] steps.
+fn float_gcd(a: f64, b: f64, tol: f64) -> Result<f64, crate::error::NoConvergence> {
     let (mut a, mut b) = (a.max(b), a.min(b));
-    while b > tol {
+    for _ in 0..EUCLID_STEPS {
+        if b <= tol {
+            return Ok(a);
+        }
         let mut r = a % b;
         if b - r <= tol {
             r = 0.0;
@@ -142,7 +151,11 @@ fn float_gcd(a: f64, b: f64, tol: f64) -> f64 {
         a = b;
         b = r;
     }
-    a
+    Err(crate::error::NoConvergence {
+        method: "the common interval of the output times (Euclid's algorithm)",
+        iterations: EUCLID_STEPS,
+        why: format!("remainder {b:e} still above the tolerance {tol:e}"),
+    })
 }
 
 #[cfg(test)]

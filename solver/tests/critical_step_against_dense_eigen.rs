@@ -101,7 +101,7 @@ fn sturm_bisection_equals_dense_eigen_and_estimates_are_conservative() {
                 InitialConditions::default(),
             )
             .unwrap();
-            let c = CriticalStep::lumped(&model);
+            let c = CriticalStep::lumped(&model).unwrap();
             let dense = dense_omega_max(&model);
             assert!(
                 (c.omega_max - dense).abs() <= 1e-12 * dense,
@@ -173,7 +173,7 @@ fn every_mass_kind_matches_dense_eigen_and_estimates_are_conservative() {
             let model = Model::unloaded(bar.clone(), Supports { left, right });
             for &kind in &kinds {
                 let op = MassOperator::new(&model, kind).unwrap();
-                let c = CriticalStep::of(&model, kind, &op);
+                let c = CriticalStep::of(&model, kind, &op).unwrap();
                 let dense = *angular_frequencies(&model, kind).unwrap().last().unwrap();
                 assert!(
                     (c.omega_max - dense).abs() <= 1e-9 * dense,

@@ -141,6 +141,14 @@ pub fn check(options: &CheckOptions) -> ExitCode {
         );
         return ExitCode::from(2);
     }
+    if let Some(out) = out {
+        for scene in &scenes {
+            if let Err(e) = crate::io::manifest::check_replaceable(&out.join(&scene.name)) {
+                eprintln!("error: --out {}: {e}", out.display());
+                return ExitCode::from(2);
+            }
+        }
+    }
     let tolerances = match tolerance_args.tolerances() {
         Ok(t) => t,
         Err(e) => {

@@ -76,6 +76,12 @@ pub fn report(args: &[String], out: Option<&std::path::Path>) -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    // Refused before minutes of work: only an absent, empty or courant-written directory is
+    // replaced.
+    if let Err(e) = crate::io::manifest::check_replaceable(out) {
+        eprintln!("error: {e}");
+        return ExitCode::from(2);
+    }
     let generated =
         run_for_report(&scenes, studies, !args.is_empty()).and_then(|runs| render(&scenes, &runs));
     let report = match generated {

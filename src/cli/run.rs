@@ -1,10 +1,12 @@
-//! `courant run`: validate every scene, then run each, print its results and write its files.
+//! `courant run`: validate every scene, then run each and print its results, and write the
+//! files of all of them, or of none.
 
 use crate::compare::case::CaseResult;
 use crate::compare::files::scene_files;
 use crate::compare::outcome::SceneOutcome;
 use crate::compare::score::export::exchange_set;
-use crate::io::atomic::write_dir_atomically;
+use crate::io::atomic::stage_dir;
+use crate::io::manifest::check_replaceable;
 use crate::pipeline::evaluate_scene;
 use crate::report::numbers::shown;
 use crate::results::case::Status;
@@ -34,40 +36,107 @@ pub fn run(args: &[String], out: &std::path::Path, exchange: Option<&std::path::
             }
         }
     }
+    let dirs: Vec<_> = scenes.iter().map(|s| out.join(&s.name)).collect();
+    let exchange_dirs: Vec<_> = exchange
+        .map(|root| scenes.iter().map(|s| root.join(&s.name)).collect())
+        .unwrap_or_default();
+    for dir in &exchange_dirs {
+        if dirs.contains(dir) {
+            eprintln!(
+                "error: {}: both the results and the exchange files would go there (give --exchange another directory)",
+                dir.display()
+            );
+            bad = true;
+        } else if let Err(e) = check_replaceable(dir) {
+            eprintln!("error: {e}");
+            bad = true;
+        }
+    }
+    for (i, dir) in dirs.iter().enumerate() {
+        if dirs[..i].contains(dir) {
+            eprintln!(
+                "error: {}: two scenes would write it (scene {} given twice)",
+                dir.display(),
+                scenes[i].name
+            );
+            bad = true;
+        } else if let Err(e) = check_replaceable(dir) {
+            eprintln!("error: {e}");
+            bad = true;
+        }
+    }
     if bad {
         return ExitCode::from(2);
     }
+    // Run every scene before any is put in place: each is staged to a hidden sibling as it
+    // completes (its files leave memory), and only when all are staged are they committed. A
+    // scene that fails drops the staged ones: nothing is written.
+    let out_existed = out.exists();
+    let exchange_existed = exchange.is_some_and(|root| root.exists());
+    let nothing_written = || {
+        if !out_existed {
+            let _ = std::fs::remove_dir(out);
+        }
+        if let (Some(root), false) = (exchange, exchange_existed) {
+            let _ = std::fs::remove_dir(root);
+        }
+    };
     let mut failed = false;
-    for scene in &scenes {
+    let mut staged = Vec::with_capacity(scenes.len());
+    for (scene, dir) in scenes.iter().zip(&dirs) {
         let outcome = match evaluate_scene(scene) {
             Ok(r) => r,
             Err(e) => {
-                eprintln!("error: {}: {e}", scene.name);
+                eprintln!("error: {}: {e} (nothing was written)", scene.name);
+                drop(staged);
+                nothing_written();
                 return ExitCode::from(2);
             }
         };
         print_scene(scene, &outcome);
         failed |= !outcome.passed();
-        let dir = out.join(&scene.name);
-        if let Err(e) = write_dir_atomically(&dir, &scene_files(&outcome)) {
-            eprintln!("error: cannot write {}: {e}", dir.display());
-            return ExitCode::from(2);
-        }
-        println!("  -> {}", dir.display());
+        let mut files = vec![(dir.clone(), scene_files(&outcome), "")];
         if let Some(root) = exchange {
-            let dir = root.join(&scene.name);
-            match exchange_set(scene, &outcome, &dir.display().to_string()) {
-                Some(set) => {
-                    if let Err(e) = write_dir_atomically(&dir, &set_files(&set)) {
-                        eprintln!("error: cannot write {}: {e}", dir.display());
-                        return ExitCode::from(2);
-                    }
-                    println!("  -> {} (exchange format)", dir.display());
-                }
-                None => println!("  (no exchange form: a dispersion or contact-stability study)"),
+            let xdir = root.join(&scene.name);
+            match exchange_set(scene, &outcome, &xdir.display().to_string()) {
+                Some(set) => files.push((xdir, set_files(&set), " (exchange format)")),
+                None => println!(
+                    "  (no exchange form of {}: a dispersion or contact-stability study)",
+                    scene.name
+                ),
             }
         }
-        println!();
+        for (dir, files, label) in files {
+            match stage_dir(&dir, &files) {
+                Ok(s) => staged.push((s, label)),
+                Err(e) => {
+                    eprintln!(
+                        "error: cannot write {}: {e} (nothing was written)",
+                        dir.display()
+                    );
+                    drop(staged);
+                    nothing_written();
+                    return ExitCode::from(2);
+                }
+            }
+        }
+    }
+    let mut written: Vec<String> = Vec::with_capacity(staged.len());
+    for (s, label) in staged {
+        let dir = s.dir().display().to_string();
+        if let Err(e) = s.commit() {
+            eprintln!(
+                "error: cannot write {dir}: {e}{}",
+                if written.is_empty() {
+                    " (nothing was written)".to_string()
+                } else {
+                    format!(" (written before it: {})", written.join(", "))
+                }
+            );
+            return ExitCode::from(2);
+        }
+        println!("  -> {dir}{label}");
+        written.push(dir);
     }
     if failed {
         ExitCode::from(1)

@@ -130,8 +130,9 @@ pub struct ContactResult {
     pub other_errors: Option<ForceErrors>,
     /// `|impulse - exact|/exact` of the momentum delivered.
     pub impulse_error: f64,
-    /// Energy of the real masses (kinetic + strain) at the end over the initial energy.
-    pub energy_ratio: f64,
+    /// Energy of the real masses (kinetic + strain) at the end over the initial energy; `None`
+    /// when it is undefined ([`ENERGY_RATIO_UNDEFINED`]).
+    pub energy_ratio: Option<f64>,
     /// Central difference's conserved energy of the real masses at the end,
     /// `1/2 v^{n-1/2} M v^{n+1/2} + 1/2 u^n K u^n` (Hughes 1987, §9.1), over the initial energy:
     /// once the bodies have separated, the energy the run left in them, without the step-scale
@@ -142,6 +143,13 @@ pub struct ContactResult {
     /// Wall time of the run.
     pub wall_time: Duration,
 }
+
+/// Why a contact case has no `duration_error`.
+pub const DURATION_UNDEFINED: &str = "undefined: no recorded force sample reached half the smallest plateau (the contact opened before, or the sampling, history_every, missed it)";
+
+/// Why a contact case has no `energy_ratio`.
+pub const ENERGY_RATIO_UNDEFINED: &str =
+    "undefined: no energy at the first sample, or a non-finite energy at the last (a diverged run)";
 
 impl ContactResult {
     /// The errors of the force `measure` (`None` for the penalty force of the Lagrange
@@ -165,10 +173,33 @@ pub fn compare_contact(
     let ContactRecord {
         case,
         penalty,
-        run,
+        mut run,
         diverged,
         wall_time,
     } = record;
+    if diverged.is_some() {
+        // A diverged run's record ends where its values stop being numbers: the guard stops it
+        // at the step its energy overflows, and that step's sample may hold infinities.
+        let finite = |s: &ContactSample| {
+            [
+                s.time,
+                s.force,
+                s.penalty_force,
+                s.gap,
+                s.impulse,
+                s.kinetic,
+                s.kinetic_staggered,
+                s.strain,
+                s.penalty_spring,
+                s.penalty_kinetic,
+                s.total,
+            ]
+            .iter()
+            .all(|x| x.is_finite())
+        };
+        let end = run.history.iter().position(|s| !finite(s));
+        run.history.truncate(end.unwrap_or(run.history.len()));
+    }
     let exact: Vec<f64> = run
         .history
         .iter()
@@ -184,12 +215,16 @@ pub fn compare_contact(
     let impulse_error = (run.impulse - reference.impulse()).abs() / reference.impulse();
     let energy = |s: &ContactSample| s.kinetic + s.strain;
     let conserved = |s: &ContactSample| s.kinetic_staggered + s.strain;
+    let ratio = |end: f64, start: f64| Some(end / start).filter(|r| r.is_finite());
     let (energy_ratio, energy_ratio_conserved) = match (run.history.first(), run.history.last()) {
         (Some(a), Some(b)) if energy(a) > 0.0 => (
-            energy(b) / energy(a),
-            diverged.is_none().then(|| conserved(b) / energy(a)),
+            ratio(energy(b), energy(a)),
+            diverged
+                .is_none()
+                .then(|| ratio(conserved(b), energy(a)))
+                .flatten(),
         ),
-        _ => (f64::NAN, None),
+        _ => (None, None),
     };
     ContactResult {
         case,

@@ -3,12 +3,9 @@
 //! overshoots), nodal displacement and velocity, energies. Evaluated by `courant-references`
 //! (never by the solver), on the mesh of the record.
 
-use crate::scene::reference::Reference;
+use crate::scene::reference::{GRADED_EXTREME_SAMPLES as EXTREME_SAMPLES, Reference};
 use courant_references::Energies;
 use courant_solver::Mesh;
-
-/// Points per bar length at which the graded field is sampled for its extreme value.
-const EXTREME_SAMPLES: usize = 4000;
 
 /// What a reference gives to compare a result with.
 pub trait ExactSolution {

@@ -6,7 +6,7 @@
 //! `force_history_difference` it is the distance between the two force histories.
 
 use super::case::CaseResult;
-use super::contact::{ContactResult, ForceErrors};
+use super::contact::{ContactResult, DURATION_UNDEFINED, ENERGY_RATIO_UNDEFINED, ForceErrors};
 use super::norms::ErrorNorms;
 use super::outcome::SceneOutcome;
 use super::spectrum::SpectrumResult;
@@ -168,8 +168,8 @@ pub fn ratio(a: Measured, b: Measured, other: &str) -> Measured {
 
 /// A time-stepping metric of one case.
 fn case_value(e: &Expectation, result: &CaseResult, _: Option<&CaseResult>) -> Measured {
-    let norm_of = |pick: fn(&ErrorNorms) -> f64| -> Measured {
-        let selected: Vec<f64> = result
+    let norm_of = |pick: fn(&ErrorNorms) -> Option<f64>| -> Measured {
+        let selected: Vec<Option<f64>> = result
             .profiles
             .iter()
             .filter(|p| at_time(e.at, p.time, result.dt))
@@ -183,13 +183,20 @@ fn case_value(e: &Expectation, result: &CaseResult, _: Option<&CaseResult>) -> M
         if selected.len() < expected {
             return Measured::Missing("the run ended before every profile time".into());
         }
-        Measured::Value(selected.into_iter().fold(f64::NEG_INFINITY, f64::max))
+        let defined: Vec<f64> = selected.into_iter().flatten().collect();
+        if defined.is_empty() {
+            return Measured::Missing(
+                "undefined: the exact profile has no variation (one element, or no front yet)"
+                    .into(),
+            );
+        }
+        Measured::Value(defined.into_iter().fold(f64::NEG_INFINITY, f64::max))
     };
     match e.metric {
-        Metric::L1 => norm_of(|n| n.l1),
-        Metric::L2 => norm_of(|n| n.l2),
-        Metric::Linf => norm_of(|n| n.linf),
-        Metric::Overshoot => norm_of(|n| n.overshoot),
+        Metric::L1 => norm_of(|n| Some(n.l1)),
+        Metric::L2 => norm_of(|n| Some(n.l2)),
+        Metric::Linf => norm_of(|n| Some(n.linf)),
+        Metric::Overshoot => norm_of(|n| Some(n.overshoot)),
         Metric::TvRatio => norm_of(|n| n.tv_ratio),
         Metric::EnergyLost => Measured::Value(result.energy_lost()),
         Metric::EnergyBalance => Measured::Value(result.energy.relative_balance_error()),
@@ -219,11 +226,14 @@ fn contact_value(e: &Expectation, r: &ContactResult, other: Option<&ContactResul
         Metric::ImpulseError => Measured::Value(r.impulse_error),
         Metric::DurationError => match errors.map(|e| e.duration_error) {
             Some(Some(d)) => Measured::Value(d),
-            Some(None) => Measured::Missing("the force never reached half the plateau".into()),
+            Some(None) => Measured::Missing(DURATION_UNDEFINED.into()),
             None => Measured::Missing("the scheme has no penalty force".into()),
         },
         Metric::ForceL1Error => of(|e| e.force_l1_error),
-        Metric::EnergyRatio => Measured::Value(r.energy_ratio),
+        Metric::EnergyRatio => r.energy_ratio.map_or(
+            Measured::Missing(ENERGY_RATIO_UNDEFINED.into()),
+            Measured::Value,
+        ),
         Metric::MaxForce => of(|e| e.max_force),
         Metric::CriticalCourant => Measured::Value(r.run.critical.critical_courant()),
         Metric::Diverged => Measured::Flag(r.diverged.is_some()),

@@ -31,8 +31,10 @@ pub struct ErrorNorms {
     pub overshoot: f64,
     /// Total variation of the element stresses over that of the exact element averages,
     /// `sum_e |sigma_{e+1} - sigma_e| / sum_e |sigma_ref,e+1 - sigma_ref,e|`: 1 for a profile
-    /// without spurious oscillations, above 1 when it oscillates.
-    pub tv_ratio: f64,
+    /// without spurious oscillations, above 1 when it oscillates. `None` where the exact
+    /// profile has no variation (one element, or no front in the bar yet): the ratio is
+    /// undefined there.
+    pub tv_ratio: Option<f64>,
 }
 
 impl ErrorNorms {
@@ -89,22 +91,22 @@ impl ErrorNorms {
             l2: (l2 / length).sqrt() / scale,
             linf: linf / scale,
             overshoot: overshoot / scale,
-            tv_ratio: if exact_variation > 0.0 {
-                variation(stress) / exact_variation
-            } else {
-                f64::NAN
-            },
+            tv_ratio: (exact_variation > 0.0).then(|| variation(stress) / exact_variation),
         }
     }
 
-    /// The worst (largest) of each norm over several profiles.
+    /// The worst (largest) of each norm over several profiles (the TV ratio over the profiles
+    /// where it is defined).
     pub fn worst(norms: impl IntoIterator<Item = ErrorNorms>) -> Option<ErrorNorms> {
         norms.into_iter().reduce(|a, b| ErrorNorms {
             l1: a.l1.max(b.l1),
             l2: a.l2.max(b.l2),
             linf: a.linf.max(b.linf),
             overshoot: a.overshoot.max(b.overshoot),
-            tv_ratio: a.tv_ratio.max(b.tv_ratio),
+            tv_ratio: match (a.tv_ratio, b.tv_ratio) {
+                (Some(x), Some(y)) => Some(x.max(y)),
+                (x, y) => x.or(y),
+            },
         })
     }
 }
@@ -128,5 +130,14 @@ mod tests {
         assert_eq!(n.l2, (0.25_f64 * 0.25).sqrt());
         assert_eq!(n.linf, 0.5);
         assert_eq!(n.overshoot, 0.5);
+        assert_eq!(n.tv_ratio, Some(2.0));
+    }
+
+    #[test]
+    fn the_tv_ratio_of_a_profile_without_exact_variation_is_undefined() {
+        let mesh = Mesh::uniform(1.0, 1).unwrap();
+        let n = ErrorNorms::of(&mesh, &[-0.5], &[-0.25], 1.0, 1.0, -1.0);
+        assert_eq!(n.tv_ratio, None);
+        assert!(n.l1.is_finite() && n.linf.is_finite());
     }
 }

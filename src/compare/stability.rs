@@ -193,7 +193,7 @@ impl StabilityRow {
             // A completed run: CD's conserved energy left in the bodies; a diverged one: the
             // guard's own measure (kinetic + strain) where it stopped the run, since the
             // staggered energy is not positive above the critical step.
-            energy_ratio: Some(r.energy_ratio_conserved.unwrap_or(r.energy_ratio)),
+            energy_ratio: r.energy_ratio_conserved.or(r.energy_ratio),
             energy_created: 0.0,
             finding: None,
         }

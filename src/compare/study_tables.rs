@@ -173,6 +173,15 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
             None => "completed".to_string(),
             Some(d) => format!("diverged at step {}", d.step),
         };
+        // A diverged run's figures may have overflowed: those are empty cells (its note says
+        // so). A completed run's figures are finite.
+        let figure = |x: f64| -> Cell {
+            if r.diverged.is_some() && !x.is_finite() {
+                Cell::Empty
+            } else {
+                Cell::Num(x)
+            }
+        };
         table.push(vec![
             r.case.as_str().into(),
             r.run.scheme.label().into(),
@@ -185,14 +194,14 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
             r.run.steps.into(),
             r.measure.label().into(),
             r.plateau.into(),
-            r.errors.plateau_deviation.into(),
-            r.impulse_error.into(),
-            r.errors.duration_error.into(),
-            r.errors.force_l1_error.into(),
+            figure(r.errors.plateau_deviation),
+            figure(r.impulse_error),
+            r.errors.duration_error.map_or(Cell::Empty, figure),
+            figure(r.errors.force_l1_error),
             r.energy_ratio.into(),
             r.energy_ratio_conserved.into(),
-            r.errors.max_force.into(),
-            r.run.max_force.into(),
+            figure(r.errors.max_force),
+            figure(r.run.max_force),
             status.into(),
             contact_note(r).into(),
             r.wall_time.as_secs_f64().into(),
@@ -216,9 +225,15 @@ fn contact_note(r: &ContactResult) -> String {
             100.0 * r.errors.open_in_plateau
         ));
     }
+    if r.errors.duration_error.is_none() {
+        notes.push(format!(
+            "duration_error {}",
+            super::contact::DURATION_UNDEFINED
+        ));
+    }
     if r.diverged.is_some() {
         notes.push(
-            "diverged: no conserved energy above the critical step; energy_ratio is where the guard stopped it"
+            "diverged: no conserved energy above the critical step; energy_ratio is where the guard stopped it (a figure that overflowed is empty)"
                 .to_string(),
         );
     }

@@ -141,7 +141,7 @@ pub fn summary_table(results: &[CaseResult]) -> Table {
             norms.map(|n| n.l2).into(),
             norms.map(|n| n.linf).into(),
             norms.map(|n| n.overshoot).into(),
-            norms.map(|n| n.tv_ratio).into(),
+            norms.and_then(|n| n.tv_ratio).into(),
             r.energy.relative_balance_error().into(),
             r.energy_lost().into(),
             status.into(),

@@ -10,6 +10,10 @@
 //!   `.NAME.old-PID`, renaming the staging directory into place and removing the old one. A run
 //!   killed between the two renames leaves no `NAME`, only `.NAME.old-PID`.
 //!
+//! Only a directory that is absent, empty or a courant output (its [`MANIFEST`] lists everything
+//! in it) is replaced; anything else is refused before anything is touched
+//! ([`super::manifest`]). The manifest is written with the files.
+//!
 //! Every write first recovers from interrupted runs ([`recover_interrupted`]): if `NAME` is
 //! missing and a `.NAME.old-PID` of a process that is not running exists, it is renamed back to
 //! `NAME`; the `.NAME.partial-PID` and `.NAME.old-PID` of processes that are no longer running
@@ -19,36 +23,107 @@
 //! next write to put back, and its leftovers go at the next write. Writers of the same
 //! directory must not run concurrently.
 
+use super::manifest::{MANIFEST, Refusal, check_replaceable, manifest_text};
 use std::io;
 use std::path::{Path, PathBuf};
+use thiserror::Error;
+
+/// Why a directory was not written.
+#[derive(Debug, Error)]
+pub enum WriteError {
+    /// The directory is not one courant may replace; nothing was touched.
+    #[error(transparent)]
+    Refused(#[from] Refusal),
+    /// An I/O error of recovery, writing or renaming; the previous contents are kept.
+    #[error(transparent)]
+    Io(#[from] io::Error),
+}
 
 /// Replace `dir` with a directory holding exactly `files` (relative path, contents; parent
-/// directories are created), after recovering from interrupted earlier writes (module docs).
+/// directories are created) and its [`MANIFEST`], after recovering from interrupted earlier
+/// writes (module docs): [`stage_dir`] then [`Staged::commit`].
 ///
 /// # Errors
-/// Any I/O error of recovery, writing or renaming; `dir` then still holds the previous
-/// contents (or is absent if it was before).
-pub fn write_dir_atomically(dir: &Path, files: &[(String, String)]) -> io::Result<()> {
+/// [`WriteError::Refused`] when `dir` is not absent, empty or a courant output (nothing is
+/// touched); any I/O error of recovery, writing or renaming (`dir` then still holds the
+/// previous contents, or is absent if it was before).
+pub fn write_dir_atomically(dir: &Path, files: &[(String, String)]) -> Result<(), WriteError> {
+    stage_dir(dir, files)?.commit()
+}
+
+/// A directory written in full to its hidden staging sibling, not yet in place: several can be
+/// staged (so that a command writes all of its directories or none, without holding their
+/// contents in memory) and then committed. Dropped without [`Staged::commit`], the staging
+/// directory is removed and `dir` is untouched.
+#[derive(Debug)]
+pub struct Staged {
+    dir: PathBuf,
+    staging: PathBuf,
+    retired: PathBuf,
+    committed: bool,
+}
+
+/// Write `files` (and the [`MANIFEST`]) to the staging sibling of `dir`, after checking that
+/// `dir` may be replaced and recovering from interrupted earlier writes; `dir` itself is not
+/// touched yet.
+///
+/// # Errors
+/// As [`write_dir_atomically`]; the staging directory is removed.
+pub fn stage_dir(dir: &Path, files: &[(String, String)]) -> Result<Staged, WriteError> {
     let (parent, name) = parent_and_name(dir);
+    check_replaceable(dir)?;
     std::fs::create_dir_all(&parent)?;
     recover_interrupted(dir)?;
+    // Recovery may have put a set-aside courant output back: check what is there now.
+    check_replaceable(dir)?;
     let pid = std::process::id();
-    let staging = parent.join(format!(".{name}.partial-{pid}"));
-    let retired = parent.join(format!(".{name}.old-{pid}"));
-    let _ = std::fs::remove_dir_all(&staging);
-    std::fs::create_dir_all(&staging)?;
-    let written = files.iter().try_for_each(|(file, text)| {
-        let path = staging.join(file);
-        if let Some(dir) = path.parent() {
-            std::fs::create_dir_all(dir)?;
-        }
-        std::fs::write(path, text)
-    });
-    if let Err(e) = written.and_then(|()| replace(&staging, dir, &retired)) {
-        let _ = std::fs::remove_dir_all(&staging);
-        return Err(e);
+    let staged = Staged {
+        dir: dir.to_path_buf(),
+        staging: parent.join(format!(".{name}.partial-{pid}")),
+        retired: parent.join(format!(".{name}.old-{pid}")),
+        committed: false,
+    };
+    let _ = std::fs::remove_dir_all(&staged.staging);
+    std::fs::create_dir_all(&staged.staging)?;
+    let manifest = manifest_text(files.iter().map(|(f, _)| f.as_str()));
+    files
+        .iter()
+        .chain(std::iter::once(&(MANIFEST.to_string(), manifest)))
+        .try_for_each(|(file, text)| {
+            let path = staged.staging.join(file);
+            if let Some(dir) = path.parent() {
+                std::fs::create_dir_all(dir)?;
+            }
+            std::fs::write(path, text)
+        })?;
+    Ok(staged)
+}
+
+impl Staged {
+    /// The directory this will replace.
+    pub fn dir(&self) -> &Path {
+        &self.dir
     }
-    Ok(())
+
+    /// Put the staged directory in the place of `dir` (checked again: it may have changed since
+    /// it was staged).
+    ///
+    /// # Errors
+    /// As [`write_dir_atomically`]; the staging directory is removed.
+    pub fn commit(mut self) -> Result<(), WriteError> {
+        check_replaceable(&self.dir)?;
+        replace(&self.staging, &self.dir, &self.retired)?;
+        self.committed = true;
+        Ok(())
+    }
+}
+
+impl Drop for Staged {
+    fn drop(&mut self) {
+        if !self.committed {
+            let _ = std::fs::remove_dir_all(&self.staging);
+        }
+    }
 }
 
 /// Write `text` to `path` atomically: to a hidden temporary file beside it, then renamed over
@@ -230,9 +305,11 @@ mod tests {
         base
     }
 
+    /// A courant output holding `index.md` (with its manifest).
     fn make(dir: &Path, marker: &str) {
         std::fs::create_dir_all(dir).unwrap();
         std::fs::write(dir.join("index.md"), marker).unwrap();
+        std::fs::write(dir.join(MANIFEST), manifest_text(["index.md"])).unwrap();
     }
 
     fn entries(base: &Path) -> Vec<String> {
@@ -264,6 +341,28 @@ mod tests {
             ["scene"],
             "no staging directories left behind"
         );
+        std::fs::remove_dir_all(&base).unwrap();
+    }
+
+    #[test]
+    fn a_staged_directory_dropped_uncommitted_leaves_nothing() {
+        let base = scratch("staged");
+        let (kept, dropped) = (base.join("kept"), base.join("dropped"));
+        make(&kept, "previous");
+        let a = stage_dir(&kept, &[("index.md".into(), "new".into())]).unwrap();
+        let b = stage_dir(&dropped, &[("index.md".into(), "new".into())]).unwrap();
+        assert_eq!(
+            std::fs::read_to_string(kept.join("index.md")).unwrap(),
+            "previous",
+            "staging touches nothing"
+        );
+        drop(b);
+        a.commit().unwrap();
+        assert_eq!(
+            std::fs::read_to_string(kept.join("index.md")).unwrap(),
+            "new"
+        );
+        assert_eq!(entries(&base), ["kept"], "the dropped staging is gone");
         std::fs::remove_dir_all(&base).unwrap();
     }
 

@@ -2,6 +2,9 @@
 //!
 //! - [`atomic`]: files and directories written whole or not at all (staged, then renamed or
 //!   exchanged into place), with recovery of interrupted writes.
+//! - [`manifest`]: the mark of a courant output directory (a manifest of what was written) and
+//!   the rule that only an absent, empty or marked directory is replaced.
+//! - [`file_kind`]: what a path is (file, directory, FIFO, device), without opening it.
 //! - [`clock`]: ISO 8601 UTC dates for reports and JUnit timestamps.
 //! - [`parallel`]: collecting parallel work in input order, so that the first error (and every
 //!   result) does not depend on the thread count.
@@ -11,4 +14,6 @@
 
 pub mod atomic;
 pub mod clock;
+pub mod file_kind;
+pub mod manifest;
 pub mod parallel;

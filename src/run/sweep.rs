@@ -51,7 +51,7 @@ fn sweep_point(
             stiffness: penalty.stiffness,
         }
     };
-    let critical = ContactCriticalStep::of(problem, &scheme);
+    let critical = ContactCriticalStep::of(problem, &scheme)?;
     Ok(SweepPoint {
         beta_s,
         ratio,

@@ -3,6 +3,7 @@
 
 use super::error::{SceneError, Source};
 use super::geometry::{Geometry, field};
+use super::magnitude::{self, Scale};
 use super::material::Material;
 use super::schema::{RawEnd, RawField, RawLoad, RawLoadKind, RawScene, RawSupport, RawTimeKind};
 use courant_solver::{
@@ -48,7 +49,19 @@ pub(super) fn model_of(
         velocity: nodal(&raw.initial.velocity),
     };
     debug_assert!(std::ptr::eq(raw, g.raw));
-    Model::new(bar, supports, &loads, initial).map_err(|e| {
+    for (key, field) in [
+        ("initial.displacement", &raw.initial.displacement),
+        ("initial.velocity", &raw.initial.velocity),
+    ] {
+        if let Some(f) = field {
+            let values = match f.get_ref() {
+                RawField::Constant(c) => vec![*c],
+                RawField::Linear(l) => l.linear.to_vec(),
+            };
+            magnitude::inputs(src, Some(f.span()), key, &key["initial.".len()..], values)?;
+        }
+    }
+    let model = Model::new(bar, supports, &loads, initial).map_err(|e| {
         let (key, span) = match &e {
             InputError::NodeValue {
                 field: "initial displacement",
@@ -67,7 +80,38 @@ pub(super) fn model_of(
             _ => ("load", raw.loads.first().map(|l| l.span())),
         };
         src.error(span, key, e.to_string())
-    })
+    })?;
+    check_scales(src, raw, &model)?;
+    Ok(model)
+}
+
+/// The derived scales of `model` within [`magnitude`]'s bounds, blaming the input each comes
+/// from (stiffness and frequency: the modulus or layers; mass: the density or layers; a load:
+/// the first load).
+pub(super) fn check_scales(src: &Source, raw: &RawScene, model: &Model) -> Result<(), SceneError> {
+    let material = |key: &'static str, field: &Option<Spanned<RawField>>| match (
+        field,
+        &raw.material.layers,
+    ) {
+        (Some(f), _) => (Some(f.span()), key),
+        (None, Some(l)) => (Some(l.span()), "material.layers"),
+        // A default density: the mass comes from the area and the element length.
+        (None, None) => match &raw.bar.area {
+            Some(a) => (Some(a.span()), "bar.area"),
+            None => (Some(raw.mesh.elements.span()), "mesh.elements"),
+        },
+    };
+    magnitude::model(
+        src,
+        |scale| match scale {
+            Scale::Stiffness | Scale::Frequency => {
+                material("material.modulus", &raw.material.modulus)
+            }
+            Scale::Mass => material("material.density", &raw.material.density),
+            Scale::Load => (raw.loads.first().map(|l| l.span()), "load"),
+        },
+        model,
+    )
 }
 
 /// The bar of a scene with `elements` elements (mesh spacing and material as stated).
@@ -206,6 +250,11 @@ fn load_of(src: &Source, spanned: &Spanned<RawLoad>, last_node: usize) -> Result
     if !raw.value.is_finite() {
         return Err(fail(format!("value = {} must be finite", raw.value)));
     }
+    let span = Some(spanned.span());
+    magnitude::input(src, span.clone(), "load", "value", raw.value)?;
+    let times = [raw.start, raw.duration].into_iter().flatten();
+    let table = raw.table.iter().flatten().flat_map(|p| [p[0], p[1]]);
+    magnitude::inputs(src, span, "load", "time or table entry", times.chain(table))?;
     match (raw.kind, raw.end, raw.node) {
         (RawLoadKind::Traction, Some(end), None) => Ok(Load::Traction {
             end: if end == RawEnd::Left {

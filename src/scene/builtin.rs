@@ -78,7 +78,16 @@ pub fn builtin_scene(name: &str) -> Option<Result<Scene, SceneError>> {
 /// Resolve a command-line argument: a path to a `.toml` file, or the name of a built-in scene.
 pub fn resolve(arg: &str) -> Result<Scene, SceneError> {
     let path = Path::new(arg);
+    // A name ending in .toml is a path even when it does not exist (and a FIFO or device named
+    // so is refused by what it is, never opened); a built-in name wins over a directory of the
+    // same name; any other existing path is read as a scene file, which names what it is.
     if arg.ends_with(".toml") || path.is_file() {
+        return Scene::from_path(path);
+    }
+    if let Some(scene) = builtin_scene(arg) {
+        return scene;
+    }
+    if std::fs::metadata(path).is_ok() {
         return Scene::from_path(path);
     }
     builtin_scene(arg).unwrap_or_else(|| {

@@ -2,7 +2,9 @@
 //! penalty, bipenalty, predictor-corrector and Lagrange-multiplier schemes, and the stability
 //! sweep of the critical Courant number against the penalty stiffness.
 
+use super::budget;
 use super::error::{SceneError, Source, positive};
+use super::magnitude;
 use super::schema::{
     RawContact, RawContactBar, RawContactCourantUnit, RawContactScene, RawContactStability,
 };
@@ -107,20 +109,18 @@ fn bar(
     area: f64,
 ) -> Result<(Bar, ImpactBar), SceneError> {
     let raw = spanned.get_ref();
-    let fail = |msg: String| src.error(Some(spanned.span()), key, msg);
+    let span = Some(spanned.span());
+    let fail = |msg: String| src.error(span.clone(), key, msg);
     let (e, rho) = (raw.modulus.unwrap_or(1.0), raw.density.unwrap_or(1.0));
     for (name, v) in [("length", raw.length), ("modulus", e), ("density", rho)] {
         if !(v.is_finite() && v > 0.0) {
             return Err(fail(format!("{name} = {v} must be positive and finite")));
         }
+        magnitude::input(src, span.clone(), key, name, v)?;
     }
-    if raw.elements < 1 {
-        return Err(fail(format!(
-            "elements = {} must be at least 1",
-            raw.elements
-        )));
-    }
-    let mesh = Mesh::uniform(raw.length, raw.elements as usize).map_err(|e| fail(e.to_string()))?;
+    let elements =
+        budget::element_count(src, span.clone(), &format!("{key}.elements"), raw.elements)?;
+    let mesh = Mesh::uniform(raw.length, elements).map_err(|e| fail(e.to_string()))?;
     let bar = Bar::homogeneous(mesh, e, rho, area).map_err(|e| fail(e.to_string()))?;
     let impact =
         ImpactBar::from_material(e, rho, area, raw.length).map_err(|e| fail(e.to_string()))?;
@@ -134,10 +134,21 @@ pub(super) fn cases(
     study: &RawContact,
 ) -> Result<Vec<ContactCase>, SceneError> {
     let area = match &raw.bar.area {
-        Some(a) => positive(src, a, "bar.area")?,
+        Some(a) => {
+            let area = positive(src, a, "bar.area")?;
+            magnitude::input(src, Some(a.span()), "bar.area", "area", area)?;
+            area
+        }
         None => 1.0,
     };
     let velocity = positive(src, &study.velocity, "contact.velocity")?;
+    magnitude::input(
+        src,
+        Some(study.velocity.span()),
+        "contact.velocity",
+        "velocity",
+        velocity,
+    )?;
     let gap = match &study.gap {
         None => 0.0,
         Some(g) if g.get_ref().is_finite() && *g.get_ref() >= 0.0 => *g.get_ref(),
@@ -189,6 +200,21 @@ pub(super) fn cases(
     };
     let reference =
         reference.map_err(|e| src.error(Some(study.problem.span()), "contact", e.to_string()))?;
+    if let Some(g) = &study.gap {
+        magnitude::input(src, Some(g.span()), "contact.gap", "gap", gap)?;
+    }
+    for (body, key) in problem
+        .bodies()
+        .iter()
+        .zip(["contact.striker", "contact.target"])
+    {
+        let span = if key == "contact.striker" {
+            Some(study.striker.span())
+        } else {
+            study.target.as_ref().map(|t| t.span())
+        };
+        magnitude::model(src, |_| (span.clone(), key), body)?;
+    }
     let courants = study.courant.get_ref().values();
     if courants.is_empty() {
         return Err(src.error(
@@ -256,12 +282,19 @@ pub(super) fn cases(
                     format!("{bad} must be positive and finite"),
                 ));
             }
+            magnitude::inputs(
+                src,
+                Some(r.span()),
+                "contact.ratio",
+                "ratio",
+                values.iter().copied(),
+            )?;
             let named = values.len() > 1;
             values
                 .into_iter()
                 .map(|v| {
                     let suffix = if named {
-                        format!("-r{v}")
+                        format!("-r{}", super::names::number(v))
                     } else {
                         String::new()
                     };
@@ -269,7 +302,16 @@ pub(super) fn cases(
                 })
                 .collect()
         }
-        (None, Some(b)) => vec![(String::new(), MassPenalty::Dimensionless(*b.get_ref()))],
+        (None, Some(b)) => {
+            magnitude::input(
+                src,
+                Some(b.span()),
+                "contact.beta_m",
+                "beta_m",
+                *b.get_ref(),
+            )?;
+            vec![(String::new(), MassPenalty::Dimensionless(*b.get_ref()))]
+        }
         (None, None) => vec![(String::new(), MassPenalty::Ratio(1.0))],
     };
     let betas = study
@@ -278,6 +320,38 @@ pub(super) fn cases(
         .map(|b| b.get_ref().values())
         .unwrap_or_default();
     let beta_span = study.beta_s.as_ref().map(|b| b.span());
+    magnitude::inputs(
+        src,
+        beta_span.clone(),
+        "contact.beta_s",
+        "beta_s",
+        betas.iter().copied(),
+    )?;
+    let schemes = study.schemes.get_ref().values();
+    let penalised = schemes
+        .iter()
+        .filter(|s| s.as_str() != "lagrange-multiplier")
+        .count();
+    // cd-penalty takes no mass penalty; the other penalty schemes one case per ratio.
+    let per_beta = |s: &String| {
+        if s.as_str() == "cd-penalty" {
+            1
+        } else {
+            mass_penalties.len()
+        }
+    };
+    let penalty_cases: usize = schemes
+        .iter()
+        .filter(|s| s.as_str() != "lagrange-multiplier")
+        .map(|s| per_beta(s) * betas.len().max(1))
+        .sum();
+    let cases = (schemes.len() - penalised + penalty_cases) * courants.len();
+    budget::validation(
+        src,
+        &(Some(study.schemes.span()), "contact.schemes"),
+        cases,
+        cases as f64 * problem.node_count() as f64 * budget::CONTACT_WEIGHT,
+    )?;
     let stability = StabilityPolicy {
         allow_unstable: study.allow_unstable,
         ..StabilityPolicy::default()
@@ -287,6 +361,17 @@ pub(super) fn cases(
         let penalty_scheme =
             |beta_s: f64, mass: MassPenalty| -> Result<(ContactScheme, (f64, f64)), String> {
                 let penalty = problem.penalty(beta_s, mass).map_err(|e| e.to_string())?;
+                for (what, value) in [
+                    ("penalty stiffness k_s = beta_s E A/h", penalty.stiffness),
+                    ("penalty mass m_p = beta_m rho A h", penalty.mass),
+                ] {
+                    if !magnitude::within(value) {
+                        return Err(format!(
+                            "beta_s = {beta_s:e} gives the {what} = {value:e}: {}",
+                            magnitude::rule()
+                        ));
+                    }
+                }
                 let dimensionless = problem.dimensionless(penalty);
                 let scheme = match label.as_str() {
                     "cd-penalty" => ContactScheme::Penalty {
@@ -318,11 +403,8 @@ pub(super) fn cases(
                     .map(|(suffix, mass, b)| {
                         let (scheme, dimensionless) = penalty_scheme(b, mass)
                             .map_err(|m| src.error(beta_span.clone(), "contact.beta_s", m))?;
-                        Ok((
-                            format!("{label}{suffix}-bs{b}"),
-                            scheme,
-                            Some(dimensionless),
-                        ))
+                        let name = format!("{label}{suffix}-bs{}", super::names::number(b));
+                        Ok((name, scheme, Some(dimensionless)))
                     })
                     .collect::<Result<_, SceneError>>()?
             }
@@ -337,7 +419,7 @@ pub(super) fn cases(
         for (name, scheme, penalty) in variants {
             for &courant in &courants {
                 let case_name = if courants.len() > 1 {
-                    format!("{name}-co{courant}")
+                    format!("{name}-co{}", super::names::number(courant))
                 } else {
                     name.clone()
                 };
@@ -354,7 +436,9 @@ pub(super) fn cases(
                         scheme
                             .validate()
                             .map_err(|e| fail("contact.beta_s", e.to_string()))?;
-                        courant * ContactCriticalStep::of(&problem, &scheme).applicable
+                        let critical = ContactCriticalStep::of(&problem, &scheme)
+                            .map_err(|e| fail("contact.courant_unit", e.to_string()))?;
+                        courant * critical.applicable
                     }
                 };
                 let steps_f = (end_time / dt).ceil();
@@ -365,6 +449,13 @@ pub(super) fn cases(
                         format!("case {case_name}: needs {steps_f:.2e} steps; at most 1e8"),
                     ));
                 }
+                magnitude::courant(
+                    src,
+                    Some(study.courant.span()),
+                    "contact.courant",
+                    &case_name,
+                    dt / problem.stiffest_transit(),
+                )?;
                 let integrator = ContactIntegrator {
                     dt,
                     scheme,
@@ -412,13 +503,21 @@ pub(super) fn sweep(
         ));
     }
     let [lo, hi] = *study.beta_s_range.get_ref();
+    let range_span = Some(study.beta_s_range.span());
     if !(lo.is_finite() && hi.is_finite() && lo > 0.0 && hi >= lo) {
         return Err(src.error(
-            Some(study.beta_s_range.span()),
+            range_span,
             "contact_stability.beta_s_range",
             format!("[{lo}, {hi}] must be positive, finite and ordered"),
         ));
     }
+    magnitude::inputs(
+        src,
+        range_span,
+        "contact_stability.beta_s_range",
+        "beta_s",
+        [lo, hi],
+    )?;
     let points = *study.points.get_ref();
     if !(2..=1000).contains(&points) {
         return Err(src.error(
@@ -427,6 +526,7 @@ pub(super) fn sweep(
             format!("{points} must lie in 2..=1000"),
         ));
     }
+    // Both ends within the magnitude bounds: hi/lo <= 1e100 stays finite.
     let beta_s = (0..points)
         .map(|i| lo * (hi / lo).powf(i as f64 / (points - 1) as f64))
         .collect();
@@ -442,6 +542,13 @@ pub(super) fn sweep(
                 format!("{r} must be positive and finite"),
             ));
         }
+        magnitude::input(
+            src,
+            Some(study.ratios.span()),
+            "contact_stability.ratios",
+            "r",
+            r,
+        )?;
         ratios.push(Some(r));
     }
     Ok(StabilitySweep {

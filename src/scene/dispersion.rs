@@ -1,6 +1,7 @@
 //! Dispersion scenes: single-mode runs of central difference with each mass kind against the
 //! fully discrete dispersion relation (methods.md §5).
 
+use super::budget;
 use super::error::{SceneError, Source};
 use super::geometry::Geometry;
 use super::mass::{mass_name, parse_mass};
@@ -71,6 +72,12 @@ pub(super) fn build(
             format!("{bad} must be positive and finite"),
         ));
     }
+    budget::validation(
+        src,
+        &(Some(study.masses.span()), "dispersion.masses"),
+        study.masses.get_ref().values().len() * courants.len(),
+        0.0,
+    )?;
     let mut cases = Vec::new();
     for raw_label in study.masses.get_ref().values() {
         let label = raw_label.trim();
@@ -119,7 +126,7 @@ pub(super) fn build(
                 mass_name(mass)
             };
             cases.push(DispersionCase {
-                name: format!("{prefix}-co{co}"),
+                name: format!("{prefix}-co{}", super::names::number(co)),
                 mass,
                 fourth_order,
                 courant: co,

@@ -10,7 +10,7 @@ use toml::Spanned;
 pub struct SceneError {
     /// Path (or built-in name) of the scene file.
     pub file: String,
-    /// 1-based line.
+    /// 1-based line (0 for an error about the file as a whole: it is not shown then).
     pub line: usize,
     /// 1-based column.
     pub column: usize,
@@ -104,7 +104,34 @@ impl Source<'_> {
 
     /// Convert a TOML deserialisation error, recovering the dotted key from the text at its span.
     pub fn from_toml(&self, err: &toml::de::Error) -> SceneError {
-        let key = err.span().map(|s| self.key_at(s.start)).unwrap_or_default();
+        let mut key = err.span().map(|s| self.key_at(s.start)).unwrap_or_default();
+        // A missing key is named by the message; at the top level the span is the whole file,
+        // whose first line may be a comment, not a key.
+        if let Some(field) = err
+            .message()
+            .strip_prefix("missing field `")
+            .and_then(|m| m.split('`').next())
+        {
+            // toml gives an empty span at 0 for a key missing at the top level.
+            let top_level = err.span().is_none_or(|s| s.is_empty() && s.start == 0);
+            if top_level {
+                return SceneError {
+                    file: self.file.to_string(),
+                    line: 0,
+                    column: 0,
+                    key: field.to_string(),
+                    message: format!(
+                        "missing: the file has no `[{field}]` table, which every scene of this kind needs"
+                    ),
+                    also: Vec::new(),
+                };
+            }
+            key = if key.is_empty() {
+                field.to_string()
+            } else {
+                format!("{key}.{field}")
+            };
+        }
         let message = err
             .message()
             .trim()
@@ -126,6 +153,28 @@ impl Source<'_> {
                 "expected a positive number or a list of positive numbers",
             );
         self.error(err.span(), &key, message)
+    }
+
+    /// The span of the value of `key = value` on a line of its own in the table that starts
+    /// at `table` (a table's span: its header, for an array of tables), up to the next table
+    /// header, for keys deserialised without a span of their own; `table` when there is none.
+    pub fn value_span(&self, table: Range<usize>, key: &str) -> Range<usize> {
+        let start = table.start.min(self.text.len());
+        let mut offset = start;
+        for (i, line) in self.text[start..].split_inclusive('\n').enumerate() {
+            let trimmed = line.trim_start();
+            if i > 0 && trimmed.starts_with('[') {
+                break;
+            }
+            if let Some(rest) = trimmed.strip_prefix(key)
+                && let Some(value) = rest.trim_start().strip_prefix('=')
+            {
+                let start = offset + (line.len() - value.trim_start().len());
+                return start..start + value.trim().len();
+            }
+            offset += line.len();
+        }
+        table
     }
 
     /// 1-based (line, column) of a byte offset.
@@ -154,6 +203,9 @@ impl Source<'_> {
         };
         if let Some(h) = header(line) {
             return h;
+        }
+        if line.starts_with('#') {
+            return String::new();
         }
         let table = self.text[..line_start]
             .lines()

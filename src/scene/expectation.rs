@@ -390,6 +390,15 @@ pub(super) fn expectation(
     } = *ctx;
     let raw = spanned.get_ref();
     let fail = |msg: String| src.error(Some(spanned.span()), "expect", msg);
+    for (name, value) in [("min", raw.min), ("max", raw.max), ("at", raw.at)] {
+        if let Some(v) = value.filter(|v| !v.is_finite()) {
+            return Err(src.error(
+                Some(src.value_span(spanned.span(), name)),
+                &format!("expect.{name}"),
+                format!("{name} = {v} is not a finite number; a bound (or time) must be one"),
+            ));
+        }
+    }
     let metric = Metric::parse(&raw.metric).ok_or_else(|| {
         let all: Vec<&str> = METRICS
             .iter()

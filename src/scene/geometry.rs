@@ -1,7 +1,9 @@
 //! Bar geometry and material as a scene states them (`[bar]`, `[material]`, `[mesh]`),
 //! validated, with the transit time of the continuum bar.
 
+use super::budget;
 use super::error::{SceneError, Source, positive};
+use super::magnitude;
 use super::material::Material;
 use super::schema::{RawField, RawLinear, RawScene};
 use courant_solver::{Field, Mesh};
@@ -22,7 +24,13 @@ pub struct Geometry<'r> {
 impl<'r> Geometry<'r> {
     pub(super) fn read(src: &Source, raw: &'r RawScene) -> Result<Self, SceneError> {
         let optional = |v: &Option<Spanned<f64>>, key: &str| {
-            v.as_ref().map(|v| positive(src, v, key)).transpose()
+            v.as_ref()
+                .map(|v| {
+                    let x = positive(src, v, key)?;
+                    magnitude::input(src, Some(v.span()), key, key, x)?;
+                    Ok(x)
+                })
+                .transpose()
         };
         let counts = raw.mesh.elements.get_ref().values();
         let span = raw.mesh.elements.span();
@@ -33,12 +41,8 @@ impl<'r> Geometry<'r> {
                 "the list is empty; give at least one element count",
             ));
         }
-        if let Some(bad) = counts.iter().find(|&&n| n < 1) {
-            return Err(src.error(
-                Some(span),
-                "mesh.elements",
-                format!("{bad} must be at least 1"),
-            ));
+        for &n in &counts {
+            budget::element_count(src, Some(span.clone()), "mesh.elements", n)?;
         }
         let material = match (&raw.material.layers, &raw.material.modulus) {
             (Some(layers), None) if raw.material.density.is_none() => {
@@ -57,6 +61,7 @@ impl<'r> Geometry<'r> {
                                 format!("{name} = {v} must be positive and finite"),
                             ));
                         }
+                        magnitude::input(src, Some(layers.span()), "material.layers", name, v)?;
                     }
                     list.push((l.thickness, l.modulus, density));
                 }
@@ -96,18 +101,20 @@ impl<'r> Geometry<'r> {
                     Field::Linear { left, right } => [*left, *right],
                     Field::PerElement(_) => [1.0, 1.0],
                 };
+                let span = if key == "material.modulus" {
+                    raw.material.modulus.as_ref()
+                } else {
+                    raw.material.density.as_ref()
+                }
+                .map(|s| s.span());
                 if let Some(bad) = ends.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
-                    let span = if key == "material.modulus" {
-                        raw.material.modulus.as_ref()
-                    } else {
-                        raw.material.density.as_ref()
-                    };
                     return Err(src.error(
-                        span.map(|s| s.span()),
+                        span,
                         key,
                         format!("{bad} must be positive and finite (along the whole bar)"),
                     ));
                 }
+                magnitude::inputs(src, span, key, &key["material.".len()..], ends)?;
             }
         }
         let layered_length = match &material {

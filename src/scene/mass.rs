@@ -46,7 +46,7 @@ pub fn mass_name(kind: MassKind) -> String {
     match kind {
         MassKind::Lumped => "lmm".into(),
         MassKind::Consistent => "cmm".into(),
-        MassKind::Averaged { beta } => format!("amm{beta}"),
-        MassKind::Reciprocal { beta } => format!("rmm{beta}"),
+        MassKind::Averaged { beta } => format!("amm{}", super::names::number(beta)),
+        MassKind::Reciprocal { beta } => format!("rmm{}", super::names::number(beta)),
     }
 }

@@ -14,6 +14,10 @@
 //!   [`material`], [`bar`], [`stepping`], [`outputs`]), [`spectrum`], [`dispersion`],
 //!   [`contact`]; [`expectation`] reads `[[expect]]`; [`reference`](mod@reference) binds a case to its analytic
 //!   reference in `courant-references` (validated against the model, evaluated by `compare`).
+//! - [`magnitude`]: the range of magnitudes inputs and derived scales may take, so that no
+//!   numerics overflow; [`budget`]: the size, work and output memory a scene may ask for
+//!   ([`work`] estimates them);
+//!   [`names`]: case names, bounded and safe as file names.
 //! - [`builtin`]: the scenes compiled into the binary; [`studies`]: the report's convergence and
 //!   work-precision studies, each a built-in scene derived onto a sequence of meshes.
 //!
@@ -22,6 +26,7 @@
 //! verdicts, reports.
 
 pub mod bar;
+pub mod budget;
 pub mod builtin;
 pub mod cases;
 pub mod contact;
@@ -29,8 +34,10 @@ pub mod dispersion;
 pub mod error;
 pub mod expectation;
 pub mod geometry;
+pub mod magnitude;
 pub mod mass;
 pub mod material;
+pub mod names;
 pub mod outputs;
 pub mod parse;
 pub mod reference;
@@ -39,6 +46,7 @@ pub mod spectrum;
 pub mod stepping;
 pub mod studies;
 pub mod time_stepping;
+pub mod work;
 
 pub use cases::{Case, Scene};
 pub use error::SceneError;

@@ -1,11 +1,13 @@
 //! Reading a scene: TOML to a validated [`Scene`], dispatched by study kind.
 
+use super::budget;
 use super::cases::Scene;
 use super::error::{SceneError, Source, collect_all};
 use super::expectation::{ExpectContext, Finding, Study, expectation, finding};
 use super::geometry::Geometry;
 use super::schema::{RawContactScene, RawFinding, RawHeader, RawScene};
-use super::{contact, dispersion, spectrum, time_stepping};
+use super::work::Work;
+use super::{contact, dispersion, names, spectrum, time_stepping};
 use courant_solver::MassKind;
 use toml::Spanned;
 
@@ -71,14 +73,22 @@ impl Scene {
     /// Read a scene from a file; its name is the file stem.
     pub fn from_path(path: &std::path::Path) -> Result<Scene, SceneError> {
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError {
+        let whole_file = |message: String| SceneError {
             file: file.clone(),
             line: 0,
             column: 0,
             key: String::new(),
-            message: format!("cannot read the file: {e}"),
+            message,
             also: Vec::new(),
-        })?;
+        };
+        // Never open a FIFO or a device: reading one may block forever or never end.
+        if let Some(kind) = crate::io::file_kind::non_regular_kind(path) {
+            return Err(whole_file(format!(
+                "is a {kind}, not a scene file (a scene is a regular .toml file)"
+            )));
+        }
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| whole_file(format!("cannot read the scene file: {e}")))?;
         let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
         Scene::parse(name, &file, &text)
     }
@@ -127,6 +137,7 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
         if let Some(dup) = names.iter().find(|n| !seen.insert(*n)) {
             return Err(src.error(None, kind, format!("case {dup} appears twice")));
         }
+        names::check(src, None, kind, &names)?;
         let masses: Vec<MassKind> = spectra.first().map_or(Vec::new(), |c| c.masses.clone());
         let ctx = ExpectContext {
             names: &names,
@@ -137,36 +148,94 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             masses: &masses,
         };
         let expectations = collect_all(raw.expectations.iter().map(|e| expectation(src, e, &ctx)))?;
-        return Ok(Scene {
+        let elements = (Some(raw.mesh.elements.span()), "mesh.elements");
+        return within_budget(
+            src,
+            [&elements, &elements, &elements],
+            Scene {
+                name: name.to_string(),
+                description: raw.scene.description.get_ref().clone(),
+                source: raw.scene.source.get_ref().clone(),
+                cases: Vec::new(),
+                spectra,
+                dispersion,
+                contact: Vec::new(),
+                contact_sweeps: Vec::new(),
+                expectations,
+                stability: raw.scene.stability,
+                findings: findings(src, &raw.findings, &names, raw.scene.stability)?,
+            },
+        );
+    }
+    budget::time_stepping_validation(src, &raw, &geometry.element_counts)?;
+    let (cases, expectations) = time_stepping::build(src, &raw, &geometry)?;
+    let stepping = raw.integrator.as_ref().and_then(|i| {
+        i.courant
+            .as_ref()
+            .map(|c| (c.span(), "integrator.courant"))
+            .or(i.dt.as_ref().map(|d| (d.span(), "integrator.dt")))
+    });
+    let (stepping_span, stepping_key) = (
+        stepping.as_ref().map(|s| s.0.clone()),
+        stepping.as_ref().map_or("integrator", |s| s.1),
+    );
+    for case in &cases {
+        super::magnitude::courant(
+            src,
+            stepping_span.clone(),
+            stepping_key,
+            &case.name,
+            case.integrator.dt / case.critical.element_transit,
+        )?;
+    }
+    let names: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
+    names::check(src, stepping_span, stepping_key, &names)?;
+    let findings = findings(src, &raw.findings, &names, raw.scene.stability)?;
+    let output = &raw.output;
+    let steps_blame = (Some(raw.mesh.elements.span()), "mesh.elements");
+    let output_blame = match (
+        &output.history_every,
+        &output.energy_every,
+        &output.profile_times,
+    ) {
+        (Some(h), _, _) => (Some(h.span()), "output.history_every"),
+        (None, Some(e), _) => (Some(e.span()), "output.energy_every"),
+        (None, None, Some(p)) => (Some(p.span()), "output.profile_times"),
+        (None, None, None) => (Some(raw.mesh.elements.span()), "mesh.elements"),
+    };
+    let reference_blame = (
+        raw.reference.kind.as_ref().map(|k| k.span()),
+        "reference.kind",
+    );
+    within_budget(
+        src,
+        [&steps_blame, &output_blame, &reference_blame],
+        Scene {
             name: name.to_string(),
             description: raw.scene.description.get_ref().clone(),
             source: raw.scene.source.get_ref().clone(),
-            cases: Vec::new(),
-            spectra,
-            dispersion,
+            cases,
+            spectra: Vec::new(),
+            dispersion: Vec::new(),
             contact: Vec::new(),
             contact_sweeps: Vec::new(),
             expectations,
             stability: raw.scene.stability,
-            findings: findings(src, &raw.findings, &names, raw.scene.stability)?,
-        });
-    }
-    let (cases, expectations) = time_stepping::build(src, &raw, &geometry)?;
-    let names: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
-    let findings = findings(src, &raw.findings, &names, raw.scene.stability)?;
-    Ok(Scene {
-        name: name.to_string(),
-        description: raw.scene.description.into_inner(),
-        source: raw.scene.source.into_inner(),
-        cases,
-        spectra: Vec::new(),
-        dispersion: Vec::new(),
-        contact: Vec::new(),
-        contact_sweeps: Vec::new(),
-        expectations,
-        stability: raw.scene.stability,
-        findings,
-    })
+            findings,
+        },
+    )
+}
+
+/// `scene` when its work, output and reference stay within [`budget`]'s limits, else the error
+/// at the key `blame` names for each (`[node-steps, output values, reference]`).
+fn within_budget(
+    src: &Source,
+    blame: [&budget::Blame; 3],
+    scene: Scene,
+) -> Result<Scene, SceneError> {
+    let work = Work::of(&scene).map_err(|why| src.error(blame[2].0.clone(), blame[2].1, why))?;
+    work.check(src, blame)?;
+    Ok(scene)
 }
 
 fn build_contact(name: &str, src: &Source, raw: RawContactScene) -> Result<Scene, SceneError> {
@@ -195,6 +264,22 @@ fn build_contact(name: &str, src: &Source, raw: RawContactScene) -> Result<Scene
     } else {
         vec!["stability".into()]
     };
+    let (steps_blame, names_blame) = match (&raw.contact, &raw.contact_stability) {
+        (Some(c), _) => (
+            (Some(c.end_time.span()), "contact.end_time"),
+            (Some(c.schemes.span()), "contact.schemes"),
+        ),
+        (None, Some(s)) => (
+            (Some(s.points.span()), "contact_stability.points"),
+            (Some(s.points.span()), "contact_stability.points"),
+        ),
+        (None, None) => ((None, "contact"), (None, "contact")),
+    };
+    names::check(src, names_blame.0.clone(), names_blame.1, &names)?;
+    let output_blame = match raw.contact.as_ref().and_then(|c| c.history_every.as_ref()) {
+        Some(h) => (Some(h.span()), "contact.history_every"),
+        None => steps_blame.clone(),
+    };
     let ctx = ExpectContext {
         names: &names,
         has_reference: false,
@@ -204,19 +289,23 @@ fn build_contact(name: &str, src: &Source, raw: RawContactScene) -> Result<Scene
         masses: &[],
     };
     let expectations = collect_all(raw.expectations.iter().map(|e| expectation(src, e, &ctx)))?;
-    Ok(Scene {
-        name: name.to_string(),
-        description: raw.scene.description.get_ref().clone(),
-        source: raw.scene.source.get_ref().clone(),
-        cases: Vec::new(),
-        spectra: Vec::new(),
-        dispersion: Vec::new(),
-        contact: cases,
-        contact_sweeps: sweeps,
-        expectations,
-        stability: raw.scene.stability,
-        findings: findings(src, &raw.findings, &names, raw.scene.stability)?,
-    })
+    within_budget(
+        src,
+        [&steps_blame, &output_blame, &steps_blame],
+        Scene {
+            name: name.to_string(),
+            description: raw.scene.description.get_ref().clone(),
+            source: raw.scene.source.get_ref().clone(),
+            cases: Vec::new(),
+            spectra: Vec::new(),
+            dispersion: Vec::new(),
+            contact: cases,
+            contact_sweeps: sweeps,
+            expectations,
+            stability: raw.scene.stability,
+            findings: findings(src, &raw.findings, &names, raw.scene.stability)?,
+        },
+    )
 }
 
 /// The scene's `[[finding]]` tables.

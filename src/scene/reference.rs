@@ -8,6 +8,10 @@ use courant_references::DalembertBar;
 use courant_references::graded::{GradedBar, Layer, LayeredBar};
 use courant_solver::{Field, Model, Support, TimeFunction};
 
+/// Points per bar length at which `compare` samples the graded field for its extreme value
+/// (what an overshoot is measured against); here so that the scene's work budget counts them.
+pub const GRADED_EXTREME_SAMPLES: usize = 4000;
+
 /// An analytic reference for a case.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Reference {

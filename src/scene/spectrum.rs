@@ -2,12 +2,13 @@
 //! (the seed's Fig. 6), beside the continuum and the closed-form discrete spectra.
 
 use super::bar::bar_of;
+use super::budget;
 use super::error::{SceneError, Source};
 use super::geometry::Geometry;
 use super::mass::parse_mass;
 use super::schema::{RawScene, RawSpectrum};
 use courant_references::spectra::{BarEnds, UniformBar};
-use courant_solver::{MassKind, Model, Support, Supports};
+use courant_solver::{MassKind, MassOperator, Model, Support, Supports};
 
 /// One spectrum case: an end condition and a mesh.
 #[derive(Debug, Clone)]
@@ -54,6 +55,12 @@ pub(super) fn build(
     }
     let uniform =
         geometry.grading == 1.0 && !geometry.equal_transit && geometry.material.is_homogeneous();
+    budget::validation(
+        src,
+        &(Some(spectrum.ends.span()), "spectrum.ends"),
+        ends.len() * geometry.element_counts.len(),
+        0.0,
+    )?;
     let mut cases = Vec::new();
     for end in &ends {
         let (supports, closed_ends) = match end.as_str() {
@@ -116,6 +123,17 @@ pub(super) fn build(
                 ));
             }
             let model = Model::unloaded(bar, supports);
+            // The mass matrices the spectra need, built now: a failure names its place here,
+            // not after the other cases have run.
+            for &kind in &masses {
+                MassOperator::new(&model, kind).map_err(|e| {
+                    fail(
+                        spectrum.masses.span(),
+                        "spectrum.masses",
+                        format!("{end} with {elements} elements: {e}"),
+                    )
+                })?;
+            }
             cases.push(SpectrumCase {
                 name: format!("{end}-n{elements}"),
                 model,

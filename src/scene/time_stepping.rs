@@ -17,8 +17,8 @@ use courant_solver::{CentralDifference, CriticalStep, OutputRequest};
 /// then every `ceil(steps / MAX_SAMPLES)`-th step.
 pub const MAX_SAMPLES: usize = 10_000;
 
-/// Largest `steps x elements` a scene case may ask for (about 4 minutes at 2.5 ns per node-step).
-pub const MAX_NODE_STEPS: f64 = 1e11;
+/// Largest `steps x elements` a scene case (and a whole scene) may ask for.
+pub use super::budget::MAX_NODE_STEPS;
 
 /// The cases and expectations of a time-stepping scene.
 pub(super) fn build(
@@ -64,7 +64,10 @@ pub(super) fn build(
                         courant_solver::MassOperator::new(&model, mass).map_err(|e| {
                             src.error(Some(stepping.span.clone()), stepping.key, e.to_string())
                         })?;
-                    Some(CriticalStep::of(&model, mass, &operator).exact)
+                    let critical = CriticalStep::of(&model, mass, &operator).map_err(|e| {
+                        src.error(Some(stepping.span.clone()), stepping.key, e.to_string())
+                    })?;
+                    Some(critical.exact)
                 }
                 _ => None,
             };
@@ -80,9 +83,9 @@ pub(super) fn build(
                     case_name += &format!("{}-", mass_name(mass));
                 }
                 if stepping.by_courant {
-                    case_name += &format!("co{value}");
+                    case_name += &format!("co{}", super::names::number(value));
                 } else {
-                    case_name += &format!("dt{value}");
+                    case_name += &format!("dt{}", super::names::number(value));
                 }
                 let fail = |msg: String| {
                     src.error(

@@ -57,22 +57,8 @@ impl GradedBar {
             return f64::NAN;
         }
         let (xa, xb) = (xa.clamp(0.0, self.length), xb.clamp(0.0, self.length));
-        let mut cuts = vec![xa];
-        cuts.extend(
-            self.front_positions(t)
-                .into_iter()
-                .filter(|&x| x > xa && x < xb),
-        );
-        cuts.push(xb);
-        let smooth = self.smoothness_length();
         let mut sum = 0.0;
-        for pair in cuts.windows(2) {
-            let (x0, x1) = (pair[0], pair[1]);
-            let parts = ((x1 - x0) / smooth).ceil().max(1.0) as usize;
-            let width = (x1 - x0) / parts as f64;
-            // Error ~ (width/(4 smooth))^(2n): 1e-12 needs 2n log10(4 smooth/width) >= 12.
-            let digits = (4.0 * smooth / width).log10().max(0.5);
-            let n = ((6.0 / digits).ceil() as usize).clamp(3, AVERAGE_POINTS_MAX);
+        for (x0, parts, width, n) in self.quadrature_plan(xa, xb, t) {
             let rule = gauss_legendre(n);
             for part in 0..parts {
                 let mid = x0 + (part as f64 + 0.5) * width;
@@ -82,6 +68,49 @@ impl GradedBar {
             }
         }
         sum / (xb - xa)
+    }
+
+    /// The quadrature of [`Self::stress_average`] over `[xa, xb]` (inside the bar): per smooth
+    /// piece between fronts, its start, the number of parts, their width and the Gauss points
+    /// per part.
+    fn quadrature_plan(&self, xa: f64, xb: f64, t: f64) -> Vec<(f64, usize, f64, usize)> {
+        let mut cuts = vec![xa];
+        cuts.extend(
+            self.front_positions(t)
+                .into_iter()
+                .filter(|&x| x > xa && x < xb),
+        );
+        cuts.push(xb);
+        let smooth = self.smoothness_length();
+        cuts.windows(2)
+            .map(|pair| {
+                let (x0, x1) = (pair[0], pair[1]);
+                let parts = ((x1 - x0) / smooth).ceil().max(1.0) as usize;
+                let width = (x1 - x0) / parts as f64;
+                // Error ~ (width/(4 smooth))^(2n): 1e-12 needs 2n log10(4 smooth/width) >= 12.
+                let digits = (4.0 * smooth / width).log10().max(0.5);
+                let n = ((6.0 / digits).ceil() as usize).clamp(3, AVERAGE_POINTS_MAX);
+                (x0, parts, width, n)
+            })
+            .collect()
+    }
+
+    /// How many evaluations of [`Self::stress`] [`Self::stress_averages`] makes over `nodes` at
+    /// time `t`, counted from its quadrature without evaluating anything: what
+    /// [`Self::evaluation_work`] prices.
+    #[must_use]
+    pub fn average_evaluations(&self, nodes: &[f64], t: f64) -> usize {
+        nodes
+            .windows(2)
+            .filter(|w| self.in_bar(w[0]) && self.in_bar(w[1]) && w[0] < w[1] && t.is_finite())
+            .map(|w| {
+                let (xa, xb) = (w[0].clamp(0.0, self.length), w[1].clamp(0.0, self.length));
+                self.quadrature_plan(xa, xb, t)
+                    .iter()
+                    .map(|&(_, parts, _, n)| parts.saturating_mul(n))
+                    .fold(0usize, usize::saturating_add)
+            })
+            .fold(0usize, usize::saturating_add)
     }
 
     /// Element averages over consecutive pairs of `nodes` (ascending positions of a mesh).

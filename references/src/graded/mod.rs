@@ -23,7 +23,7 @@
 //!
 //! Files, lowest first: `bar` ([`GradedBar`], closed forms and the jump law), `bessel` and
 //! `series` (normalised Bessel functions, front expansions in `1/s`), `de_hoog` (Laplace
-//! inversion), `laplace` (route (a)), `characteristics` (route (b)), `field` (the default
+//! inversion), `laplace` (route (a)), `characteristics` (route (b)), `cost` (the work of an evaluation, known up front), `field` (the default
 //! evaluation, choosing the route), `averages` (element averages), `layer` and `layered`
 //! ([`LayeredBar`]).
 //!
@@ -38,6 +38,7 @@ mod averages;
 mod bar;
 mod bessel;
 mod characteristics;
+mod cost;
 mod de_hoog;
 mod field;
 mod laplace;
@@ -50,6 +51,7 @@ pub use characteristics::{
     CHARACTERISTIC_CELLS, CHARACTERISTIC_LEVELS, CHARACTERISTIC_LEVELS_MAX,
     CHARACTERISTIC_TRANSITS_MAX,
 };
+pub use cost::ROUTE_A_WORK;
 pub use field::LAPLACE_DIFFICULTY_LIMIT;
 pub use laplace::DE_HOOG_TERMS;
 pub use layer::{Layer, reflection_coefficient, transmission_coefficient};

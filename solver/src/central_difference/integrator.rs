@@ -81,7 +81,7 @@ impl CentralDifference {
     /// uniform bar, where `dt = dt_crit`, is accepted after the plan's rounding).
     pub fn check_stability(&self, model: &Model) -> Result<CriticalStep, RunError> {
         let operator = MassOperator::new(model, self.mass)?;
-        Ok(self.check_stability_with(model, &operator)?)
+        self.check_stability_with(model, &operator)
     }
 
     /// The stability limit of this integrator's scheme on `model`, given the critical steps of
@@ -94,8 +94,8 @@ impl CentralDifference {
         &self,
         model: &Model,
         operator: &MassOperator,
-    ) -> Result<CriticalStep, UnstableStepError> {
-        let critical = CriticalStep::of(model, self.mass, operator);
+    ) -> Result<CriticalStep, RunError> {
+        let critical = CriticalStep::of(model, self.mass, operator).map_err(InputError::from)?;
         if self.stability.allow_unstable {
             return Ok(critical);
         }
@@ -110,7 +110,8 @@ impl CentralDifference {
                 courant: model.bar().courant_number(self.dt),
                 element: critical.controlling_element,
                 element_dt: critical.element_transit,
-            });
+            }
+            .into());
         }
         Ok(critical)
     }

@@ -44,7 +44,7 @@ impl ContactIntegrator {
     ) -> Result<ContactCriticalStep, ContactError> {
         crate::mesh::positive("dt", self.dt)?;
         self.scheme.validate()?;
-        let critical = ContactCriticalStep::of(problem, &self.scheme);
+        let critical = ContactCriticalStep::of(problem, &self.scheme).map_err(InputError::from)?;
         if self.dt > critical.applicable * (1.0 + crate::time_step::ROUNDING_SLACK)
             && !self.stability.allow_unstable
         {

@@ -8,6 +8,8 @@ use super::penalty::Penalty;
 use super::problem::ContactProblem;
 use super::scheme::ContactScheme;
 use crate::banded::SymmetricBanded;
+use crate::error::NoConvergence;
+use crate::stability::{bisect_top, lift_above_spectrum};
 
 /// The symmetric tridiagonal pencil `(K + K_p, M + M_p)` of a contact problem over the global
 /// node numbering (the bodies' nodes one after the other), lumped `M`. Rows and columns of
@@ -187,29 +189,22 @@ impl ContactPencil {
     }
 
     /// Largest eigenvalue by bisection on [`Self::count_below`], to a relative width of about two
-    /// ulps, starting from [`Self::row_sum_bound`] (grown if round-off left an eigenvalue above).
-    pub fn largest_eigenvalue(&self) -> f64 {
+    /// ulps, starting from [`Self::row_sum_bound`] (grown if round-off left an eigenvalue above):
+    /// at most [`crate::stability::BOUND_DOUBLINGS`] doublings and
+    /// [`crate::stability::BISECTION_STEPS`] halvings.
+    ///
+    /// # Errors
+    /// [`NoConvergence`] when no finite bound above the spectrum is found or the bisection does
+    /// not close (entries whose products overflow, e.g. a bar area of 1e300).
+    pub fn largest_eigenvalue(&self) -> Result<f64, NoConvergence> {
         let n = self.order();
-        let mut hi = self.row_sum_bound() * (1.0 + 1e-12);
-        if hi.is_nan() || hi <= 0.0 {
-            return 0.0;
+        let start = self.row_sum_bound() * (1.0 + 1e-12);
+        if start <= 0.0 {
+            return Ok(0.0);
         }
-        while self.count_below(hi) < n {
-            hi *= 2.0;
-        }
-        let mut lo = 0.0_f64;
-        for _ in 0..2000 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi || hi - lo <= 2.0 * f64::EPSILON * hi {
-                break;
-            }
-            if self.count_below(mid) == n {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
-        0.5 * (lo + hi)
+        let all_below = |x: f64| self.count_below(x) == n;
+        let hi = lift_above_spectrum(start, all_below)?;
+        bisect_top(hi, 2.0 * f64::EPSILON, all_below)
     }
 
     /// The same pencil as two [`SymmetricBanded`] matrices (bandwidth 1), for cross-checks with
@@ -288,7 +283,10 @@ pub struct ContactCriticalStep {
 
 impl ContactCriticalStep {
     /// All estimates for `problem` under `scheme`.
-    pub fn of(problem: &ContactProblem, scheme: &ContactScheme) -> Self {
+    ///
+    /// # Errors
+    /// [`NoConvergence`] from [`ContactPencil::largest_eigenvalue`].
+    pub fn of(problem: &ContactProblem, scheme: &ContactScheme) -> Result<Self, NoConvergence> {
         let step = |lambda: f64| {
             if lambda > 0.0 {
                 2.0 / lambda.sqrt()
@@ -304,11 +302,11 @@ impl ContactCriticalStep {
             },
         );
         let free_bound = free.row_sum_bound();
-        let contact_free = step(free.largest_eigenvalue());
+        let contact_free = step(free.largest_eigenvalue()?);
         let penalty = scheme.penalty();
         let (contact_active, active_bound) = if penalty.stiffness > 0.0 || penalty.mass > 0.0 {
             let active = ContactPencil::assemble(problem, penalty);
-            (step(active.largest_eigenvalue()), active.row_sum_bound())
+            (step(active.largest_eigenvalue()?), active.row_sum_bound())
         } else {
             (contact_free, free_bound)
         };
@@ -347,7 +345,7 @@ impl ContactCriticalStep {
             .map(|c| (c.element_stiffness + penalty.stiffness) / (c.mass + penalty.mass))
             .fold(0.0, f64::max);
         let nodal = stiffest_transit.min(step(contact_ratio));
-        Self {
+        Ok(Self {
             contact_free,
             contact_active,
             predictor_corrector,
@@ -356,7 +354,7 @@ impl ContactCriticalStep {
             gershgorin,
             nodal,
             stiffest_transit,
-        }
+        })
     }
 
     /// Courant number of a step, relative to the stiffest element.
@@ -398,9 +396,21 @@ mod tests {
         }
     }
 
+    /// A bar of area 1e300 made the doubling of the bisection's bound loop forever (its
+    /// off-diagonal squared overflows): now a typed error within the iteration bounds.
+    #[test]
+    fn an_overflowing_pencil_is_an_error_not_a_hang() {
+        let bar = Bar::homogeneous(Mesh::uniform(1.0, 10).unwrap(), 1.0, 1.0, 1e300).unwrap();
+        let problem = ContactProblem::wall_impact(bar, End::Right, 1.0, 0.0).unwrap();
+        let started = std::time::Instant::now();
+        let e = ContactCriticalStep::of(&problem, &ContactScheme::LagrangeMultiplier).unwrap_err();
+        assert!(started.elapsed().as_secs_f64() < 1.0);
+        assert!(e.to_string().contains("critical-step bisection"), "{e}");
+    }
+
     #[test]
     fn contact_free_free_free_bar_has_courant_one() {
-        let c = ContactCriticalStep::of(&wall(50), &ContactScheme::LagrangeMultiplier);
+        let c = ContactCriticalStep::of(&wall(50), &ContactScheme::LagrangeMultiplier).unwrap();
         assert!((c.critical_courant() - 1.0).abs() < 1e-14);
         assert_eq!(c.binding, StepLimit::ContactFree);
     }
@@ -414,7 +424,8 @@ mod tests {
             &ContactScheme::Penalty {
                 stiffness: pen.stiffness,
             },
-        );
+        )
+        .unwrap();
         assert_eq!(c.binding, StepLimit::ContactActive);
         assert!(c.gershgorin < c.applicable && c.applicable < c.nodal);
     }

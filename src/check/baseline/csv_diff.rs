@@ -31,6 +31,9 @@ pub struct ColumnChange {
     pub max_rel: f64,
     /// Cells beyond tolerance (including changed text).
     pub beyond: usize,
+    /// Cells of a numeric column that differ and are not a number on one side or both (e.g.
+    /// `abc` or an empty cell against `1.5`): counted in `beyond`, reported as "not a number".
+    pub not_numbers: usize,
     /// The worst cell beyond tolerance (largest `|a - b|` over what the rule allows; changed
     /// text counts as worst, the first one is kept).
     pub worst: Option<CellChange>,
@@ -55,6 +58,13 @@ impl ColumnChange {
             .unwrap_or_default();
         let mut line = if self.rule == ColumnRule::Text {
             format!("{}: [{}]", self.column, self.rule.label())
+        } else if self.not_numbers > 0 && self.max_abs == 0.0 {
+            format!(
+                "{}: {} cell(s) not a number [{}{peak}]",
+                self.column,
+                self.not_numbers,
+                self.rule.label()
+            )
         } else {
             format!(
                 "{}: max |change| {:.3e}, max relative {:.3e} [{}{peak}]",
@@ -230,6 +240,7 @@ fn compare_column<'a>(
         max_abs: 0.0,
         max_rel: 0.0,
         beyond: 0,
+        not_numbers: 0,
         worst: None,
     };
     // How far beyond tolerance the worst cell is (|a - b| over what the rule allows).
@@ -250,6 +261,7 @@ fn compare_column<'a>(
                 texts += usize::from(!fresh.trim().is_empty() || !base.trim().is_empty());
                 if fresh != base {
                     change.beyond += 1;
+                    change.not_numbers += 1;
                     if worst_excess < f64::INFINITY {
                         worst_excess = f64::INFINITY;
                         change.worst = Some(cell());
@@ -298,6 +310,7 @@ fn compare_column<'a>(
     }
     if numbers == 0 && texts > 0 {
         change.rule = ColumnRule::Text;
+        change.not_numbers = 0;
     }
     change
 }

@@ -50,6 +50,18 @@ impl FileComparison {
             FileOutcome::Compared { rows, columns, .. } => {
                 let what = match self.largest_change() {
                     None => "identical".to_string(),
+                    Some(c) if c.not_numbers > 0 && c.max_abs == 0.0 => format!(
+                        "largest change in {}: {} cell(s) not a number{}",
+                        c.column,
+                        c.not_numbers,
+                        c.worst
+                            .as_ref()
+                            .map(|w| format!(
+                                " (line {}: fresh {:?} vs baseline {:?})",
+                                w.line, w.fresh, w.baseline
+                            ))
+                            .unwrap_or_default()
+                    ),
                     Some(c) => format!(
                         "largest change in {}: |change| {:.3e}, relative {:.3e}",
                         c.column, c.max_abs, c.max_rel

@@ -90,7 +90,7 @@ fn measure(
     expectation: &Expectation,
     case: &ScoredCase,
 ) -> Result<Measured, String> {
-    let norm = |pick: fn(&ErrorNorms) -> f64| -> Result<Measured, String> {
+    let norm = |pick: fn(&ErrorNorms) -> Option<f64>| -> Result<Measured, String> {
         let Scored::Profiles { profiles, .. } = &case.scored else {
             return Err("the file holds no stress profiles".into());
         };
@@ -103,7 +103,7 @@ fn measure(
         let dt = case.dt.map_or(0.0, |d| d.0);
         let mut worst = f64::NEG_INFINITY;
         for t in times {
-            let at: Vec<f64> = profiles
+            let at: Vec<Option<f64>> = profiles
                 .iter()
                 .filter(|p| at_time(Some(t), p.time, dt))
                 .map(|p| pick(&p.norms))
@@ -113,7 +113,13 @@ fn measure(
                     "the file has no profile at t = {t}"
                 )));
             }
-            worst = at.into_iter().fold(worst, f64::max);
+            worst = at.into_iter().flatten().fold(worst, f64::max);
+        }
+        if worst == f64::NEG_INFINITY {
+            return Ok(Measured::Missing(
+                "undefined: the exact profile has no variation (one element, or no front yet)"
+                    .into(),
+            ));
         }
         Ok(Measured::Value(worst))
     };
@@ -126,10 +132,10 @@ fn measure(
     };
     let errors = |f: &ScoredForce| -> ForceErrors { f.errors };
     match expectation.metric {
-        Metric::L1 => norm(|n| n.l1),
-        Metric::L2 => norm(|n| n.l2),
-        Metric::Linf => norm(|n| n.linf),
-        Metric::Overshoot => norm(|n| n.overshoot),
+        Metric::L1 => norm(|n| Some(n.l1)),
+        Metric::L2 => norm(|n| Some(n.l2)),
+        Metric::Linf => norm(|n| Some(n.linf)),
+        Metric::Overshoot => norm(|n| Some(n.overshoot)),
         Metric::TvRatio => norm(|n| n.tv_ratio),
         Metric::PlateauDeviation => force(|f| Some(f.errors.plateau_deviation)),
         Metric::ImpulseError => force(|f| Some(f.impulse_error)),
