@@ -19,7 +19,8 @@
 //! loop at `-march=native`. `step_with_energy` adds three energy sums, kept in 8 independent
 //! lanes so they vectorise.
 //!
-//! Also: `memory_triad`, the STREAM triad at the same sizes (and 4e6), the machine's bandwidth
+//! Also: `run_loop`, a whole 1000-step run through the public time loop (N = 1e4; lumped CD, CMM,
+//! Park): what the loop adds around the kernels; `memory_triad`, the STREAM triad at the same sizes (and 4e6), the machine's bandwidth
 //! the report compares each step's model bandwidth with.
 //!
 //! Run:      cargo bench --bench cd_step
@@ -255,8 +256,58 @@ fn memory_triad(c: &mut Criterion) {
     group.finish();
 }
 
+/// A whole run through the public time loop (`CentralDifference::run`: start, stability check,
+/// steps with the energy balance, the guard and the work of the loads), 1000 steps on the graded
+/// bar of N = 1e4 elements at Co = 0.5 (Park: its own Co = 0.5, CMM: half its critical Courant
+/// number), no profiles, no histories, one energy sample at the end. Time per run; per step
+/// divide by 1000. It measures what the loop adds around the kernels.
+fn run_loop(c: &mut Criterion) {
+    use courant_solver::{CentralDifference, MassKind, OutputRequest, ParkOptions};
+    let mut group = c.benchmark_group("run_loop");
+    group
+        .warm_up_time(Duration::from_secs(1))
+        .sample_size(20)
+        .measurement_time(Duration::from_secs(4));
+    let (n, steps) = (10_000, 1_000);
+    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+    let element_dt = model.bar().stiffest_element().1;
+    let request = OutputRequest {
+        energy_every: steps,
+        history_every: steps,
+        ..OutputRequest::default()
+    };
+    group.throughput(Throughput::Elements((n * steps) as u64));
+    for (name, integrator) in [
+        ("lmm", CentralDifference::new(0.5 * element_dt)),
+        (
+            "cmm",
+            CentralDifference {
+                mass: MassKind::Consistent,
+                ..CentralDifference::new(0.5 * MassKind::Consistent.critical_courant() * element_dt)
+            },
+        ),
+        (
+            "park-lts",
+            CentralDifference {
+                park: Some(ParkOptions::default()),
+                ..CentralDifference::new(0.5 * element_dt)
+            },
+        ),
+    ] {
+        group.bench_function(BenchmarkId::new(name, n), |b| {
+            b.iter(|| {
+                let out = integrator.run(black_box(&model), steps, &request).unwrap();
+                assert_eq!(out.steps, steps);
+                out.energy.max_balance_error
+            })
+        });
+    }
+    group.finish();
+}
+
 criterion_group!(
     benches,
+    run_loop,
     lumped_cd_step,
     mass_kind_step,
     spectrum_dense,
