@@ -5,7 +5,9 @@ use super::error::{SceneError, Source};
 use super::expectation::{Study, expectation};
 use super::geometry::Geometry;
 use super::schema::{RawContactScene, RawHeader, RawScene};
+use super::scheme_keys::{SchemeKey, split_off};
 use super::{contact, dispersion, spectrum, time_stepping};
+use serde::Deserialize;
 
 impl Scene {
     /// Parse and validate a scene. `file` is the path or name shown in errors; `name` becomes the
@@ -17,8 +19,12 @@ impl Scene {
             let raw: RawContactScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
             return build_contact(name, &src, raw);
         }
-        let raw: RawScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
-        build(name, &src, raw)
+        // The schemes' parameters leave [integrator] first; the rest is read with its spans.
+        let mut document = toml::de::DeTable::parse(text).map_err(|e| src.from_toml(&e))?;
+        let scheme_keys = split_off(&src, &table, document.get_mut())?;
+        let raw = RawScene::deserialize(toml::de::Deserializer::from(document))
+            .map_err(|e| src.from_toml(&e))?;
+        build(name, &src, raw, &scheme_keys)
     }
 
     /// Read a scene from a file; its name is the file stem.
@@ -49,7 +55,12 @@ fn check_header(src: &Source, header: &RawHeader) -> Result<(), SceneError> {
     Ok(())
 }
 
-fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
+fn build(
+    name: &str,
+    src: &Source,
+    raw: RawScene,
+    scheme_keys: &[SchemeKey],
+) -> Result<Scene, SceneError> {
     check_header(src, &raw.scene)?;
     let geometry = Geometry::read(src, &raw)?;
     if raw.spectrum.is_some() || raw.dispersion.is_some() {
@@ -96,7 +107,7 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
             expectations,
         });
     }
-    let (cases, expectations) = time_stepping::build(src, &raw, &geometry)?;
+    let (cases, expectations) = time_stepping::build(src, &raw, &geometry, scheme_keys)?;
     Ok(Scene {
         name: name.to_string(),
         description: raw.scene.description.into_inner(),
