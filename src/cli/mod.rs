@@ -6,6 +6,7 @@
 
 pub mod check;
 pub mod run;
+pub mod schemes;
 
 use crate::io::atomic::write_dir_atomically;
 use crate::pipeline::report_runs::run_for_report;
@@ -14,7 +15,11 @@ use crate::scene::builtin::{self, BUILTIN_SCENES, builtin_scene};
 use crate::scene::studies::convergence::CONVERGENCE_STUDIES;
 use std::process::ExitCode;
 
-pub fn list() -> ExitCode {
+pub fn list(schemes: bool) -> ExitCode {
+    if schemes {
+        print!("{}", schemes::listing());
+        return ExitCode::SUCCESS;
+    }
     for (name, _) in BUILTIN_SCENES {
         match builtin_scene(name) {
             Some(Ok(scene)) => println!("{name:16} {}", scene.description),

@@ -75,8 +75,9 @@ pub const ENTRY: SchemeEntry = SchemeEntry {
     parameters: &[Parameter {
         key: "p",
         default: ParameterDefault::Number(0.54),
-        rule: "must lie in [0.5, 0.75] (p < 1/2 amplifies every mode; above 3/4 the limit is another root)",
-        meaning: "splitting parameter: the first sub-step is p dt (0.5 is two CD half steps)",
+        rule: "must lie in [0.5, 0.75]",
+        meaning: "splitting parameter: the first sub-step is p dt (0.5 is two CD half steps; below 1/2 \
+                  every mode grows; above 3/4 the limit is another root, not implemented)",
     }],
     build: |values| {
         Ok(Arc::new(NohBathe {

@@ -33,7 +33,7 @@ const PARAMETERS: &[Parameter] = &[
     Parameter {
         key: "park_variant",
         default: ParameterDefault::Text("free"),
-        rule: "is not one of free, incremental",
+        rule: "must be one of free, incremental",
         meaning: "element acceleration: free (the seed's formula) or incremental (keeps statics static)",
     },
 ];
