@@ -19,6 +19,7 @@ pub const STABILITY_SCENES: &[&str] = &[
     "stability_extremes",
     "stability_exact",
     "stability_park",
+    "stability_noh_bathe",
     "courant_sweep",
     "graded_1e4",
     "layered_1e4",
