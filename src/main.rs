@@ -1,7 +1,7 @@
 //! `courant`: the command line. Only parsing: the commands are in `courant::cli`.
 
 use clap::{Parser, Subcommand};
-use courant::cli::check::ToleranceOptions;
+use courant::cli::check::CheckOptions;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -37,56 +37,37 @@ enum Command {
         #[arg(long, default_value = "results")]
         out: PathBuf,
     },
-    /// Regenerate the verification report: every built-in scene and the convergence studies,
-    /// run in parallel, written whole (staged, then renamed) to DIR: index.md, per-scene CSV
-    /// tables, convergence/*.csv, timing.md and timing.csv. Exit status 0 when every
-    /// expectation holds, 1 when one fails, 2 on errors (the previous report is then kept).
+    /// Regenerate the verification report: every built-in scene, the convergence and
+    /// work-precision studies and the stability table, run in parallel, written whole (staged,
+    /// then renamed) to DIR: index.html (open it in a browser; its first screen counts every
+    /// verdict and links to it), index.md, every table as CSV and every figure as SVG, and the
+    /// machine's timings in timing.md. With scene names or .toml paths: a report of those
+    /// scenes alone (figures, tables, verdicts), which needs --out. Exit status 0 when every
+    /// verdict holds, 1 when one fails, 2 on errors (the previous report is then kept).
     Report {
-        /// Output directory.
-        #[arg(long, default_value = "reports")]
-        out: PathBuf,
-    },
-    /// Check scenes for CI: run them and gate on their expectations (and on a baseline).
-    ///
-    /// Prints every expectation with case, metric, measured value, bound, verdict and source.
-    /// Exit status: 0 when every check holds, 1 when one fails (an expectation, or a file
-    /// beyond its baseline tolerance), 2 on bad input (nothing is written then).
-    Check {
-        /// Scene names or paths (all built-in scenes when none given).
+        /// Scene names or paths (every built-in scene and the studies when none given).
         scenes: Vec<String>,
-        /// Write a JUnit XML report here (one testsuite per scene, one testcase per check).
-        #[arg(long, value_name = "FILE")]
-        junit: Option<PathBuf>,
-        /// Compare the fresh CSVs with a previous report (`courant report --out DIR`, e.g. the
-        /// committed `reports/`: each scene's tables) or a previous `courant run --out DIR`
-        /// (every result file), DIR/<scene>/*.csv.
-        #[arg(long, value_name = "DIR")]
-        baseline: Option<PathBuf>,
-        #[command(flatten)]
-        tolerances: ToleranceOptions,
-        /// Also write the result directories, as `courant run --out DIR` does.
-        #[arg(long, value_name = "DIR")]
+        /// Output directory (default `reports` for the built-in report; required with scenes).
+        #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Check scenes for CI: run them and gate on their verdicts (and on a baseline).
+    ///
+    /// Verdicts: every expectation, the stability verdict of every case of a stability scene,
+    /// and (with no scene named) the convergence-order bands of the report's studies. Prints a
+    /// line per scene and every failure with how far past its bound (`--verbose`: every
+    /// verdict). Exit status: 0 when every check holds (findings a scene states pass), 1 when
+    /// one fails (a verdict, or a file beyond its baseline tolerance), 2 on bad input (nothing
+    /// is written then).
+    Check(CheckOptions),
 }
 
 fn main() -> ExitCode {
+    courant::cli::exit_quietly_on_closed_pipe();
     match Cli::parse().command {
         Command::List { schemes } => courant::cli::list(schemes),
         Command::Run { scenes, out } => courant::cli::run::run(&scenes, &out),
-        Command::Report { out } => courant::cli::report(&out),
-        Command::Check {
-            scenes,
-            junit,
-            baseline,
-            tolerances,
-            out,
-        } => courant::cli::check::check(
-            &scenes,
-            junit.as_deref(),
-            baseline.as_deref(),
-            &tolerances,
-            out.as_deref(),
-        ),
+        Command::Report { scenes, out } => courant::cli::report(&scenes, out.as_deref()),
+        Command::Check(options) => courant::cli::check::check(&options),
     }
 }

@@ -132,7 +132,7 @@ fn failed_lines(stdout: &str) -> Vec<&str> {
 fn check_fig1_passes_on_the_committed_expectations() {
     let dir = scratch("pass");
     let report = dir.join("junit").join("fig1.xml");
-    let out = courant(&["check", "fig1", "--junit", s(&report)]);
+    let out = courant(&["check", "fig1", "--junit", s(&report), "--verbose"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out));
     let stdout = String::from_utf8(out.stdout).unwrap();
     for column in ["verdict", "case", "metric", "measured", "bound", "source"] {
@@ -152,7 +152,7 @@ fn check_fig1_passes_on_the_committed_expectations() {
     assert_eq!(cases.len(), verdicts.len());
     assert_eq!(root.children[0].value("name"), "fig1");
     for v in &verdicts {
-        let name = format!("{} {}", v.case, v.metric.name());
+        let name = courant::check::junit_report::testcase_name(v);
         assert!(
             cases.iter().any(|c| c.value("name") == name),
             "no testcase {name}"
@@ -179,6 +179,7 @@ fn a_broken_expectation_exits_1_with_a_junit_failure_for_that_testcase() {
     let results = dir.join("out");
     let out = courant(&[
         "check",
+        "--verbose",
         s(&path),
         "--junit",
         s(&report),
@@ -202,9 +203,19 @@ fn a_broken_expectation_exits_1_with_a_junit_failure_for_that_testcase() {
     for case in testcases(&root) {
         let failure = case.child("failure");
         if case.value("name") == "co1 linf" {
-            let message = failure.expect("co1 linf must fail").value("message");
-            assert!(message.contains("1e-30") && message.contains("measured"));
-            assert!(message.contains("methods.md §3"), "names its source");
+            // The message says once how far past the bound; the body gives bound and source.
+            let failure = failure.expect("co1 linf must fail");
+            let message = failure.value("message");
+            assert!(
+                message.contains("8.9706e-14 is above the max 1e-30"),
+                "{message}"
+            );
+            assert!(failure.text.contains("bound <= 1e-30"), "{}", failure.text);
+            assert!(failure.text.contains("methods.md §3"), "names its source");
+            assert!(
+                case.child("system-out").is_none(),
+                "said once, in the failure"
+            );
         } else {
             assert!(failure.is_none(), "{} must pass", case.value("name"));
         }
@@ -242,6 +253,7 @@ fn baseline_of_a_fresh_run_passes_and_a_changed_number_fails_naming_file_and_col
     let check = |report: &Path| {
         courant(&[
             "check",
+            "--verbose",
             "fig1",
             "--baseline",
             s(&base),
@@ -318,6 +330,7 @@ fn the_committed_report_is_a_baseline_and_a_moved_report_column_fails_until_allo
     let junit_file = dir.join("report.xml");
     let out = courant(&[
         "check",
+        "--verbose",
         "fig1",
         "fig6",
         "contact_wall",
@@ -366,7 +379,7 @@ fn the_committed_report_is_a_baseline_and_a_moved_report_column_fails_until_allo
         .unwrap();
     edit_cell(&summary, 3, l1, |x| x * (1.0 + 1e-6));
     let check_copy = |extra: &[&str]| {
-        let mut args = vec!["check", "fig1", "--baseline", s(&copy)];
+        let mut args = vec!["check", "fig1", "--verbose", "--baseline", s(&copy)];
         args.extend_from_slice(extra);
         courant(&args)
     };
@@ -420,6 +433,7 @@ fn bad_input_exits_2_and_writes_nothing() {
         &["check", "fig1", "--baseline", s(&here), "--rel", "-1"],
         &[
             "check",
+            "--verbose",
             "fig1",
             "--baseline",
             s(&here),

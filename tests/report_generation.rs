@@ -29,7 +29,7 @@ fn reduced() -> courant::report::Report {
         .filter(|s| s.name == "fig1_co1")
         .cloned()
         .collect();
-    render(&scenes, &run_for_report(&scenes, &studies).unwrap()).unwrap()
+    render(&scenes, &run_for_report(&scenes, &studies, false).unwrap()).unwrap()
 }
 
 #[test]
@@ -72,7 +72,35 @@ fn report_has_sections_tables_and_deterministic_content() {
             && index.contains("## fig6")
             && index.contains("## Convergence studies")
     );
-    assert!(index.contains("pass  co1 linf"), "verdicts listed");
+    // One expectations table per scene (no second list of the same verdicts), and the headline
+    // counts exactly the verdict cells of the page: the scenes' expectations tables and the
+    // convergence order tables (rows with a band).
+    assert!(index.contains("[`fig1/expectations.csv`]"));
+    assert!(!index.contains("Expectations:"), "no second list");
+    let cells: usize = a
+        .files
+        .iter()
+        .filter(|(name, _)| name.ends_with("/expectations.csv") || name.ends_with(".orders.csv"))
+        .map(|(_, csv)| {
+            csv.lines()
+                .skip(1)
+                .filter(|l| {
+                    ["pass", "FAIL", "finding"]
+                        .iter()
+                        .any(|w| l.contains(&format!(",{w},")) || l.ends_with(&format!(",{w}")))
+                })
+                .count()
+        })
+        .sum();
+    assert_eq!(a.tally.total(), cells, "headline against the verdict cells");
+    assert!(
+        index.contains(&format!(
+            "{} verdicts: {} pass",
+            a.tally.total(),
+            a.tally.passed
+        )),
+        "headline"
+    );
     assert!(!index.contains("wall_time"), "timings stay out of index.md");
     let cpu = &a
         .files

@@ -177,7 +177,7 @@ fn the_minimal_scene_is_valid_and_uses_the_documented_defaults() {
     "courant = 1.5",
     17,
     "integrator.courant",
-    "exceeds the critical step"
+    "asked courant = 1.5; shrunk to hit the output times, the step is dt = 1.250000e-1: Courant number 1.250000"
 )]
 #[case::profile_after_end(
     "profile_times = [0.5]",
@@ -234,7 +234,7 @@ fn the_minimal_scene_is_valid_and_uses_the_documented_defaults() {
     "scheme = \"park-lts\"\ncourant = 1.002\nkeep_step = true",
     18,
     "integrator.courant",
-    "(alpha_e <= 1)"
+    "with park-lts (dt_crit = 1.000000e-1, alpha_e <= 1)"
 )]
 fn bad_input_names_line_key_and_rule(
     #[case] find: &str,

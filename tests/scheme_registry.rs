@@ -104,7 +104,7 @@ fn mixed_schemes_each_take_their_own_keys() {
     "scheme = \"cd\"\np = 0.54",
     18,
     "integrator.p",
-    "unknown key: neither a key of [integrator] nor a parameter of its schemes (cd takes none)"
+    "unknown field `p`: neither a key of [integrator] nor a parameter of its schemes (cd takes none)"
 )]
 #[case::misspelt_parameter(
     "scheme = \"park-lts\"\nthetta = 0.5",

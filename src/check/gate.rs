@@ -9,8 +9,10 @@ use crate::compare::files::scene_files;
 use crate::compare::verdict::Verdict;
 use crate::io::clock::date;
 use crate::io::parallel::in_order;
+use crate::pipeline::studies::run_convergence;
 use crate::pipeline::{EvaluateError, evaluate_scene};
 use crate::scene::cases::Scene;
+use crate::scene::studies::convergence::ConvergenceStudy;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -33,9 +35,19 @@ pub struct SceneCheck {
     pub started: String,
     /// Wall time of running and comparing the scene, in seconds.
     pub wall_time: f64,
+    /// Wall time of each case's run, in seconds, by case name.
+    pub case_times: Vec<(String, f64)>,
 }
 
 impl SceneCheck {
+    /// The wall time of the run a verdict judges (0 when it judges no single run).
+    pub fn time_of(&self, case: &str) -> f64 {
+        self.case_times
+            .iter()
+            .find(|(c, _)| c == case)
+            .map_or(0.0, |(_, t)| *t)
+    }
+
     /// True when every expectation holds and every file matches its baseline.
     pub fn passed(&self) -> bool {
         self.verdicts.iter().all(|v| v.pass)
@@ -59,7 +71,25 @@ pub fn check_scene(
     let files = scene_files(&outcome);
     let baseline = baseline
         .map(|(root, kind)| compare_scene(&files, &root.join(&scene.name), kind, tolerances));
+    let case_times = outcome
+        .results
+        .iter()
+        .map(|r| (r.case.clone(), r.wall_time.as_secs_f64()))
+        .chain(
+            outcome
+                .contact
+                .iter()
+                .map(|r| (r.case.clone(), r.wall_time.as_secs_f64())),
+        )
+        .chain(
+            outcome
+                .spectra
+                .iter()
+                .map(|r| (r.case.clone(), r.wall_time.as_secs_f64())),
+        )
+        .collect();
     Ok(SceneCheck {
+        case_times,
         started,
         wall_time: clock.elapsed().as_secs_f64(),
         name: scene.name.clone(),
@@ -68,6 +98,25 @@ pub fn check_scene(
         verdicts: outcome.verdicts,
         files,
         baseline,
+    })
+}
+
+/// The checks of a convergence study: its order verdicts, as a scene of its own named
+/// `convergence:<study>` (no files, no baseline).
+pub fn check_study(study: &ConvergenceStudy) -> Result<SceneCheck, String> {
+    let started = date();
+    let clock = std::time::Instant::now();
+    let result = run_convergence(study)?;
+    Ok(SceneCheck {
+        name: format!("convergence:{}", study.name),
+        description: study.title.to_string(),
+        source: study.expected.to_string(),
+        verdicts: result.order_verdicts(),
+        files: Vec::new(),
+        baseline: None,
+        started,
+        wall_time: clock.elapsed().as_secs_f64(),
+        case_times: Vec::new(),
     })
 }
 
@@ -91,30 +140,42 @@ pub struct Counts {
     pub total: usize,
     /// Checks failed.
     pub failed: usize,
+    /// Verdicts that pass as stated findings (disagreements with stability theory).
+    pub findings: usize,
     /// Checks skipped (files a report baseline does not keep).
     pub skipped: usize,
 }
 
 impl CheckReport {
-    /// Check every scene, in parallel (rayon; the results keep the argument order and do not
-    /// depend on the thread count). The baseline's kind is detected ([`BaselineKind::detect`]).
-    /// When scenes cannot run, the error of the first one in argument order is returned.
+    /// Check every scene and convergence study, in parallel (rayon; the results keep the
+    /// argument order and do not depend on the thread count). The baseline's kind is detected
+    /// ([`BaselineKind::detect`]). When scenes cannot run, the error of the first one in
+    /// argument order is returned.
     pub fn run(
         scenes: &[Scene],
+        studies: &[ConvergenceStudy],
         baseline: Option<&Path>,
         tolerances: Tolerances,
-    ) -> Result<CheckReport, (String, EvaluateError)> {
+    ) -> Result<CheckReport, (String, String)> {
         let clock = std::time::Instant::now();
         let baseline = baseline.map(|root| (root.to_path_buf(), BaselineKind::detect(root)));
         let base = baseline
             .as_ref()
             .map(|(root, kind)| (root.as_path(), *kind));
-        let scenes = in_order(
+        let mut scenes = in_order(
             scenes
                 .par_iter()
-                .map(|s| check_scene(s, base, &tolerances).map_err(|e| (s.name.clone(), e)))
+                .map(|s| {
+                    check_scene(s, base, &tolerances).map_err(|e| (s.name.clone(), e.to_string()))
+                })
                 .collect(),
         )?;
+        scenes.extend(in_order(
+            studies
+                .par_iter()
+                .map(|s| check_study(s).map_err(|e| (format!("convergence:{}", s.name), e)))
+                .collect(),
+        )?);
         Ok(CheckReport {
             scenes,
             baseline,
@@ -158,7 +219,8 @@ impl CheckReport {
         let all = self.scenes.iter().flat_map(|s| &s.verdicts);
         Counts {
             total: all.clone().count(),
-            failed: all.filter(|v| !v.pass).count(),
+            failed: all.clone().filter(|v| !v.pass).count(),
+            findings: all.filter(|v| v.finding).count(),
             skipped: 0,
         }
     }
@@ -169,6 +231,7 @@ impl CheckReport {
         Counts {
             total: all.clone().count(),
             failed: all.clone().filter(|f| !f.passed()).count(),
+            findings: 0,
             skipped: all.filter(|f| f.skipped()).count(),
         }
     }

@@ -30,6 +30,8 @@ pub struct TestCase {
     pub output: Option<String>,
     /// Why the case was skipped (the `<skipped message>`), if it was.
     pub skipped: Option<String>,
+    /// Wall time of what the case judges, in seconds (`time` attribute; none when 0).
+    pub time: f64,
 }
 
 /// One test suite.
@@ -151,6 +153,9 @@ pub fn render(name: &str, suites: &[TestSuite], time: f64) -> String {
                 escape(&case.classname),
                 escape(&case.name)
             );
+            if case.time > 0.0 {
+                let _ = write!(xml, " time=\"{:.3}\"", case.time);
+            }
             if case.failure.is_none() && case.output.is_none() && case.skipped.is_none() {
                 xml.push_str("/>\n");
                 continue;
@@ -207,6 +212,7 @@ mod tests {
                     failure: None,
                     output: None,
                     skipped: None,
+                    time: 0.0,
                 },
                 TestCase {
                     classname: "s".into(),
@@ -214,6 +220,7 @@ mod tests {
                     failure: None,
                     output: None,
                     skipped: Some("a report does not keep it".into()),
+                    time: 0.0,
                 },
                 TestCase {
                     classname: "s".into(),
@@ -225,6 +232,7 @@ mod tests {
                     }),
                     output: None,
                     skipped: None,
+                    time: 0.0,
                 },
             ],
         };

@@ -5,14 +5,13 @@ use super::baseline::csv_diff::FileOutcome;
 use super::baseline::scene_diff::FileComparison;
 use super::gate::CheckReport;
 use super::junit::{Failure, TestCase, TestSuite, render};
-use super::render::{format_bound, format_measured};
 use crate::compare::verdict::Verdict;
 use std::fmt::Write as _;
 
 /// The test-case name of a verdict: `<case> <metric>`, plus ` at <t>` when it names a time.
 pub fn testcase_name(v: &Verdict) -> String {
     let at = v.at.map(|t| format!(" at {t}")).unwrap_or_default();
-    format!("{} {}{at}", v.case, v.metric.name())
+    format!("{} {}{at}", v.case, v.metric_label())
 }
 
 /// The JUnit test suites: one per scene (properties: description, source, baseline
@@ -39,23 +38,31 @@ pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
                 .verdicts
                 .iter()
                 .map(|v| {
-                    let name = testcase_name(v);
-                    let what = format!(
-                        "measured {}, bound {}; source: {}",
-                        format_measured(&v.measured),
-                        format_bound(&v.bound),
-                        v.source
-                    );
+                    // A failure says once how far the value is past its bound, its body the
+                    // source; a passing case says what was measured against which bound.
+                    let failure = (!v.pass).then(|| Failure {
+                        message: v.excess(),
+                        kind: "expectation".into(),
+                        details: format!("bound {}; source: {}", v.bound, v.source),
+                    });
+                    let output = v.pass.then(|| {
+                        let finding = if v.finding {
+                            " (a stated finding: theory and run disagree)"
+                        } else {
+                            ""
+                        };
+                        format!(
+                            "measured {}, bound {}{finding}; source: {}",
+                            v.measured, v.bound, v.source
+                        )
+                    });
                     TestCase {
                         classname: scene.name.clone(),
-                        failure: (!v.pass).then(|| Failure {
-                            message: format!("{name}: {what}"),
-                            kind: "expectation".into(),
-                            details: v.describe(),
-                        }),
-                        name,
-                        output: Some(what),
+                        name: testcase_name(v),
+                        failure,
+                        output,
                         skipped: None,
+                        time: scene.time_of(&v.case),
                     }
                 })
                 .collect();
@@ -70,6 +77,7 @@ pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
                     }),
                     output: Some(file_details(file)),
                     skipped: file.skipped().then(|| file.summary()),
+                    time: 0.0,
                 });
             }
             TestSuite {

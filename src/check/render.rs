@@ -5,77 +5,128 @@
 use super::baseline::csv_diff::FileOutcome;
 use super::baseline::scene_diff::FileComparison;
 use super::gate::CheckReport;
-use crate::compare::verdict::{Measured, Verdict};
-use crate::results::table::Precision;
-use crate::scene::expectation::Bound;
+use crate::compare::verdict::Verdict;
 use std::fmt::Write as _;
-
-/// The measured value of a verdict, for reports.
-pub fn format_measured(measured: &Measured) -> String {
-    match measured {
-        Measured::Value(x) => format!("{x:.4e}"),
-        Measured::Flag(b) => b.to_string(),
-        Measured::Missing(why) => format!("missing ({why})"),
-    }
-}
-
-/// The bound of a verdict, for reports: `<= max`, `>= min`, `in [min, max]`, `== flag`.
-pub fn format_bound(bound: &Bound) -> String {
-    let num = |x: f64| Precision::RoundTrip.format(x);
-    match *bound {
-        Bound::Range {
-            min: Some(lo),
-            max: Some(hi),
-        } => format!("in [{}, {}]", num(lo), num(hi)),
-        Bound::Range {
-            min: Some(lo),
-            max: None,
-        } => format!(">= {}", num(lo)),
-        Bound::Range {
-            min: None,
-            max: Some(hi),
-        } => format!("<= {}", num(hi)),
-        Bound::Range {
-            min: None,
-            max: None,
-        } => "unbounded".into(),
-        Bound::Equals(b) => format!("== {b}"),
-    }
-}
 
 fn verdict_word(pass: bool) -> &'static str {
     if pass { "pass" } else { "FAIL" }
 }
 
-/// The terminal report: per scene a table of its expectations (verdict, case, metric,
-/// measured value, bound, source), then its baseline files with the largest change of each
-/// changed column; a summary line at the end.
-pub fn terminal(report: &CheckReport) -> String {
+/// The terminal report. By default one line per scene (a character per verdict: `.` pass, `f`
+/// finding, `F` failed; its baseline files in brief), then every failure again with how far it
+/// is past its bound, the findings, and a summary line; `verbose` gives each scene's full
+/// table of verdicts and the largest change of every changed baseline column.
+pub fn terminal(report: &CheckReport, verbose: bool) -> String {
     let mut out = String::new();
+    let width = report
+        .scenes
+        .iter()
+        .map(|s| s.name.chars().count())
+        .max()
+        .unwrap_or(0);
     for scene in &report.scenes {
-        let _ = writeln!(out, "{}: {}", scene.name, scene.description);
-        let _ = writeln!(out, "  source: {}", scene.source);
-        render_verdicts(&mut out, &scene.verdicts);
-        if let (Some((root, kind)), Some(files)) = (&report.baseline, &scene.baseline) {
+        if verbose {
+            let _ = writeln!(out, "{}: {}", scene.name, scene.description);
+            let _ = writeln!(out, "  source: {}", scene.source);
+            render_verdicts(&mut out, &scene.verdicts);
+        } else {
+            let marks: String = scene
+                .verdicts
+                .iter()
+                .map(|v| match (v.pass, v.finding) {
+                    (true, false) => '.',
+                    (true, true) => 'f',
+                    (false, _) => 'F',
+                })
+                .collect();
+            let failed = scene.verdicts.iter().filter(|v| !v.pass).count();
+            let verdict = if failed > 0 {
+                format!("{failed} FAILED")
+            } else {
+                "pass".into()
+            };
             let _ = writeln!(
                 out,
-                "  baseline {} ({}):",
-                root.join(&scene.name).display(),
-                kind.label()
+                "{:<width$}  {verdict:<9} {} verdict(s) {marks}",
+                scene.name,
+                scene.verdicts.len()
             );
-            render_baseline(&mut out, files);
         }
-        out.push('\n');
+        if let (Some((root, kind)), Some(files)) = (&report.baseline, &scene.baseline) {
+            if verbose {
+                let _ = writeln!(
+                    out,
+                    "  baseline {} ({}):",
+                    root.join(&scene.name).display(),
+                    kind.label()
+                );
+                render_baseline(&mut out, files);
+            } else {
+                let failed: Vec<&FileComparison> = files.iter().filter(|f| !f.passed()).collect();
+                let _ = writeln!(
+                    out,
+                    "{:<width$}  baseline: {} file(s), {} failed{}",
+                    "",
+                    files.len(),
+                    failed.len(),
+                    failed
+                        .iter()
+                        .map(|f| format!("; {}: {}", f.file, f.summary()))
+                        .collect::<String>()
+                );
+            }
+        }
+        if verbose {
+            out.push('\n');
+        }
     }
-    if report.baseline.is_some() {
+    let failures: Vec<(&str, &Verdict)> = report
+        .scenes
+        .iter()
+        .flat_map(|s| {
+            s.verdicts
+                .iter()
+                .filter(|v| !v.pass)
+                .map(move |v| (s.name.as_str(), v))
+        })
+        .collect();
+    if !failures.is_empty() && !verbose {
+        let _ = writeln!(out, "\nfailures:");
+        for (scene, v) in &failures {
+            let _ = writeln!(out, "  {scene}: {}", v.describe());
+            let _ = writeln!(out, "      {}", v.excess());
+        }
+    }
+    let findings: Vec<(&str, &Verdict)> = report
+        .scenes
+        .iter()
+        .flat_map(|s| {
+            s.verdicts
+                .iter()
+                .filter(|v| v.finding)
+                .map(move |v| (s.name.as_str(), v))
+        })
+        .collect();
+    if !findings.is_empty() && !verbose {
+        let _ = writeln!(
+            out,
+            "\nfindings (disagreements with stability theory the scenes state, with their sources):"
+        );
+        for (scene, v) in &findings {
+            let _ = writeln!(out, "  {scene}/{}: {}", v.case, v.excess());
+        }
+    }
+    if report.baseline.is_some() && verbose {
         let _ = writeln!(out, "baseline tolerances: {}", report.tolerances.describe());
     }
     let e = report.expectation_counts();
     let _ = write!(
         out,
-        "check: {} scene(s), {} expectation(s), {} failed",
+        "\ncheck: {} scene(s) and studies, {} verdict(s): {} pass, {} finding(s), {} failed",
         report.scenes.len(),
         e.total,
+        e.total - e.failed - e.findings,
+        e.findings,
         e.failed
     );
     if report.baseline.is_some() {
@@ -87,6 +138,12 @@ pub fn terminal(report: &CheckReport) -> String {
         );
     }
     let _ = writeln!(out, ": {}", verdict_word(report.passed()));
+    if !verbose {
+        let _ = writeln!(
+            out,
+            "(--verbose shows every verdict with its bound and source)"
+        );
+    }
     out
 }
 
@@ -100,11 +157,11 @@ fn render_verdicts(out: &mut String, verdicts: &[Verdict]) {
         .map(|v| {
             let at = v.at.map(|t| format!(" at {t}")).unwrap_or_default();
             [
-                verdict_word(v.pass).to_string(),
+                v.word().to_string(),
                 v.case.clone(),
-                format!("{}{at}", v.metric.name()),
-                format_measured(&v.measured),
-                format_bound(&v.bound),
+                format!("{}{at}", v.metric_label()),
+                v.measured.to_string(),
+                v.bound.to_string(),
                 v.source.clone(),
             ]
         })

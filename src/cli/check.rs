@@ -6,6 +6,8 @@ use crate::check::junit_report::xml;
 use crate::check::render::terminal;
 use crate::io::atomic::{write_dir_atomically, write_file_atomically};
 use crate::scene::builtin::resolve_all;
+use crate::scene::studies::convergence::{CONVERGENCE_STUDIES, ConvergenceStudy};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// Baseline tolerances (only with --baseline); unset ones keep their defaults.
@@ -71,13 +73,42 @@ impl ToleranceOptions {
     }
 }
 
-pub fn check(
-    args: &[String],
-    junit: Option<&std::path::Path>,
-    baseline: Option<&std::path::Path>,
-    tolerance_args: &ToleranceOptions,
-    out: Option<&std::path::Path>,
-) -> ExitCode {
+/// The options of `courant check`.
+#[derive(clap::Args)]
+pub struct CheckOptions {
+    /// Scene names or paths (every built-in scene and the convergence studies when none given).
+    pub scenes: Vec<String>,
+    /// Write a JUnit XML report here (one testsuite per scene or study, one testcase per check).
+    #[arg(long, value_name = "FILE")]
+    pub junit: Option<PathBuf>,
+    /// Compare the fresh CSVs with a previous report (`courant report --out DIR`, e.g. the
+    /// committed `reports/`: each scene's tables) or a previous `courant run --out DIR`
+    /// (every result file), DIR/<scene>/*.csv.
+    #[arg(long, value_name = "DIR")]
+    pub baseline: Option<PathBuf>,
+    #[command(flatten)]
+    pub tolerances: ToleranceOptions,
+    /// Also write the result directories, as `courant run --out DIR` does.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Print every verdict with its measured value, bound and source, and every changed
+    /// baseline column.
+    #[arg(long, short)]
+    pub verbose: bool,
+}
+
+/// `courant check`.
+pub fn check(options: &CheckOptions) -> ExitCode {
+    let args = &options.scenes;
+    let junit = options.junit.as_deref();
+    let baseline = options.baseline.as_deref();
+    let tolerance_args = &options.tolerances;
+    let out = options.out.as_deref();
+    let studies: &[ConvergenceStudy] = if args.is_empty() {
+        CONVERGENCE_STUDIES
+    } else {
+        &[]
+    };
     // Validate everything first: bad input writes nothing.
     let scenes = match resolve_all(args) {
         Ok(scenes) => scenes,
@@ -123,7 +154,7 @@ pub fn check(
     }
     // Everything runs and is compared before anything is written (so --out may be a run-output
     // baseline).
-    let report = match CheckReport::run(&scenes, baseline, tolerances) {
+    let report = match CheckReport::run(&scenes, studies, baseline, tolerances) {
         Ok(report) => report,
         Err((scene, e)) => {
             eprintln!("error: {scene}: {e}");
@@ -145,7 +176,7 @@ pub fn check(
         );
         return ExitCode::from(2);
     }
-    print!("{}", terminal(&report));
+    print!("{}", terminal(&report, options.verbose));
     if let Some(out) = out {
         for scene in &report.scenes {
             let dir = out.join(&scene.name);

@@ -8,11 +8,25 @@ pub mod check;
 pub mod run;
 pub mod schemes;
 
+/// Let a closed pipe end the process quietly, as Unix tools do (`courant list | head`): Rust
+/// ignores SIGPIPE, so printing to a closed pipe would panic; the default action ends the
+/// process without a message.
+pub fn exit_quietly_on_closed_pipe() {
+    #[cfg(unix)]
+    // SAFETY: restoring the default disposition of SIGPIPE at start-up, before any thread is
+    // spawned, touches no Rust state.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}
+
 use crate::io::atomic::write_dir_atomically;
 use crate::pipeline::report_runs::run_for_report;
 use crate::report::render;
-use crate::scene::builtin::{self, BUILTIN_SCENES, builtin_scene};
+use crate::scene::builtin::{self, BUILTIN_SCENES, builtin_scene, resolve_all};
+use crate::scene::cases::Scene;
 use crate::scene::studies::convergence::CONVERGENCE_STUDIES;
+use crate::scene::studies::convergence::ConvergenceStudy;
 use std::process::ExitCode;
 
 pub fn list(schemes: bool) -> ExitCode {
@@ -20,23 +34,53 @@ pub fn list(schemes: bool) -> ExitCode {
         print!("{}", schemes::listing());
         return ExitCode::SUCCESS;
     }
+    let width = BUILTIN_SCENES
+        .iter()
+        .map(|(n, _)| n.len())
+        .max()
+        .unwrap_or(0);
     for (name, _) in BUILTIN_SCENES {
         match builtin_scene(name) {
-            Some(Ok(scene)) => println!("{name:16} {}", scene.description),
-            Some(Err(e)) => println!("{name:16} (invalid: {e})"),
+            Some(Ok(scene)) => println!("{name:width$}  {}", scene.description),
+            Some(Err(e)) => println!("{name:width$}  (invalid: {e})"),
             None => {}
         }
     }
     ExitCode::SUCCESS
 }
 
-pub fn report(out: &std::path::Path) -> ExitCode {
-    let generated = builtin::all()
-        .map_err(|e| e.to_string())
-        .and_then(|scenes| {
-            let runs = run_for_report(&scenes, CONVERGENCE_STUDIES)?;
-            render(&scenes, &runs)
-        });
+pub fn report(args: &[String], out: Option<&std::path::Path>) -> ExitCode {
+    let (scenes, studies): (Vec<Scene>, &[ConvergenceStudy]) = if args.is_empty() {
+        match builtin::all() {
+            Ok(scenes) => (scenes, CONVERGENCE_STUDIES),
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    } else {
+        match resolve_all(args) {
+            Ok(scenes) => (scenes, &[]),
+            Err(errors) => {
+                for e in errors {
+                    eprintln!("error: {e}");
+                }
+                return ExitCode::from(2);
+            }
+        }
+    };
+    let out = match (out, args.is_empty()) {
+        (Some(out), _) => out,
+        (None, true) => std::path::Path::new("reports"),
+        (None, false) => {
+            eprintln!(
+                "error: --out DIR is required with scene names, so that a report of some scenes never replaces the built-in report in reports/"
+            );
+            return ExitCode::from(2);
+        }
+    };
+    let generated =
+        run_for_report(&scenes, studies, !args.is_empty()).and_then(|runs| render(&scenes, &runs));
     let report = match generated {
         Ok(r) => r,
         Err(e) => {
@@ -48,15 +92,21 @@ pub fn report(out: &std::path::Path) -> ExitCode {
         eprintln!("error: cannot write {}: {e}", out.display());
         return ExitCode::from(2);
     }
+    let t = report.tally;
     println!(
-        "report written to {} ({} files){}",
+        "report written to {} ({} files): {} verdicts, {} pass, {} finding(s), {} FAILED{}\nopen {}",
         out.display(),
         report.files.len(),
+        t.total(),
+        t.passed,
+        t.findings,
+        t.failed,
         if report.passed {
             ""
         } else {
-            "; some expectations FAILED (see index.md)"
-        }
+            " (listed on the first screen)"
+        },
+        out.join("index.html").display()
     );
     if report.passed {
         ExitCode::SUCCESS

@@ -5,7 +5,9 @@ use crate::compare::files::scene_files;
 use crate::compare::outcome::SceneOutcome;
 use crate::io::atomic::write_dir_atomically;
 use crate::pipeline::evaluate_scene;
+use crate::report::numbers::shown;
 use crate::results::case::Status;
+use crate::results::table::{Cell, Table};
 use crate::scene::builtin::{BUILTIN_SCENES, resolve};
 use crate::scene::cases::Scene;
 use std::process::ExitCode;
@@ -56,65 +58,105 @@ pub fn run(args: &[String], out: &std::path::Path) -> ExitCode {
     }
 }
 
+/// A table for the terminal: numbers as the report shows them (one notation per column), text
+/// left-aligned, numbers right-aligned, columns as wide as their widest cell, no trailing
+/// spaces.
+pub fn aligned(table: &Table, indent: &str) -> String {
+    let cells = shown(table);
+    let mut widths: Vec<usize> = table.columns.iter().map(|c| c.chars().count()).collect();
+    for row in &cells {
+        for (w, c) in widths.iter_mut().zip(row) {
+            *w = (*w).max(c.chars().count());
+        }
+    }
+    let right: Vec<bool> = (0..table.columns.len())
+        .map(|c| {
+            table
+                .rows
+                .iter()
+                .all(|r| matches!(r[c], Cell::Num(_) | Cell::Int(_) | Cell::Empty))
+        })
+        .collect();
+    let line = |row: &[String]| {
+        let mut out = indent.to_string();
+        for (i, (cell, w)) in row.iter().zip(&widths).enumerate() {
+            if i > 0 {
+                out.push_str("  ");
+            }
+            if right[i] {
+                out.push_str(&format!("{cell:>w$}"));
+            } else {
+                out.push_str(&format!("{cell:<w$}"));
+            }
+        }
+        out.trim_end().to_string() + "\n"
+    };
+    let mut out = line(&table.columns);
+    for row in &cells {
+        out.push_str(&line(row));
+    }
+    out
+}
+
+/// A scene's results on the terminal: its cases (cost beside error), its spectra, dispersion
+/// runs, contact runs or sweep, then its verdicts.
 pub fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
     println!("{}: {}", scene.name, scene.description);
     println!("  source: {}", scene.source);
     if !outcome.spectra.is_empty() {
-        println!(
-            "  {:<24} {:>7} {:>22} {:>10}",
-            "case", "modes", "closed-form deviation", "wall [s]"
-        );
+        let mut t = Table::new(&["case", "modes", "closed_form_deviation", "wall_s"]);
         for s in &outcome.spectra {
-            let deviation = s
-                .closed_form_deviation()
-                .map_or("-".to_string(), |d| format!("{d:.3e}"));
-            println!(
-                "  {:<24} {:>7} {:>22} {:>10.4}",
-                s.case,
-                s.modes.len(),
-                deviation,
-                s.wall_time.as_secs_f64()
-            );
+            t.push(vec![
+                s.case.as_str().into(),
+                s.modes.len().into(),
+                s.closed_form_deviation().into(),
+                s.wall_time.as_secs_f64().into(),
+            ]);
         }
+        print!("{}", aligned(&t, "  "));
     }
     if !outcome.dispersion.is_empty() {
-        println!(
-            "  {:<18} {:>10} {:>16} {:>12}",
-            "case", "modes", "max deviation", "min order"
-        );
+        let mut t = Table::new(&["case", "modes", "max_deviation", "min_order"]);
         for d in &outcome.dispersion {
-            let order = d.min_order().map_or("-".to_string(), |o| format!("{o:.3}"));
-            println!(
-                "  {:<18} {:>10} {:>16.3e} {:>12}",
-                d.case.name,
-                d.rows.len(),
-                d.deviation(),
-                order
-            );
+            t.push(vec![
+                d.case.name.as_str().into(),
+                d.rows.len().into(),
+                d.deviation().into(),
+                d.min_order().into(),
+            ]);
         }
+        print!("{}", aligned(&t, "  "));
     }
     if !outcome.contact.is_empty() {
-        println!(
-            "  {:<32} {:>8} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}  status",
-            "case", "Co", "Co_crit", "plateau", "impulse", "duration", "force_l1", "energy"
-        );
+        let mut t = Table::new(&[
+            "case",
+            "Co",
+            "Co_crit",
+            "plateau_dev",
+            "impulse_err",
+            "duration_err",
+            "force_l1_err",
+            "energy_ratio",
+            "status",
+        ]);
         for c in &outcome.contact {
             let status = match &c.diverged {
                 None => "completed".to_string(),
                 Some(d) => format!("DIVERGED: {d}"),
             };
-            println!(
-                "  {:<32} {:>8.4} {:>8.4} {:>10.3e} {:>10.3e} {:>10.3e} {:>10.3e} {:>10.4}  {status}",
-                c.case,
-                c.run.courant,
-                c.run.critical.critical_courant(),
-                c.plateau_deviation,
-                c.impulse_error,
-                c.duration_error,
-                c.force_l1_error,
-                c.energy_ratio
-            );
+            t.push(vec![
+                c.case.as_str().into(),
+                c.run.courant.into(),
+                c.run.critical.critical_courant().into(),
+                c.errors.plateau_deviation.into(),
+                c.impulse_error.into(),
+                c.errors.duration_error.into(),
+                c.errors.force_l1_error.into(),
+                c.energy_ratio.into(),
+                status.into(),
+            ]);
         }
+        print!("{}", aligned(&t, "  "));
     }
     for s in &outcome.sweeps {
         println!(
@@ -129,34 +171,46 @@ pub fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
     }
 }
 
+/// Time-stepping cases: cost (N, Co, dt, steps, wall time) beside error (worst norms, energy
+/// balance) and how the run ended.
 pub fn print_cases(results: &[CaseResult]) {
     if results.is_empty() {
         return;
     }
-    println!(
-        "  {:<10} {:>7} {:>8} {:>11} {:>8} {:>10} {:>10} {:>10} {:>9} {:>10} {:>10}  status",
-        "case", "N", "Co", "dt", "steps", "L1", "L2", "Linf", "overshoot", "energy", "wall [s]"
-    );
+    let mut t = Table::new(&[
+        "case",
+        "N",
+        "Co",
+        "dt",
+        "steps",
+        "l1",
+        "l2",
+        "linf",
+        "overshoot",
+        "energy_balance",
+        "wall_s",
+        "status",
+    ]);
     for r in results {
         let n = r.worst_norms();
-        let f = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.3e}"));
         let status = match &r.status {
             Status::Completed => "completed".to_string(),
             Status::Diverged(d) => format!("DIVERGED: {d}"),
         };
-        println!(
-            "  {:<10} {:>7} {:>8.4} {:>11.4e} {:>8} {:>10} {:>10} {:>10} {:>9} {:>10.2e} {:>10.4}  {status}",
-            r.case,
-            r.elements,
-            r.courant,
-            r.dt,
-            r.steps,
-            f(n.map(|n| n.l1)),
-            f(n.map(|n| n.l2)),
-            f(n.map(|n| n.linf)),
-            n.map_or("-".into(), |n| format!("{:.4}", n.overshoot)),
-            r.energy.relative_balance_error(),
-            r.wall_time.as_secs_f64(),
-        );
+        t.push(vec![
+            r.case.as_str().into(),
+            r.elements.into(),
+            r.courant.into(),
+            r.dt.into(),
+            r.steps.into(),
+            n.map(|n| n.l1).into(),
+            n.map(|n| n.l2).into(),
+            n.map(|n| n.linf).into(),
+            n.map(|n| n.overshoot).into(),
+            r.energy.relative_balance_error().into(),
+            r.wall_time.as_secs_f64().into(),
+            status.into(),
+        ]);
     }
+    print!("{}", aligned(&t, "  "));
 }

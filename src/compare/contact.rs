@@ -1,12 +1,104 @@
 //! A contact record beside 1D wave theory (seed Figs. 4-5, methods.md §7): the force history
 //! against the analytic impact force, with plateau, impulse, duration and L1 errors and the
 //! energy left in the bars.
+//!
+//! Which force is graded is the case's [`ForceMeasure`] (chosen by the scene); the impulse is
+//! always the momentum delivered, whatever force is graded.
 
 use crate::results::contact::ContactRecord;
+use crate::scene::contact::ForceMeasure;
 use courant_references::contact::ImpactForce;
 use courant_solver::DivergenceError;
 use courant_solver::contact::{ContactRun, ContactSample};
 use std::time::Duration;
+
+/// How one force history compares with 1D wave theory.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ForceErrors {
+    /// Largest `|F - F1|/F1` for samples inside the first plateau (10 % to 90 % of it).
+    pub plateau_deviation: f64,
+    /// `|duration - exact|/exact`, the duration between the first and last crossings of half the
+    /// smallest plateau force of the reference (`None` when the force never reached it).
+    pub duration_error: Option<f64>,
+    /// `sum_k |F(t_k) - F_exact(t_k)| (t_k - t_{k-1}) / impulse_exact` over the recorded
+    /// samples: the L1 norm in time of the force error, relative to the exact impulse (a
+    /// discrete L1 error of the force history, seed Figs. 4-5 against 1D wave theory).
+    pub force_l1_error: f64,
+    /// Largest force over the run.
+    pub max_force: f64,
+    /// Fraction of the samples inside the first plateau (10 % to 90 % of it) at which the force
+    /// is zero: a contact that opens and closes within steps (chatter) reads a plateau deviation
+    /// near 1 without a plateau at all.
+    pub open_in_plateau: f64,
+}
+
+impl ForceErrors {
+    /// The errors of the force `measure` of `history` against `exact` (the reference at each
+    /// sample time).
+    fn of(
+        measure: ForceMeasure,
+        history: &[ContactSample],
+        exact: &[f64],
+        reference: &ImpactForce,
+    ) -> Self {
+        let force = |s: &ContactSample| measure.force(s);
+        let plateau = reference.first_plateau();
+        let first = reference
+            .plateaus()
+            .first()
+            .map_or((0.0, 0.0), |p| (p.start, p.end));
+        let (lo, hi) = (
+            first.0 + 0.1 * (first.1 - first.0),
+            first.0 + 0.9 * (first.1 - first.0),
+        );
+        let inside: Vec<&ContactSample> = history
+            .iter()
+            .filter(|s| s.time >= lo && s.time <= hi)
+            .collect();
+        let plateau_deviation = inside
+            .iter()
+            .map(|s| (force(s) - plateau).abs() / plateau)
+            .fold(0.0, f64::max);
+        let open_in_plateau = if inside.is_empty() {
+            0.0
+        } else {
+            inside.iter().filter(|s| force(s) == 0.0).count() as f64 / inside.len() as f64
+        };
+        // Half the smallest plateau of the reference: the staircase of unequal impedances steps
+        // down.
+        let threshold = 0.5
+            * reference
+                .plateaus()
+                .iter()
+                .map(|p| p.force)
+                .filter(|f| *f > 0.0)
+                .fold(plateau, f64::min);
+        let above: Vec<f64> = history
+            .iter()
+            .filter(|s| force(s) >= threshold)
+            .map(|s| s.time)
+            .collect();
+        let duration_error = match (above.first(), above.last()) {
+            (Some(a), Some(b)) => {
+                Some(((b - a) - reference.duration()).abs() / reference.duration())
+            }
+            _ => None,
+        };
+        let force_l1_error = history
+            .windows(2)
+            .zip(exact.iter().skip(1))
+            .map(|(pair, exact)| (force(&pair[1]) - exact).abs() * (pair[1].time - pair[0].time))
+            .sum::<f64>()
+            / reference.impulse();
+        Self {
+            plateau_deviation,
+            duration_error,
+            force_l1_error,
+            max_force: history.iter().map(force).fold(0.0, f64::max),
+            open_in_plateau,
+        }
+    }
+}
 
 /// A contact case's run beside its reference, with its accuracy figures.
 #[derive(Debug, Clone, PartialEq)]
@@ -19,34 +111,50 @@ pub struct ContactResult {
     pub run: ContactRun,
     /// How it diverged, if it did.
     pub diverged: Option<DivergenceError>,
+    /// The force graded and plotted.
+    pub measure: ForceMeasure,
     /// Exact force at each sample time.
     pub reference: Vec<f64>,
     /// First-plateau force of the reference.
     pub plateau: f64,
-    /// Largest `|F - F1|/F1` for samples inside the first plateau (10 % to 90 % of it).
-    pub plateau_deviation: f64,
-    /// `|impulse - exact|/exact`.
+    /// The errors of the graded force.
+    pub errors: ForceErrors,
+    /// The errors of the other force measure, where the scheme has both (the penalty schemes).
+    pub other_errors: Option<ForceErrors>,
+    /// `|impulse - exact|/exact` of the momentum delivered.
     pub impulse_error: f64,
-    /// `|duration - exact|/exact`, the duration between the first and last crossings of half the
-    /// smallest plateau force of the reference (NaN when the force never reached it).
-    pub duration_error: f64,
-    /// `sum_k |F(t_k) - F_exact(t_k)| (t_k - t_{k-1}) / impulse_exact` over the recorded
-    /// samples: the L1 norm in time of the force error, relative to the exact impulse (a
-    /// discrete L1 error of the force history, seed Figs. 4-5 against 1D wave theory).
-    pub force_l1_error: f64,
     /// Energy of the real masses (kinetic + strain) at the end over the initial energy.
     pub energy_ratio: f64,
     /// Central difference's conserved energy of the real masses at the end,
     /// `1/2 v^{n-1/2} M v^{n+1/2} + 1/2 u^n K u^n` (Hughes 1987, §9.1), over the initial energy:
     /// once the bodies have separated, the energy the run left in them, without the step-scale
-    /// oscillation that inflates `energy_ratio` near the critical step.
-    pub energy_ratio_conserved: f64,
+    /// oscillation that inflates `energy_ratio` near the critical step. `None` for a run that
+    /// diverged: above the critical step the staggered kinetic term is not positive and the
+    /// ratio means nothing (the status says how the run ended).
+    pub energy_ratio_conserved: Option<f64>,
     /// Wall time of the run.
     pub wall_time: Duration,
 }
 
-/// Compare a contact record with the analytic force of 1D wave theory.
-pub fn compare_contact(record: ContactRecord, reference: &ImpactForce) -> ContactResult {
+impl ContactResult {
+    /// The errors of the force `measure` (`None` for the penalty force of the Lagrange
+    /// multiplier method, which has none).
+    pub fn errors_of(&self, measure: ForceMeasure) -> Option<&ForceErrors> {
+        if measure == self.measure {
+            Some(&self.errors)
+        } else {
+            self.other_errors.as_ref()
+        }
+    }
+}
+
+/// Compare a contact record with the analytic force of 1D wave theory, grading the force
+/// `measure`.
+pub fn compare_contact(
+    record: ContactRecord,
+    reference: &ImpactForce,
+    measure: ForceMeasure,
+) -> ContactResult {
     let ContactRecord {
         case,
         penalty,
@@ -59,64 +167,34 @@ pub fn compare_contact(record: ContactRecord, reference: &ImpactForce) -> Contac
         .iter()
         .map(|s| reference.force(s.time))
         .collect();
-    let plateau = reference.first_plateau();
-    let first = reference
-        .plateaus()
-        .first()
-        .map_or((0.0, 0.0), |p| (p.start, p.end));
-    let (lo, hi) = (
-        first.0 + 0.1 * (first.1 - first.0),
-        first.0 + 0.9 * (first.1 - first.0),
-    );
-    let plateau_deviation = run
-        .history
-        .iter()
-        .filter(|s| s.time >= lo && s.time <= hi)
-        .map(|s| (s.force - plateau).abs() / plateau)
-        .fold(0.0, f64::max);
-    let impulse_error = (run.impulse - reference.impulse()).abs() / reference.impulse();
-    // Half the smallest plateau of the reference: the staircase of unequal impedances steps down.
-    let threshold = 0.5
-        * reference
-            .plateaus()
-            .iter()
-            .map(|p| p.force)
-            .filter(|f| *f > 0.0)
-            .fold(plateau, f64::min);
-    let above: Vec<f64> = run
-        .history
-        .iter()
-        .filter(|s| s.force >= threshold)
-        .map(|s| s.time)
-        .collect();
-    let duration_error = match (above.first(), above.last()) {
-        (Some(a), Some(b)) => ((b - a) - reference.duration()).abs() / reference.duration(),
-        _ => f64::NAN,
+    let errors = ForceErrors::of(measure, &run.history, &exact, reference);
+    let other = match measure {
+        ForceMeasure::PenaltyForce => ForceMeasure::TransferredMomentum,
+        ForceMeasure::TransferredMomentum => ForceMeasure::PenaltyForce,
     };
-    let force_l1_error = run
-        .history
-        .windows(2)
-        .zip(exact.iter().skip(1))
-        .map(|(pair, exact)| (pair[1].force - exact).abs() * (pair[1].time - pair[0].time))
-        .sum::<f64>()
-        / reference.impulse();
+    let other_errors = (ForceMeasure::for_scheme(other, &run.scheme) == other)
+        .then(|| ForceErrors::of(other, &run.history, &exact, reference));
+    let impulse_error = (run.impulse - reference.impulse()).abs() / reference.impulse();
     let energy = |s: &ContactSample| s.kinetic + s.strain;
     let conserved = |s: &ContactSample| s.kinetic_staggered + s.strain;
     let (energy_ratio, energy_ratio_conserved) = match (run.history.first(), run.history.last()) {
-        (Some(a), Some(b)) if energy(a) > 0.0 => (energy(b) / energy(a), conserved(b) / energy(a)),
-        _ => (f64::NAN, f64::NAN),
+        (Some(a), Some(b)) if energy(a) > 0.0 => (
+            energy(b) / energy(a),
+            diverged.is_none().then(|| conserved(b) / energy(a)),
+        ),
+        _ => (f64::NAN, None),
     };
     ContactResult {
         case,
         penalty,
         run,
         diverged,
+        measure,
         reference: exact,
-        plateau,
-        plateau_deviation,
+        plateau: reference.first_plateau(),
+        errors,
+        other_errors,
         impulse_error,
-        duration_error,
-        force_l1_error,
         energy_ratio,
         energy_ratio_conserved,
         wall_time,

@@ -2,7 +2,9 @@
 //! fitted by least squares on the finest meshes, and its verdict against the band theory allows
 //! (deal.II's convergence tables; the bands are the study's, `scene::studies::convergence`).
 
+use super::verdict::{Measured, Verdict};
 use crate::results::table::{Cell, Table};
+use crate::scene::expectation::{Bound, Metric};
 use crate::scene::studies::convergence::{ConvergenceStudy, FIT_LEVELS, OrderBand};
 
 /// What a convergence study's fitted order says of one norm.
@@ -109,6 +111,55 @@ impl ConvergenceResult {
                     expected,
                     pass,
                 }
+            })
+            .collect()
+    }
+
+    /// The verdicts of the norms with a band, as verdicts beside the scenes' (case
+    /// `<study> <norm>`): the fitted order against an order band, or the largest error over the
+    /// meshes against an exactness band.
+    pub fn order_verdicts(&self) -> Vec<Verdict> {
+        let picks: [NormOf; 3] = [|l| l.l1, |l| l.l2, |l| l.linf];
+        self.verdicts()
+            .into_iter()
+            .zip(self.study.bands)
+            .zip(picks)
+            .filter_map(|((v, band), pick)| {
+                let pass = v.pass?;
+                let (metric, measured, bound) = match band? {
+                    OrderBand::Order { min, max } => (
+                        Metric::FittedOrder,
+                        v.fitted.map_or(
+                            Measured::Missing("an error at round-off on the finest meshes".into()),
+                            Measured::Value,
+                        ),
+                        Bound::Range {
+                            min: Some(min),
+                            max: Some(max),
+                        },
+                    ),
+                    OrderBand::Exact { max_error } => (
+                        Metric::MaxError,
+                        Measured::Value(self.levels.iter().map(pick).fold(0.0, f64::max)),
+                        Bound::Range {
+                            min: None,
+                            max: Some(max_error),
+                        },
+                    ),
+                };
+                Some(Verdict {
+                    case: format!("{} {}", self.study.name, v.norm),
+                    metric,
+                    at: None,
+                    relative_to: None,
+                    masses: None,
+                    force: None,
+                    measured,
+                    bound,
+                    pass,
+                    finding: false,
+                    source: self.study.expected.to_string(),
+                })
             })
             .collect()
     }

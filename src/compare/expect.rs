@@ -1,80 +1,26 @@
 //! Checking a scene's expectations against its compared results.
+//!
+//! Each expectation is measured on every case it names, in the scene's study: time-stepping
+//! results, spectra, dispersion runs, contact runs or the contact stability sweep. With
+//! `relative_to` the value is the ratio `value(case) / value(relative_to)`; for
+//! `force_history_difference` it is the distance between the two force histories.
 
 use super::case::CaseResult;
+use super::contact::{ContactResult, ForceErrors};
 use super::norms::ErrorNorms;
 use super::outcome::SceneOutcome;
+use super::spectrum::SpectrumResult;
 use super::verdict::{Measured, Verdict};
 use crate::results::case::Status;
 use crate::scene::cases::Scene;
-use crate::scene::expectation::{Bound, Expectation, Metric, Study};
+use crate::scene::contact::ForceMeasure;
+use crate::scene::expectation::{Bound, Expectation, Metric};
 
 /// Evaluate every expectation of `scene` on the matching results.
 pub fn evaluate(scene: &Scene, outcome: &SceneOutcome) -> Vec<Verdict> {
-    let (results, spectra, dispersion) = (&outcome.results, &outcome.spectra, &outcome.dispersion);
     let mut verdicts = Vec::new();
     for expectation in &scene.expectations {
-        let wanted = |case: &String| expectation.cases.contains(case);
-        let study = match expectation.metric {
-            Metric::Diverged if !outcome.contact.is_empty() => Study::Contact,
-            m => m.study(),
-        };
-        let measured: Vec<(String, Measured)> = match study {
-            Study::Spectrum => spectra
-                .iter()
-                .filter(|r| wanted(&r.case))
-                .map(|r| {
-                    let value = r.closed_form_deviation();
-                    (
-                        r.case.clone(),
-                        value.map_or(
-                            Measured::Missing("no closed form for this case".into()),
-                            Measured::Value,
-                        ),
-                    )
-                })
-                .collect(),
-            Study::Dispersion => dispersion
-                .iter()
-                .filter(|r| wanted(&r.case.name))
-                .map(|r| {
-                    let value = match expectation.metric {
-                        Metric::PhaseErrorOrder => r.min_order().map_or(
-                            Measured::Missing("no mode pair n, 2n".into()),
-                            Measured::Value,
-                        ),
-                        _ => Measured::Value(r.deviation()),
-                    };
-                    (r.case.name.clone(), value)
-                })
-                .collect(),
-            Study::Contact => outcome
-                .contact
-                .iter()
-                .filter(|r| wanted(&r.case))
-                .map(|r| {
-                    let value = match expectation.metric {
-                        Metric::PlateauDeviation => Measured::Value(r.plateau_deviation),
-                        Metric::ImpulseError => Measured::Value(r.impulse_error),
-                        Metric::DurationError => Measured::Value(r.duration_error),
-                        Metric::ForceL1Error => Measured::Value(r.force_l1_error),
-                        Metric::EnergyRatio => Measured::Value(r.energy_ratio),
-                        _ => Measured::Flag(r.diverged.is_some()),
-                    };
-                    (r.case.clone(), value)
-                })
-                .collect(),
-            Study::ContactStability => outcome
-                .sweeps
-                .iter()
-                .map(|s| ("stability".to_string(), Measured::Value(s.deviation())))
-                .collect(),
-            Study::TimeStepping => results
-                .iter()
-                .filter(|r| wanted(&r.case))
-                .map(|r| (r.case.clone(), measure(expectation, r)))
-                .collect(),
-        };
-        for (case, measured) in measured {
+        for (case, measured) in measure_all(expectation, outcome) {
             let pass = match (&measured, expectation.bound) {
                 (Measured::Value(x), Bound::Range { min, max }) => {
                     x.is_finite() && min.is_none_or(|lo| *x >= lo) && max.is_none_or(|hi| *x <= hi)
@@ -86,9 +32,13 @@ pub fn evaluate(scene: &Scene, outcome: &SceneOutcome) -> Vec<Verdict> {
                 case,
                 metric: expectation.metric,
                 at: expectation.at,
+                relative_to: expectation.relative_to.clone(),
+                masses: expectation.masses,
+                force: expectation.force,
                 measured,
                 bound: expectation.bound,
                 pass,
+                finding: false,
                 source: expectation.source.clone(),
             });
         }
@@ -96,7 +46,109 @@ pub fn evaluate(scene: &Scene, outcome: &SceneOutcome) -> Vec<Verdict> {
     verdicts
 }
 
-fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
+/// `(case, measured)` for every case the expectation names, in the scene's study.
+fn measure_all(e: &Expectation, outcome: &SceneOutcome) -> Vec<(String, Measured)> {
+    let wanted = |case: &str| e.cases.iter().any(|c| c == case);
+    if !outcome.contact.is_empty() {
+        return outcome
+            .contact
+            .iter()
+            .filter(|r| wanted(&r.case))
+            .map(|r| {
+                (
+                    r.case.clone(),
+                    relative(e, r, &outcome.contact, contact_value),
+                )
+            })
+            .collect();
+    }
+    if !outcome.sweeps.is_empty() {
+        return outcome
+            .sweeps
+            .iter()
+            .map(|s| ("stability".to_string(), Measured::Value(s.deviation())))
+            .collect();
+    }
+    if !outcome.spectra.is_empty() {
+        return outcome
+            .spectra
+            .iter()
+            .filter(|r| wanted(&r.case))
+            .map(|r| (r.case.clone(), spectrum_value(e, r)))
+            .collect();
+    }
+    if !outcome.dispersion.is_empty() {
+        return outcome
+            .dispersion
+            .iter()
+            .filter(|r| wanted(&r.case.name))
+            .map(|r| {
+                let value = match e.metric {
+                    Metric::PhaseErrorOrder => r.min_order().map_or(
+                        Measured::Missing("no mode pair n, 2n".into()),
+                        Measured::Value,
+                    ),
+                    _ => Measured::Value(r.deviation()),
+                };
+                (r.case.name.clone(), value)
+            })
+            .collect();
+    }
+    outcome
+        .results
+        .iter()
+        .filter(|r| wanted(&r.case))
+        .map(|r| (r.case.clone(), relative(e, r, &outcome.results, case_value)))
+        .collect()
+}
+
+/// A case's result, found by name among its scene's.
+trait Named {
+    fn name(&self) -> &str;
+}
+
+impl Named for CaseResult {
+    fn name(&self) -> &str {
+        &self.case
+    }
+}
+
+impl Named for ContactResult {
+    fn name(&self) -> &str {
+        &self.case
+    }
+}
+
+/// The value of `e` on `r`, or relative to the case `e.relative_to` (a ratio, or the metric's
+/// own comparison when it takes the other case itself).
+fn relative<R: Named>(
+    e: &Expectation,
+    r: &R,
+    all: &[R],
+    value: fn(&Expectation, &R, Option<&R>) -> Measured,
+) -> Measured {
+    let Some(other) = &e.relative_to else {
+        return value(e, r, None);
+    };
+    let Some(reference) = all.iter().find(|x| x.name() == other) else {
+        return Measured::Missing(format!("no result for {other}"));
+    };
+    if e.metric == Metric::ForceHistoryDifference {
+        return value(e, r, Some(reference));
+    }
+    match (value(e, r, None), value(e, reference, None)) {
+        (Measured::Value(a), Measured::Value(b)) if b != 0.0 => Measured::Value(a / b),
+        (Measured::Value(_), Measured::Value(_)) => {
+            Measured::Missing(format!("{other} measures 0: no ratio"))
+        }
+        (Measured::Missing(why), _) => Measured::Missing(why),
+        (_, Measured::Missing(why)) => Measured::Missing(format!("{other}: {why}")),
+        _ => Measured::Missing("not a number".into()),
+    }
+}
+
+/// A time-stepping metric of one case.
+fn case_value(e: &Expectation, result: &CaseResult, _: Option<&CaseResult>) -> Measured {
     let norm_of = |pick: fn(&ErrorNorms) -> f64| -> Measured {
         let selected: Vec<f64> = result
             .profiles
@@ -104,13 +156,13 @@ fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
             .filter(|p| {
                 // The profile of time t: hit exactly by a planned step, or (keep_step) the step
                 // nearest to t, within half a step.
-                expectation.at.is_none_or(|t| {
+                e.at.is_none_or(|t| {
                     (p.time - t).abs() <= (1e-9 * t.abs()).max(0.5 * result.dt).max(1e-300)
                 })
             })
             .filter_map(|p| p.norms.as_ref().map(pick))
             .collect();
-        let expected = if expectation.at.is_some() {
+        let expected = if e.at.is_some() {
             1
         } else {
             result.profiles_requested
@@ -120,7 +172,7 @@ fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
         }
         Measured::Value(selected.into_iter().fold(f64::NEG_INFINITY, f64::max))
     };
-    match expectation.metric {
+    match e.metric {
         Metric::L1 => norm_of(|n| n.l1),
         Metric::L2 => norm_of(|n| n.l2),
         Metric::Linf => norm_of(|n| n.linf),
@@ -129,14 +181,93 @@ fn measure(expectation: &Expectation, result: &CaseResult) -> Measured {
         Metric::EnergyLost => Measured::Value(result.energy_lost()),
         Metric::EnergyBalance => Measured::Value(result.energy.relative_balance_error()),
         Metric::Diverged => Measured::Flag(matches!(result.status, Status::Diverged(_))),
-        Metric::ClosedFormDeviation
-        | Metric::DispersionDeviation
-        | Metric::PhaseErrorOrder
-        | Metric::PlateauDeviation
-        | Metric::ImpulseError
-        | Metric::DurationError
-        | Metric::ForceL1Error
-        | Metric::EnergyRatio
-        | Metric::CourantDeviation => Measured::Missing("not a time-stepping metric".into()),
+        Metric::ElementBoundRatio => {
+            Measured::Value(result.critical.element / result.critical.exact)
+        }
+        Metric::CriticalCourant => Measured::Value(result.courant * result.limit.dt() / result.dt),
+        _ => Measured::Missing("not a time-stepping metric".into()),
+    }
+}
+
+/// A contact metric of one case (`other`: the case of `force_history_difference`).
+fn contact_value(e: &Expectation, r: &ContactResult, other: Option<&ContactResult>) -> Measured {
+    let errors = match e.force {
+        None => Some(&r.errors),
+        Some(measure) => r.errors_of(measure),
+    };
+    let of = |pick: fn(&ForceErrors) -> f64| {
+        errors.map_or(
+            Measured::Missing("the scheme has no penalty force".into()),
+            |errors| Measured::Value(pick(errors)),
+        )
+    };
+    match e.metric {
+        Metric::PlateauDeviation => of(|e| e.plateau_deviation),
+        Metric::ImpulseError => Measured::Value(r.impulse_error),
+        Metric::DurationError => match errors.map(|e| e.duration_error) {
+            Some(Some(d)) => Measured::Value(d),
+            Some(None) => Measured::Missing("the force never reached half the plateau".into()),
+            None => Measured::Missing("the scheme has no penalty force".into()),
+        },
+        Metric::ForceL1Error => of(|e| e.force_l1_error),
+        Metric::EnergyRatio => Measured::Value(r.energy_ratio),
+        Metric::MaxForce => of(|e| e.max_force),
+        Metric::CriticalCourant => Measured::Value(r.run.critical.critical_courant()),
+        Metric::Diverged => Measured::Flag(r.diverged.is_some()),
+        Metric::ForceHistoryDifference => match other {
+            Some(other) => force_history_difference(r, other, e.force.unwrap_or(r.measure)),
+            None => Measured::Missing("needs relative_to".into()),
+        },
+        _ => Measured::Missing("not a contact metric".into()),
+    }
+}
+
+/// `max_k |F_a(t_k) - F_b(t_k)| / F1` over the samples both runs took at the same time (bit for
+/// bit: same step and sampling), F1 the exact first plateau of `a`.
+fn force_history_difference(
+    a: &ContactResult,
+    b: &ContactResult,
+    measure: ForceMeasure,
+) -> Measured {
+    let (ha, hb) = (&a.run.history, &b.run.history);
+    let common = ha.len().min(hb.len());
+    if common == 0 || (0..common).any(|k| ha[k].time.to_bits() != hb[k].time.to_bits()) {
+        return Measured::Missing(format!(
+            "{} and {} do not sample the same times (same step and history_every needed)",
+            a.case, b.case
+        ));
+    }
+    let worst = (0..common)
+        .map(|k| (measure.force(&ha[k]) - measure.force(&hb[k])).abs())
+        .fold(0.0, f64::max);
+    Measured::Value(worst / a.plateau)
+}
+
+/// A spectrum metric of one case.
+fn spectrum_value(e: &Expectation, r: &SpectrumResult) -> Measured {
+    match (e.metric, e.masses) {
+        (Metric::ClosedFormDeviation, _) => r.closed_form_deviation().map_or(
+            Measured::Missing("no closed form for this case".into()),
+            Measured::Value,
+        ),
+        (Metric::MassDeviation, Some((mass, against))) => {
+            let column = |kind| r.masses.iter().position(|m| *m == kind);
+            match (column(mass), column(against)) {
+                (Some(a), Some(b)) => {
+                    // Elastic modes only: the rigid mode of a free bar is 0 up to round-off.
+                    let top = r.computed[b].iter().copied().fold(0.0, f64::max);
+                    Measured::Value(
+                        r.computed[a]
+                            .iter()
+                            .zip(&r.computed[b])
+                            .filter(|(_, w)| **w > 1e-6 * top)
+                            .map(|(v, w)| (v / w - 1.0).abs())
+                            .fold(0.0, f64::max),
+                    )
+                }
+                _ => Measured::Missing("the case lacks one of the two masses".into()),
+            }
+        }
+        _ => Measured::Missing("not a spectrum metric".into()),
     }
 }

@@ -10,7 +10,8 @@
 //!   profiles between the cases of a scene, [`norms`] measures a profile against them;
 //! - [`case`], [`contact`], [`spectrum`], [`dispersion`], [`sweep`]: each kind of record beside
 //!   its reference; [`scene`] compares a whole scene into an [`outcome::SceneOutcome`] and
-//!   [`expect`] gives the [`verdict`]s of its expectations;
+//!   [`expect`] gives the [`verdict`]s of its expectations, [`stability_verdicts`] those of a
+//!   stability scene's cases;
 //! - [`convergence`] (observed and fitted orders against the study's band), [`stability`]
 //!   (predicted against observed stability), [`work_precision`] (cost beside error),
 //!   [`contact_closed_forms`] (the closed forms against their asymptotes);
@@ -35,6 +36,7 @@ pub mod outcome;
 pub mod scene;
 pub mod spectrum;
 pub mod stability;
+pub mod stability_verdicts;
 pub mod study_tables;
 pub mod sweep;
 pub mod tables;

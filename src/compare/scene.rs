@@ -7,6 +7,8 @@ use super::dispersion::compare_dispersion;
 use super::expect::evaluate;
 use super::outcome::SceneOutcome;
 use super::spectrum::compare_spectrum;
+use super::stability::stability_rows;
+use super::stability_verdicts::stability_verdicts;
 use super::sweep::compare_sweep;
 use crate::results::scene::SceneRecords;
 use crate::scene::cases::Scene;
@@ -64,7 +66,7 @@ pub fn compare_scene(scene: &Scene, records: SceneRecords) -> Result<SceneOutcom
             .contact
             .iter()
             .zip(contact)
-            .map(|(case, record)| compare_contact(record, &case.reference))
+            .map(|(case, record)| compare_contact(record, &case.reference, case.force))
             .collect(),
         sweeps: sweeps
             .into_iter()
@@ -73,5 +75,7 @@ pub fn compare_scene(scene: &Scene, records: SceneRecords) -> Result<SceneOutcom
         verdicts: Vec::new(),
     };
     outcome.verdicts = evaluate(scene, &outcome);
+    let rows = stability_rows(scene, &outcome);
+    outcome.verdicts.extend(stability_verdicts(&rows));
     Ok(outcome)
 }

@@ -103,14 +103,17 @@ pub fn dispersion_table(results: &[DispersionResult]) -> Table {
     table
 }
 
-/// The force history: `t, force, reference, penalty_force, gap, active, impulse, kinetic,
-/// strain, penalty_spring, penalty_kinetic, total`.
+/// The force history: `t, force, reference, transferred_force, gap, active, impulse, kinetic,
+/// strain, penalty_spring, penalty_kinetic, total`. `force` is the graded force
+/// ([`ForceMeasure`](super::contact::ForceMeasure): the seed's `eps_s x penetration` for the
+/// penalty schemes, momentum/dt for the Lagrange multiplier), `transferred_force` the momentum
+/// delivered to the real masses at the level over the span of its velocity update.
 pub fn force_table(r: &ContactResult) -> Table {
     let mut table = Table::new(&[
         "t",
         "force",
         "reference",
-        "penalty_force",
+        "transferred_force",
         "gap",
         "active",
         "impulse",
@@ -123,9 +126,9 @@ pub fn force_table(r: &ContactResult) -> Table {
     for (s, reference) in r.run.history.iter().zip(&r.reference) {
         table.push(vec![
             s.time.into(),
-            s.force.into(),
+            r.measure.force(s).into(),
             (*reference).into(),
-            s.penalty_force.into(),
+            s.force.into(),
             s.gap.into(),
             Cell::Int(s.active as u64),
             s.impulse.into(),
@@ -151,6 +154,7 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
         "binding_limit",
         "dt",
         "steps",
+        "force_measure",
         "plateau",
         "plateau_deviation",
         "impulse_error",
@@ -159,7 +163,9 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
         "energy_ratio",
         "energy_ratio_conserved",
         "max_force",
+        "max_transferred_force",
         "status",
+        "note",
         "wall_time_s",
     ]);
     for r in results {
@@ -177,19 +183,46 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
             format!("{:?}", r.run.critical.binding).into(),
             r.run.dt.into(),
             r.run.steps.into(),
+            r.measure.label().into(),
             r.plateau.into(),
-            r.plateau_deviation.into(),
+            r.errors.plateau_deviation.into(),
             r.impulse_error.into(),
-            r.duration_error.into(),
-            r.force_l1_error.into(),
+            r.errors.duration_error.into(),
+            r.errors.force_l1_error.into(),
             r.energy_ratio.into(),
             r.energy_ratio_conserved.into(),
+            r.errors.max_force.into(),
             r.run.max_force.into(),
             status.into(),
+            contact_note(r).into(),
             r.wall_time.as_secs_f64().into(),
         ]);
     }
     table
+}
+
+/// What a contact row's numbers need said: chatter (a plateau deviation near 1 without a
+/// plateau), or a diverged run's missing conserved energy.
+fn contact_note(r: &ContactResult) -> String {
+    let mut notes = Vec::new();
+    if r.errors.open_in_plateau == 1.0 {
+        notes.push(
+            "contact open at every plateau sample: the bars separated before the plateau (plateau deviation 1)"
+                .to_string(),
+        );
+    } else if r.errors.open_in_plateau > 0.0 {
+        notes.push(format!(
+            "contact open at {:.0} % of the plateau samples (chatter: the plateau deviation is that of a force switching between 0 and its peak)",
+            100.0 * r.errors.open_in_plateau
+        ));
+    }
+    if r.diverged.is_some() {
+        notes.push(
+            "diverged: no conserved energy above the critical step; energy_ratio is where the guard stopped it"
+                .to_string(),
+        );
+    }
+    notes.join("; ")
 }
 
 /// `beta_s, r, cr, cr_closed_form` (`r` empty on the penalty-only curve).

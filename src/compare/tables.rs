@@ -181,17 +181,18 @@ pub fn expectations_table(verdicts: &[Verdict]) -> Table {
         let measured = match &v.measured {
             Measured::Value(x) => Cell::Num(*x),
             Measured::Flag(b) => Cell::Text(b.to_string()),
+            Measured::Text(t) => Cell::Text(t.clone()),
             Measured::Missing(why) => Cell::Text(format!("missing: {why}")),
         };
         table.push(vec![
             v.case.as_str().into(),
-            v.metric.name().into(),
+            v.metric_label().into(),
             v.at.into(),
             measured,
             min,
             max,
             equals,
-            (if v.pass { "pass" } else { "FAIL" }).into(),
+            v.word().into(),
             v.source.as_str().into(),
         ]);
     }

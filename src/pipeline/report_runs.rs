@@ -27,14 +27,15 @@ pub struct ReportRuns {
     pub wall_time: f64,
 }
 
-/// Run and compare `scenes`, `studies` and the work-precision studies. A progress bar shows on a
-/// terminal (indicatif draws to stderr and hides itself otherwise).
+/// Run and compare `scenes`, `studies` and (unless `scenes_only`) the work-precision studies. A
+/// progress bar shows on a terminal (indicatif draws to stderr and hides itself otherwise).
 ///
 /// # Errors
 /// The first scene or study, in order, that cannot run: `<scene>: <why>` or the study's message.
 pub fn run_for_report(
     scenes: &[Scene],
     studies: &[ConvergenceStudy],
+    scenes_only: bool,
 ) -> Result<ReportRuns, String> {
     let started = Instant::now();
     let progress = indicatif::ProgressBar::new((scenes.len() + studies.len()) as u64);
@@ -66,12 +67,16 @@ pub fn run_for_report(
         .collect::<Vec<Result<ConvergenceResult, String>>>();
     let convergence = in_order(convergence)?;
     progress.finish_and_clear();
-    let work = in_order(
-        WORK_PRECISION_STUDIES
-            .par_iter()
-            .map(run_work_precision)
-            .collect(),
-    )?;
+    let work = if scenes_only {
+        Vec::new()
+    } else {
+        in_order(
+            WORK_PRECISION_STUDIES
+                .par_iter()
+                .map(run_work_precision)
+                .collect(),
+        )?
+    };
     Ok(ReportRuns {
         scenes: outcomes,
         convergence,

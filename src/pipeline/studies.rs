@@ -98,7 +98,7 @@ pub fn run_work_precision(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, 
 
 /// A contact study: one derived scene per striker mesh and variant, every case of each;
 /// `elements` counts the elements of all bodies, the error is
-/// [`crate::compare::contact::ContactResult::force_l1_error`].
+/// [`crate::compare::contact::ForceErrors::force_l1_error`] of the graded force.
 fn run_contact_study(
     study: &WorkPrecisionStudy,
     scenes: &[(Option<&'static str>, Scene)],
@@ -111,7 +111,7 @@ fn run_contact_study(
         .par_iter()
         .map(|&(setting, case)| {
             let record = run_contact(case).map_err(|e| e.to_string())?;
-            let r = compare_contact(record, &case.reference);
+            let r = compare_contact(record, &case.reference, case.force);
             if let Some(d) = &r.diverged {
                 return Err(format!(
                     "study {}: case {} diverged: {d}",
@@ -132,7 +132,7 @@ fn run_contact_study(
                 steps: r.run.steps,
                 // Central difference on the bulk: one K u per step; the contact update is O(1).
                 force_evaluations: 1,
-                l1: r.force_l1_error,
+                l1: r.errors.force_l1_error,
                 wall_time: r.wall_time.as_secs_f64(),
             })
         })

@@ -4,6 +4,7 @@
 use super::document::{Block, Page};
 use super::plot::{Axes, Series, SeriesStyle, line_chart};
 use crate::compare::convergence::{ConvergenceResult, Level};
+use crate::scene::studies::convergence::OrderBand;
 
 /// The section of every study.
 pub fn section(convergence: &[ConvergenceResult]) -> Page {
@@ -48,14 +49,51 @@ pub fn convergence_figure(result: &ConvergenceResult) -> Option<String> {
             SeriesStyle::Line,
         )
     };
-    let series = vec![
+    let lines = vec![
         pick("L1", |l| l.l1),
         pick("L2", |l| l.l2),
         pick("Linf", |l| l.linf),
     ];
-    if series.iter().any(|s| s.points.len() < 2) {
+    if lines.iter().any(|s| s.points.len() < 2) {
         return None;
     }
+    // A marker at every mesh, in the colour of its norm.
+    let markers: Vec<Series> = lines
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            Series::new(s.name.clone(), s.points.clone(), SeriesStyle::Points)
+                .with_colour(i)
+                .without_legend()
+        })
+        .collect();
+    // The slope theory expects for each norm with an order band (the band's middle), through the
+    // finest mesh, dashed in the norm's colour.
+    let guides: Vec<Series> = lines
+        .iter()
+        .zip(result.study.bands)
+        .enumerate()
+        .filter_map(|(i, (line, band))| match band {
+            Some(OrderBand::Order { min, max }) => {
+                let order = 0.5 * (min + max);
+                let &(n_f, e_f) = line.points.last()?;
+                let &(n_0, _) = line.points.first()?;
+                Some(
+                    Series::new(
+                        format!("{} slope {order:.2} (expected)", line.name),
+                        [n_0, n_f]
+                            .iter()
+                            .map(|&n| (n, e_f * (n / n_f).powf(-order)))
+                            .collect(),
+                        SeriesStyle::Dashed,
+                    )
+                    .with_colour(i),
+                )
+            }
+            _ => None,
+        })
+        .collect();
+    let series: Vec<Series> = lines.into_iter().chain(markers).chain(guides).collect();
     line_chart(
         &Axes::log_log(result.study.title, "N", "error / |sigma0|"),
         &series,

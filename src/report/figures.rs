@@ -10,6 +10,7 @@ use super::figure_parts::{
 };
 use super::plot::{Axes, PALETTE_SIZE, Series, SeriesStyle, line_chart};
 use crate::compare::case::CaseResult;
+use crate::compare::contact::ContactResult;
 use crate::compare::outcome::SceneOutcome;
 use crate::compare::stability::ENERGY_BAND;
 use crate::compare::sweep::{SweepResult, SweepRow};
@@ -42,12 +43,37 @@ pub fn scene_figures(scene: &Scene, outcome: &SceneOutcome) -> Vec<(String, Stri
                 Series::new(m.label(), points, SeriesStyle::Line)
             })
             .collect();
+        // The closed form each spectrum is checked against, dashed in the same colour.
+        let closed: Vec<Series> = s
+            .closed_form
+            .iter()
+            .flatten()
+            .enumerate()
+            .map(|(i, w)| {
+                let points = s
+                    .modes
+                    .iter()
+                    .zip(w)
+                    .zip(exact)
+                    .filter(|(_, e)| **e > 0.0)
+                    .map(|((&mode, w), e)| (mode as f64 / n, w / e - 1.0))
+                    .collect();
+                let line =
+                    Series::new("closed form (dashed)", points, SeriesStyle::Dashed).with_colour(i);
+                if i == 0 { line } else { line.without_legend() }
+            })
+            .collect();
+        let series: Vec<Series> = series.into_iter().chain(closed).collect();
         let title = format!("{}: relative frequency error, {}", scene.name, s.case);
         if let Ok(svg) = line_chart(
-            &Axes::new(title.clone(), "mode / modes", "omega_h / omega - 1"),
+            &Axes::new(title.clone(), "mode n / modes", "omega_n,h / omega_n - 1"),
             &series,
         ) {
-            figures.push((format!("spectrum_{}.svg", s.case), title, svg));
+            let caption = format!(
+                "{title}: the computed frequencies of each mass kind against the continuum (solid) \
+                 and the closed-form discrete spectrum of methods.md §5 (dashed, same colour)"
+            );
+            figures.push((format!("spectrum_{}.svg", s.case), caption, svg));
         }
     }
     force_figures(scene, outcome, &mut figures);
@@ -84,15 +110,26 @@ fn profile_figures(
             diverged.iter().map(|r| (key(r), *r)).collect(),
             MAX_CASES,
         ));
-        let title = format!("{}: stress at t = {:.4}", scene.name, profile.time);
+        let title = format!(
+            "{}: stress at {}",
+            scene.name,
+            time_label(scene, longest, profile.time)
+        );
         for (j, part) in parts.iter().enumerate() {
+            let scaled = |r: &CaseResult, values: &[f64]| -> Vec<(f64, f64)> {
+                let (length, stress) = scales(scene, r);
+                let p = &r.profiles[k];
+                p.x.iter()
+                    .zip(values)
+                    .map(|(x, s)| (x / length, s / stress))
+                    .collect()
+            };
             let cases: Vec<Series> = part
                 .iter()
                 .map(|r| {
-                    let p = &r.profiles[k];
                     Series::new(
-                        r.case.clone(),
-                        p.x.iter().copied().zip(p.stress.iter().copied()).collect(),
+                        case_label(r),
+                        scaled(r, &r.profiles[k].stress),
                         SeriesStyle::Line,
                     )
                 })
@@ -100,13 +137,8 @@ fn profile_figures(
             let exact: Vec<Series> = part
                 .iter()
                 .find_map(|r| {
-                    let p = &r.profiles[k];
-                    p.reference.as_ref().map(|reference| {
-                        Series::new(
-                            "exact",
-                            p.x.iter().copied().zip(reference.iter().copied()).collect(),
-                            SeriesStyle::Dashed,
-                        )
+                    r.profiles[k].reference.as_ref().map(|reference| {
+                        Series::new("exact", scaled(r, reference), SeriesStyle::Dashed)
                     })
                 })
                 .into_iter()
@@ -117,13 +149,18 @@ fn profile_figures(
             }
             if j == 0 && !missing.is_empty() {
                 notes.push(format!(
-                    "not shown, diverged before t = {:.4}: {}",
-                    profile.time,
+                    "not shown, diverged before {}: {}",
+                    time_label(scene, longest, profile.time),
                     names(missing.iter().map(|r| r.case.as_str()))
                 ));
             }
             let part_title = numbered(&title, j, parts.len());
-            let axes = Axes::new(part_title.clone(), "x", "stress");
+            let y_label = if exact.is_empty() {
+                "stress"
+            } else {
+                "stress / |sigma0|"
+            };
+            let axes = Axes::new(part_title.clone(), "x / L", y_label);
             if let Some(svg) = chart_naming_omissions(&axes, cases, exact, &mut notes) {
                 let file = part_file(&format!("profile_{k}"), j, parts.len());
                 let caption = caption(
@@ -154,13 +191,20 @@ fn force_figures(
     let (shown, unstable): (Vec<_>, Vec<_>) = outcome
         .contact
         .iter()
-        .partition(|c| c.diverged.is_none() && c.energy_ratio_conserved <= ENERGY_BAND);
+        .partition(|c| c.energy_ratio_conserved.is_some_and(|e| e <= ENERGY_BAND));
     let keyed = shown
         .into_iter()
         .map(|c| (c.run.scheme.label().to_string(), c))
         .collect();
     let parts = split(keyed, MAX_CASES);
     let title = format!("{}: contact force", scene.name);
+    let transit = |c: &ContactResult| {
+        scene
+            .contact
+            .iter()
+            .find(|k| k.name == c.case)
+            .map_or(1.0, |k| k.striker_transit)
+    };
     let mut first_notes = Vec::new();
     if !unstable.is_empty() {
         first_notes.push(format!(
@@ -182,7 +226,11 @@ fn force_figures(
             .map(|c| {
                 Series::new(
                     c.case.clone(),
-                    c.run.history.iter().map(|s| (s.time, s.force)).collect(),
+                    c.run
+                        .history
+                        .iter()
+                        .map(|s| (s.time / transit(c), c.measure.force(s) / c.plateau))
+                        .collect(),
                     SeriesStyle::Line,
                 )
             })
@@ -200,8 +248,8 @@ fn force_figures(
                     c.run
                         .history
                         .iter()
-                        .map(|s| s.time)
-                        .zip(c.reference.iter().copied())
+                        .map(|s| s.time / transit(c))
+                        .zip(c.reference.iter().map(|f| f / c.plateau))
                         .collect(),
                     SeriesStyle::Dashed,
                 )
@@ -214,7 +262,28 @@ fn force_figures(
             Vec::new()
         };
         let part_title = numbered(&title, j, parts.len());
-        let axes = Axes::new(part_title.clone(), "t", "force");
+        // Peaks over several decades (the seed's CD force grows with beta_s): a log force axis,
+        // on which the open contact (force 0) is not drawn.
+        let peaks = part.iter().map(|c| c.errors.max_force).filter(|f| *f > 0.0);
+        let (lo, hi) = peaks.fold((f64::INFINITY, 0.0_f64), |(lo, hi), f| {
+            (lo.min(f), hi.max(f))
+        });
+        let log = hi > 100.0 * lo;
+        if log {
+            notes.push("log force axis: the peaks span several decades; an open contact (force 0) is not drawn".into());
+        }
+        let measures: Vec<&str> = part.iter().map(|c| c.measure.label()).collect();
+        let measure = if measures.iter().all(|m| *m == measures[0]) && !measures.is_empty() {
+            measures[0]
+        } else {
+            "force_measure in the summary"
+        };
+        let axes = Axes::new(
+            part_title.clone(),
+            "t / T1 (striker transit L1/c1)",
+            format!("force / F1 ({measure}; F1 first plateau)"),
+        )
+        .log_y(log);
         if let Some(svg) = chart_naming_omissions(&axes, cases, exact, &mut notes) {
             let file = part_file("force", j, parts.len());
             let caption = caption(
@@ -271,8 +340,10 @@ fn stability_figures(
 /// The series of the contact stability graph (seed Fig. 3), in parts of at most the palette's
 /// 8 curves: per curve (penalty only, each ratio r, named as in the legend) the solver's critical
 /// Courant numbers as points and the closed form of `courant-references` (methods.md §7) as a
-/// dashed line, both in the curve's palette colour. The closed forms come first, so the points
-/// are drawn over them, and share one legend entry, `closed form (dashed)`.
+/// dashed line, both in the curve's palette colour. The points are hollow and shrink from curve
+/// to curve, so curves that coincide (every r <= 1 sits at Cr = 1) stay visible as concentric
+/// rings; the closed forms are drawn last, over the points, and share one legend entry,
+/// `closed form (dashed)`.
 pub fn stability_charts(sweep: &SweepResult) -> Vec<(Vec<String>, Vec<Series>)> {
     let mut curves: Vec<(String, Vec<&SweepRow>)> = Vec::new();
     for row in &sweep.rows {
@@ -312,8 +383,46 @@ pub fn stability_charts(sweep: &SweepResult) -> Vec<(Vec<String>, Vec<Series>)> 
                 )
                 .with_colour(colour)
             });
-            let series = closed.chain(solver).collect();
+            let series = solver.chain(closed).collect();
             (part.into_iter().map(|(name, _)| name).collect(), series)
         })
         .collect()
+}
+
+/// A profile time as the scene states it: `t = 0.5 T` (transit times) or `t = 0.005`.
+fn time_label(scene: &Scene, result: &CaseResult, t: f64) -> String {
+    match scene.cases.iter().find(|c| c.name == result.case) {
+        Some(case) if case.times_in_transits => {
+            format!("t = {:.4} T", t / case.transit_time)
+        }
+        _ => format!("t = {t:.4}"),
+    }
+}
+
+/// `(L, |sigma0|)` of a case: its bar's length and its reference's stress scale (1 without a
+/// reference), so profiles are drawn as `x / L` against `stress / |sigma0|` (methods.md §1).
+fn scales(scene: &Scene, r: &CaseResult) -> (f64, f64) {
+    scene
+        .cases
+        .iter()
+        .find(|c| c.name == r.case)
+        .map_or((1.0, 1.0), |c| {
+            (
+                c.model.bar().mesh().length(),
+                c.reference.as_ref().map_or(1.0, |r| r.stress_scale()),
+            )
+        })
+}
+
+/// A case's legend label: its name, with the Courant number it ran at when the name states
+/// another unit (`cmm-co1 (Co = 0.5747)`: 1 of CMM's critical Courant number).
+fn case_label(r: &CaseResult) -> String {
+    let named = r
+        .case
+        .rsplit_once("co")
+        .and_then(|(_, v)| v.parse::<f64>().ok());
+    match named {
+        Some(v) if (v - r.courant).abs() <= 1e-6 * v.abs() => r.case.clone(),
+        _ => format!("{} (Co = {:.4})", r.case, r.courant),
+    }
 }

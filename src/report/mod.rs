@@ -9,8 +9,8 @@
 //!                                             ^^^^^^
 //! ```
 //!
-//! - [`document`]: the document model ([`document::Block`], [`document::Page`]) and its two
-//!   renderings; [`plot`]: SVG line charts; [`figures`] and [`figure_parts`]: a scene's figures,
+//! - [`document`]: the document model ([`document::Block`], [`document::Page`]), rendered by
+//!   [`markdown`] and [`html`] with numbers as [`numbers`] shows them; [`plot`]: SVG line charts; [`figures`] and [`figure_parts`]: a scene's figures,
 //!   split so that each stays legible;
 //! - sections: [`summary`], [`scenes`], [`convergence`], [`work_precision`], [`stability`],
 //!   [`timing`] (with [`bench_table`]).
@@ -24,6 +24,9 @@ pub mod convergence;
 pub mod document;
 pub mod figure_parts;
 pub mod figures;
+pub mod html;
+pub mod markdown;
+pub mod numbers;
 pub mod plot;
 pub mod scenes;
 pub mod stability;
@@ -41,8 +44,10 @@ use document::{Block, Page};
 pub struct Report {
     /// `(relative path, contents)`.
     pub files: Vec<(String, String)>,
-    /// True when every expectation held.
+    /// True when every verdict held.
     pub passed: bool,
+    /// Every verdict of the report, counted.
+    pub tally: summary::Tally,
 }
 
 /// Render the report of `scenes` from their runs (`runs.scenes` in the same order).
@@ -55,18 +60,26 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
     for ((outcome, _), scene) in runs.scenes.iter().zip(scenes) {
         page.extend(scenes::section(scene, outcome));
     }
-    page.extend(convergence::section(&runs.convergence));
-    page.extend(work_precision::section(&runs.work));
+    if !runs.convergence.is_empty() {
+        page.extend(convergence::section(&runs.convergence));
+    }
+    if !runs.work.is_empty() {
+        page.extend(work_precision::section(&runs.work));
+    }
     let rows: Vec<_> = runs
         .scenes
         .iter()
         .zip(scenes)
         .flat_map(|((o, _), s)| stability_rows(s, o))
         .collect();
-    page.extend(stability::section(&rows)?);
+    // The built-in report (with its studies) always has the section: it also holds the contact
+    // closed forms; a report of some scenes has it when one is a stability scene.
+    if !rows.is_empty() || !runs.convergence.is_empty() {
+        page.extend(stability::section(&rows)?);
+    }
     page.push(Block::Heading(2, "How this report was made".into()));
     page.push(Block::Paragraph(format!(
-        "By `cargo run --release -- report` (courant {}): every built-in scene ({} of them) and {} \
+        "By `cargo run --release -- report` (courant {}): {} scene(s) and {} \
          convergence studies, their scenes, studies and cases run in parallel; the content is identical whatever the thread count. The \
          commit, date, CPU, thread count and rustc of this run are in `timing.md`, with the wall times: \
          they change from run to run and machine to machine, while everything on this page changes only \
@@ -76,14 +89,15 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
         runs.convergence.len()
     )));
     let Page { blocks, mut files } = page;
-    files.push(("index.md".into(), document::markdown(&blocks)));
+    files.push(("index.md".into(), markdown::markdown(&blocks)));
     files.push((
         "index.html".into(),
-        document::html("courant verification report", &blocks),
+        html::html("courant verification report", &blocks),
     ));
     files.extend(timing::timing_files(scenes, runs));
     Ok(Report {
         files,
         passed: failed.is_empty(),
+        tally: summary::tally(&runs.scenes, &runs.convergence),
     })
 }

@@ -3,7 +3,8 @@
 
 use super::document::{Block, Page};
 use super::figures::scene_figures;
-use crate::compare::files::scene_tables;
+use super::summary::expectations_anchor;
+use crate::compare::files::{report_tables, scene_tables};
 use crate::compare::outcome::SceneOutcome;
 use crate::scene::cases::Scene;
 
@@ -19,13 +20,12 @@ pub fn section(scene: &Scene, outcome: &SceneOutcome) -> Page {
         page.figure(format!("{}/{svg_name}", scene.name), svg, caption);
     }
     for (file, table) in scene_tables(outcome) {
-        page.table(table, format!("{}/{file}", scene.name));
-    }
-    if !outcome.verdicts.is_empty() {
-        page.push(Block::Paragraph("Expectations:".into()));
-        page.push(Block::List(
-            outcome.verdicts.iter().map(|v| v.describe()).collect(),
-        ));
+        let csv = format!("{}/{file}", scene.name);
+        if file == report_tables::EXPECTATIONS {
+            page.table_with_id(table, csv, expectations_anchor(&scene.name));
+        } else {
+            page.table(table, csv);
+        }
     }
     page
 }

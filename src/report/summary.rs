@@ -1,10 +1,81 @@
-//! The head of the report: what it is, how many expectations it checks and which failed, and
-//! its contents.
+//! The head of the report, its first screen: what it is, every verdict it contains counted
+//! (passed, findings, failed) and linked, one row per scene and study, and the contents.
+//!
+//! The counts are those of the verdict cells below: each scene's expectations table (its
+//! `[[expect]]` rows and, in stability scenes, the stability verdict of every case) and each
+//! convergence study's order table (rows with a band; `measured` rows are not verdicts).
 
-use super::document::{Block, Page};
+use super::document::{Block, Inline, Page, anchor};
 use crate::compare::convergence::ConvergenceResult;
 use crate::compare::outcome::SceneOutcome;
 use crate::scene::cases::Scene;
+
+/// Verdicts counted.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Tally {
+    /// Passed (findings not included).
+    pub passed: usize,
+    /// Disagreements with stability theory the scenes state, with their sources.
+    pub findings: usize,
+    /// Failed.
+    pub failed: usize,
+}
+
+impl Tally {
+    /// Every verdict.
+    pub fn total(self) -> usize {
+        self.passed + self.findings + self.failed
+    }
+
+    fn add(&mut self, other: Tally) {
+        self.passed += other.passed;
+        self.findings += other.findings;
+        self.failed += other.failed;
+    }
+
+    /// The verdicts of a scene.
+    pub fn of_scene(outcome: &SceneOutcome) -> Self {
+        let mut t = Tally::default();
+        for v in &outcome.verdicts {
+            match (v.pass, v.finding) {
+                (true, true) => t.findings += 1,
+                (true, false) => t.passed += 1,
+                (false, _) => t.failed += 1,
+            }
+        }
+        t
+    }
+
+    /// The order verdicts of a convergence study (norms with a band).
+    pub fn of_study(study: &ConvergenceResult) -> Self {
+        let mut t = Tally::default();
+        for v in study.verdicts() {
+            match v.pass {
+                Some(true) => t.passed += 1,
+                Some(false) => t.failed += 1,
+                None => {}
+            }
+        }
+        t
+    }
+}
+
+/// Every verdict of the scenes and studies, counted.
+pub fn tally(outcomes: &[(SceneOutcome, f64)], convergence: &[ConvergenceResult]) -> Tally {
+    let mut total = Tally::default();
+    outcomes
+        .iter()
+        .for_each(|(o, _)| total.add(Tally::of_scene(o)));
+    convergence
+        .iter()
+        .for_each(|c| total.add(Tally::of_study(c)));
+    total
+}
+
+/// The anchor of a scene's expectations table.
+pub fn expectations_anchor(scene: &str) -> String {
+    format!("{scene}-expectations")
+}
 
 /// Every failed verdict of the report, one line each: scene expectations, then convergence-order
 /// bands.
@@ -39,7 +110,24 @@ pub fn failures(
         .collect()
 }
 
-/// The title, the count of expectations with the failures listed, and the contents.
+/// One summary row: a linked name, its counts (coloured where not zero) and where to look.
+fn row(name: Inline, tally: Tally, look: Inline) -> Vec<Inline> {
+    let count = |n: usize, verdict: &'static str| {
+        let cell = Inline::text(n.to_string());
+        if n > 0 { cell.verdict(verdict) } else { cell }
+    };
+    vec![
+        name,
+        Inline::text(tally.total().to_string()),
+        count(tally.passed, "pass"),
+        count(tally.findings, "finding"),
+        count(tally.failed, "fail"),
+        look,
+    ]
+}
+
+/// The title, the headline (every verdict counted, failures and findings listed), the summary
+/// table and the contents.
 pub fn head(
     scenes: &[Scene],
     outcomes: &[(SceneOutcome, f64)],
@@ -54,29 +142,99 @@ pub fn head(
          with `cargo run --release -- report`; timings are in `timing.md`, every table also as CSV beside it."
             .into(),
     ));
-    let count: usize = outcomes
+    let mut total = Tally::default();
+    let mut rows = Vec::new();
+    for ((outcome, _), scene) in outcomes.iter().zip(scenes) {
+        let tally = Tally::of_scene(outcome);
+        total.add(tally);
+        rows.push(row(
+            Inline::link(&scene.name, format!("#{}", anchor(&scene.name))),
+            tally,
+            Inline::link(
+                "expectations",
+                format!("#{}", expectations_anchor(&scene.name)),
+            ),
+        ));
+    }
+    for c in convergence {
+        let tally = Tally::of_study(c);
+        total.add(tally);
+        rows.push(row(
+            Inline::text(format!("convergence: {}", c.study.name)),
+            tally,
+            Inline::link("orders", format!("#{}", anchor(c.study.title))),
+        ));
+    }
+    let stability = if scenes.iter().any(|s| s.stability) || !convergence.is_empty() {
+        Inline::link("stability table", "#stability-at-the-extremes")
+    } else {
+        Inline::text("-")
+    };
+    rows.push(row(Inline::text("all"), total, stability));
+    let findings: Vec<String> = outcomes
         .iter()
-        .map(|(o, _)| o.verdicts.len())
-        .sum::<usize>()
-        + convergence
-            .iter()
-            .map(|c| c.verdicts().iter().filter(|v| v.pass.is_some()).count())
-            .sum::<usize>();
+        .zip(scenes)
+        .flat_map(|((o, _), s)| {
+            o.verdicts
+                .iter()
+                .filter(|v| v.finding)
+                .map(move |v| format!("{}/{} ({})", s.name, v.case, v.measured))
+        })
+        .collect();
     page.push(Block::Paragraph(format!(
-        "{count} expectations (scene expectations and convergence-order bands), {} failed.",
-        failed.len()
+        "{} verdicts: {} pass, {} findings (runs that disagree with stability theory as their scene \
+         states, with its source), {} FAIL. Verdicts are the scenes' expectations, the stability verdict \
+         of every case of a stability scene, and the convergence-order bands.",
+        total.total(),
+        total.passed,
+        total.findings,
+        total.failed
     )));
     if !failed.is_empty() {
+        page.push(Block::Paragraph("Failed:".into()));
         page.push(Block::List(failed.to_vec()));
     }
+    if !findings.is_empty() {
+        page.push(Block::Paragraph(format!(
+            "Findings: {}.",
+            findings.join("; ")
+        )));
+    }
+    page.push(Block::Summary {
+        columns: [
+            "scene or study",
+            "verdicts",
+            "pass",
+            "finding",
+            "FAIL",
+            "rows",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows,
+    });
     page.push(Block::Heading(2, "Contents".into()));
-    let mut contents: Vec<String> = scenes
+    let mut contents: Vec<Inline> = scenes
         .iter()
-        .map(|s| format!("{} — {}", s.name, s.description))
+        .map(|s| {
+            Inline::link(
+                format!("{} — {}", s.name, s.description),
+                format!("#{}", anchor(&s.name)),
+            )
+        })
         .collect();
-    contents.push("Convergence studies".into());
-    contents.push("Work and precision".into());
-    contents.push("Stability at the extremes".into());
-    page.push(Block::List(contents));
+    let mut sections = Vec::new();
+    if !convergence.is_empty() {
+        sections.push("Convergence studies");
+        sections.push("Work and precision");
+    }
+    if scenes.iter().any(|s| s.stability) || !convergence.is_empty() {
+        sections.push("Stability at the extremes");
+    }
+    sections.push("How this report was made");
+    for section in sections {
+        contents.push(Inline::link(section, format!("#{}", anchor(section))));
+    }
+    page.push(Block::Links(contents));
     page
 }

@@ -2,7 +2,7 @@
 
 use super::contact::{ContactCase, StabilitySweep};
 use super::dispersion::DispersionCase;
-use super::expectation::Expectation;
+use super::expectation::{Expectation, Finding};
 use super::reference::Reference;
 use super::spectrum::SpectrumCase;
 use courant_solver::{CriticalStep, Integration, Model, OutputRequest, SchemeLimit, TimePlan};
@@ -28,6 +28,10 @@ pub struct Scene {
     pub contact_sweeps: Vec<StabilitySweep>,
     /// Expectations every run is checked against.
     pub expectations: Vec<Expectation>,
+    /// A stability scene: every case gets a stability verdict (predicted against observed).
+    pub stability: bool,
+    /// Disagreements with stability theory the scene states, with their sources.
+    pub findings: Vec<Finding>,
 }
 
 /// One runnable case of a scene.
@@ -52,4 +56,7 @@ pub struct Case {
     pub reference: Option<Reference>,
     /// Transit time of the bar, `T = sum_e h_e/c_e`.
     pub transit_time: f64,
+    /// The scene states its times in transit times (`[output] time_unit = "transit"`): reports
+    /// show them as `t/T`.
+    pub times_in_transits: bool,
 }

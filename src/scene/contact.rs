@@ -8,7 +8,8 @@ use super::schema::{
 };
 use courant_references::contact::{ImpactBar, ImpactForce};
 use courant_solver::contact::{
-    ContactCriticalStep, ContactIntegrator, ContactProblem, ContactScheme, MassPenalty,
+    ContactCriticalStep, ContactIntegrator, ContactProblem, ContactSample, ContactScheme,
+    MassPenalty,
 };
 use courant_solver::{Bar, End, Mesh, StabilityPolicy};
 use toml::Spanned;
@@ -33,6 +34,59 @@ pub struct ContactCase {
     pub penalty: Option<(f64, f64)>,
     /// The analytic contact force of 1D wave theory (methods.md §7).
     pub reference: ImpactForce,
+    /// The force graded and plotted.
+    pub force: ForceMeasure,
+    /// Transit time of the striker, `L1/c1`: the time unit of the contact figures.
+    pub striker_transit: f64,
+}
+
+/// The force a contact case is graded and plotted by.
+///
+/// For the penalty schemes the seed's contact force is `f_cont = -K_p u + f_p = eps_s x
+/// penetration` (seed eq. 15 and the last step of its predictor-corrector flowchart, §3.2): the
+/// force whose amplitude the seed says grows with `beta_s` under central difference and which
+/// its Fig. 5 shows independent of `beta_s` for the stabilized scheme at C = 0.5. Measured here
+/// (`contact_courant_sweep`): for the predictor-corrector scheme with r = 1 that holds at its own
+/// limit (C = 0.5, where it is the Lagrange multiplier method), while at a tenth of it `f_cont`
+/// settles near `beta_s` times the force the bars receive (about 1238 for a plateau of 0.5 at
+/// beta_s = 2500): the penetration it needs grows as the correction per step shrinks. The
+/// momentum delivered to the real masses per step over dt is the force the bars receive under
+/// every scheme and step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ForceMeasure {
+    /// The seed's `f_cont = eps_s x penetration` at level n (penalty, bipenalty,
+    /// predictor-corrector).
+    PenaltyForce,
+    /// The momentum delivered to the real masses at level n over the span of its velocity update
+    /// (the Lagrange multiplier method).
+    TransferredMomentum,
+}
+
+impl ForceMeasure {
+    /// The measure a case of `scheme` uses when the scene asks for `asked`: the Lagrange
+    /// multiplier method has no penalty and always uses the transferred momentum.
+    pub fn for_scheme(asked: ForceMeasure, scheme: &ContactScheme) -> Self {
+        match scheme {
+            ContactScheme::LagrangeMultiplier => ForceMeasure::TransferredMomentum,
+            _ => asked,
+        }
+    }
+
+    /// The graded force of a sample.
+    pub fn force(self, s: &ContactSample) -> f64 {
+        match self {
+            ForceMeasure::PenaltyForce => s.penalty_force,
+            ForceMeasure::TransferredMomentum => s.force,
+        }
+    }
+
+    /// Short label for tables: `eps_s x penetration` or `momentum/dt`.
+    pub fn label(self) -> &'static str {
+        match self {
+            ForceMeasure::PenaltyForce => "eps_s x penetration",
+            ForceMeasure::TransferredMomentum => "momentum/dt",
+        }
+    }
 }
 
 /// A stability sweep (seed Fig. 3).
@@ -163,7 +217,22 @@ pub(super) fn cases(
             ));
         }
     };
-    let mass_penalty = match (&study.ratio, &study.beta_m) {
+    let force = match study
+        .force
+        .as_ref()
+        .map(|f| (f.get_ref().as_str(), f.span()))
+    {
+        None | Some(("penalty", _)) => ForceMeasure::PenaltyForce,
+        Some(("transferred", _)) => ForceMeasure::TransferredMomentum,
+        Some((other, span)) => {
+            return Err(src.error(
+                Some(span),
+                "contact.force",
+                format!("\"{other}\" is not one of penalty, transferred"),
+            ));
+        }
+    };
+    let mass_penalties: Vec<(String, MassPenalty)> = match (&study.ratio, &study.beta_m) {
         (Some(_), Some(b)) => {
             return Err(src.error(
                 Some(b.span()),
@@ -171,9 +240,37 @@ pub(super) fn cases(
                 "give either `ratio` or `beta_m`, not both",
             ));
         }
-        (Some(r), None) => MassPenalty::Ratio(positive(src, r, "contact.ratio")?),
-        (None, Some(b)) => MassPenalty::Dimensionless(*b.get_ref()),
-        (None, None) => MassPenalty::Ratio(1.0),
+        (Some(r), None) => {
+            let values = r.get_ref().values();
+            if values.is_empty() {
+                return Err(src.error(
+                    Some(r.span()),
+                    "contact.ratio",
+                    "the list is empty; give at least one ratio",
+                ));
+            }
+            if let Some(bad) = values.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
+                return Err(src.error(
+                    Some(r.span()),
+                    "contact.ratio",
+                    format!("{bad} must be positive and finite"),
+                ));
+            }
+            let named = values.len() > 1;
+            values
+                .into_iter()
+                .map(|v| {
+                    let suffix = if named {
+                        format!("-r{v}")
+                    } else {
+                        String::new()
+                    };
+                    (suffix, MassPenalty::Ratio(v))
+                })
+                .collect()
+        }
+        (None, Some(b)) => vec![(String::new(), MassPenalty::Dimensionless(*b.get_ref()))],
+        (None, None) => vec![(String::new(), MassPenalty::Ratio(1.0))],
     };
     let betas = study
         .beta_s
@@ -210,17 +307,22 @@ pub(super) fn cases(
                         format!("scheme {label} needs `beta_s`"),
                     ));
                 }
-                let mass = if label == "cd-penalty" {
-                    MassPenalty::None
+                let masses = if label == "cd-penalty" {
+                    vec![(String::new(), MassPenalty::None)]
                 } else {
-                    mass_penalty
+                    mass_penalties.clone()
                 };
-                betas
+                masses
                     .iter()
-                    .map(|&b| {
+                    .flat_map(|(suffix, mass)| betas.iter().map(move |&b| (suffix, *mass, b)))
+                    .map(|(suffix, mass, b)| {
                         let (scheme, dimensionless) = penalty_scheme(b, mass)
                             .map_err(|m| src.error(beta_span.clone(), "contact.beta_s", m))?;
-                        Ok((format!("{label}-bs{b}"), scheme, Some(dimensionless)))
+                        Ok((
+                            format!("{label}{suffix}-bs{b}"),
+                            scheme,
+                            Some(dimensionless),
+                        ))
                     })
                     .collect::<Result<_, SceneError>>()?
             }
@@ -279,6 +381,8 @@ pub(super) fn cases(
                     history_every,
                     penalty,
                     reference: reference.clone(),
+                    force: ForceMeasure::for_scheme(force, &scheme),
+                    striker_transit: striker_impact.transit_time(),
                 });
             }
         }

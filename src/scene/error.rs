@@ -6,7 +6,7 @@ use toml::Spanned;
 
 /// A scene file that cannot be used, with the position of the offending key.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
-#[error("{file}:{line}:{column}: {}{message}", key_prefix(.key))]
+#[error("{file}{}: {}{message}{}", position(*.line, *.column), key_prefix(.key), more(.also))]
 pub struct SceneError {
     /// Path (or built-in name) of the scene file.
     pub file: String,
@@ -18,6 +18,52 @@ pub struct SceneError {
     pub key: String,
     /// What is wrong, naming the value and the rule.
     pub message: String,
+    /// Further errors of the same file found in the same pass (shown on lines of their own).
+    pub also: Vec<SceneError>,
+}
+
+/// The further errors, one `error: ...` line each.
+fn more(also: &[SceneError]) -> String {
+    also.iter().map(|e| format!("\nerror: {e}")).collect()
+}
+
+/// Every value, or every error (the first with the others attached): independent tables of a
+/// file (each `[[expect]]`, each `[[finding]]`) are all checked, not only up to the first bad one.
+pub fn collect_all<T>(
+    results: impl IntoIterator<Item = Result<T, SceneError>>,
+) -> Result<Vec<T>, SceneError> {
+    let (mut values, mut errors) = (Vec::new(), Vec::new());
+    for r in results {
+        match r {
+            Ok(v) => values.push(v),
+            Err(e) => errors.push(e),
+        }
+    }
+    match SceneError::all(errors) {
+        None => Ok(values),
+        Some(e) => Err(e),
+    }
+}
+
+impl SceneError {
+    /// The first error with the others attached, or `None` for no error.
+    pub fn all(mut errors: Vec<SceneError>) -> Option<SceneError> {
+        if errors.is_empty() {
+            return None;
+        }
+        let mut first = errors.remove(0);
+        first.also.extend(errors);
+        Some(first)
+    }
+}
+
+/// `:line:column`, or nothing for an error that has no place in a file (line 0).
+fn position(line: usize, column: usize) -> String {
+    if line == 0 {
+        String::new()
+    } else {
+        format!(":{line}:{column}")
+    }
 }
 
 fn key_prefix(key: &str) -> String {
@@ -52,6 +98,7 @@ impl Source<'_> {
             column,
             key: key.to_string(),
             message: message.into(),
+            also: Vec::new(),
         }
     }
 

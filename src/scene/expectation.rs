@@ -1,8 +1,11 @@
 //! Expectations: the metric a scene bounds, the bound and its source of truth, as read from
 //! `[[expect]]` tables (checked against the scene's cases and profile times when it is parsed).
 
+use super::contact::ForceMeasure;
 use super::error::{SceneError, Source};
-use super::schema::RawExpect;
+use super::mass::{mass_name, parse_mass};
+use super::schema::{RawExpect, RawFinding};
+use courant_solver::MassKind;
 use toml::Spanned;
 
 /// A metric an expectation bounds.
@@ -45,7 +48,97 @@ pub enum Metric {
     /// Contact stability: largest relative deviation of the solver's critical Courant number
     /// from the closed form.
     CourantDeviation,
+    /// Contact: largest graded contact force over the run (the seed's `eps_s x penetration` for
+    /// the penalty schemes).
+    MaxForce,
+    /// Contact, against the case `relative_to`: `max_k |F(t_k) - F_ref(t_k)| / F1` over the
+    /// common samples, F1 the exact first plateau: how far two force histories differ.
+    ForceHistoryDifference,
+    /// Time stepping and contact: the critical Courant number of the case's scheme on its mesh
+    /// (CD: `2/omega_max`; Park: `alpha_e <= 1`; contact: the applicable exact limit), in units of
+    /// the stiffest element's transit.
+    CriticalCourant,
+    /// Time stepping: Fried's element bound over the exact critical step,
+    /// `dt_crit_element / dt_crit` (at most 1 where the bound is conservative).
+    ElementBoundRatio,
+    /// Spectrum: `max_n |omega_n(mass) / omega_n(against) - 1|` over the elastic modes, between
+    /// two of the case's mass kinds.
+    MassDeviation,
+    /// The automatic stability verdict of every case of a stability scene: what the run did
+    /// against what theory predicts for its step (not an `[[expect]]` metric; a disagreement is
+    /// declared with `[[finding]]`).
+    Stability,
+    /// A convergence study's order fitted on its finest meshes, against the band theory allows
+    /// (automatic, not an `[[expect]]` metric).
+    FittedOrder,
+    /// A convergence study's largest error over its meshes, where theory says exact (automatic).
+    MaxError,
 }
+
+/// Every metric, its scene-file name and the study it belongs to.
+const METRICS: &[(Metric, &str, Study)] = &[
+    (Metric::L1, "l1", Study::TimeStepping),
+    (Metric::L2, "l2", Study::TimeStepping),
+    (Metric::Linf, "linf", Study::TimeStepping),
+    (Metric::Overshoot, "overshoot", Study::TimeStepping),
+    (Metric::TvRatio, "tv_ratio", Study::TimeStepping),
+    (Metric::EnergyLost, "energy_lost", Study::TimeStepping),
+    (Metric::EnergyBalance, "energy_balance", Study::TimeStepping),
+    (Metric::Diverged, "diverged", Study::TimeStepping),
+    (
+        Metric::ElementBoundRatio,
+        "element_bound_ratio",
+        Study::TimeStepping,
+    ),
+    (
+        Metric::CriticalCourant,
+        "critical_courant",
+        Study::TimeStepping,
+    ),
+    (
+        Metric::ClosedFormDeviation,
+        "closed_form_deviation",
+        Study::Spectrum,
+    ),
+    (Metric::MassDeviation, "mass_deviation", Study::Spectrum),
+    (
+        Metric::DispersionDeviation,
+        "dispersion_deviation",
+        Study::Dispersion,
+    ),
+    (
+        Metric::PhaseErrorOrder,
+        "phase_error_order",
+        Study::Dispersion,
+    ),
+    (
+        Metric::PlateauDeviation,
+        "plateau_deviation",
+        Study::Contact,
+    ),
+    (Metric::ImpulseError, "impulse_error", Study::Contact),
+    (Metric::DurationError, "duration_error", Study::Contact),
+    (Metric::ForceL1Error, "force_l1_error", Study::Contact),
+    (Metric::EnergyRatio, "energy_ratio", Study::Contact),
+    (Metric::MaxForce, "max_force", Study::Contact),
+    (
+        Metric::ForceHistoryDifference,
+        "force_history_difference",
+        Study::Contact,
+    ),
+    (
+        Metric::CourantDeviation,
+        "courant_deviation",
+        Study::ContactStability,
+    ),
+    (Metric::Stability, "stability", Study::TimeStepping),
+    (Metric::FittedOrder, "fitted_order", Study::TimeStepping),
+    (Metric::MaxError, "max_error", Study::TimeStepping),
+];
+
+/// Metrics whose verdicts courant makes by itself (stability scenes, convergence studies): not
+/// for `[[expect]]`.
+const AUTOMATIC: [Metric; 3] = [Metric::Stability, Metric::FittedOrder, Metric::MaxError];
 
 /// The kind of study a scene is; each metric belongs to one.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -78,64 +171,22 @@ impl Study {
 impl Metric {
     /// Scene-file name.
     pub fn name(self) -> &'static str {
-        match self {
-            Metric::L1 => "l1",
-            Metric::L2 => "l2",
-            Metric::Linf => "linf",
-            Metric::Overshoot => "overshoot",
-            Metric::TvRatio => "tv_ratio",
-            Metric::EnergyLost => "energy_lost",
-            Metric::EnergyBalance => "energy_balance",
-            Metric::Diverged => "diverged",
-            Metric::ClosedFormDeviation => "closed_form_deviation",
-            Metric::DispersionDeviation => "dispersion_deviation",
-            Metric::PhaseErrorOrder => "phase_error_order",
-            Metric::PlateauDeviation => "plateau_deviation",
-            Metric::ImpulseError => "impulse_error",
-            Metric::DurationError => "duration_error",
-            Metric::ForceL1Error => "force_l1_error",
-            Metric::EnergyRatio => "energy_ratio",
-            Metric::CourantDeviation => "courant_deviation",
-        }
+        METRICS.iter().find(|m| m.0 == self).map_or("?", |m| m.1)
     }
 
     fn parse(s: &str) -> Option<Self> {
-        [
-            Metric::L1,
-            Metric::L2,
-            Metric::Linf,
-            Metric::Overshoot,
-            Metric::EnergyBalance,
-            Metric::Diverged,
-            Metric::TvRatio,
-            Metric::EnergyLost,
-            Metric::ClosedFormDeviation,
-            Metric::DispersionDeviation,
-            Metric::PhaseErrorOrder,
-            Metric::PlateauDeviation,
-            Metric::ImpulseError,
-            Metric::DurationError,
-            Metric::ForceL1Error,
-            Metric::EnergyRatio,
-            Metric::CourantDeviation,
-        ]
-        .into_iter()
-        .find(|m| m.name() == s)
+        METRICS.iter().find(|m| m.1 == s).map(|m| m.0)
     }
 
-    /// The study the metric belongs to.
-    pub fn study(self) -> Study {
-        match self {
-            Metric::ClosedFormDeviation => Study::Spectrum,
-            Metric::DispersionDeviation | Metric::PhaseErrorOrder => Study::Dispersion,
-            Metric::PlateauDeviation
-            | Metric::ImpulseError
-            | Metric::DurationError
-            | Metric::ForceL1Error
-            | Metric::EnergyRatio => Study::Contact,
-            Metric::CourantDeviation => Study::ContactStability,
-            _ => Study::TimeStepping,
-        }
+    /// True when the metric applies to a scene of `study` (`diverged` and `critical_courant`
+    /// apply to time-stepping and contact scenes).
+    pub fn applies_to(self, study: Study) -> bool {
+        let home = METRICS.iter().find(|m| m.0 == self).map(|m| m.2);
+        home == Some(study)
+            || (matches!(
+                self,
+                Metric::Diverged | Metric::CriticalCourant | Metric::Stability
+            ) && study == Study::Contact)
     }
 
     /// True for metrics measured on profiles (they need a reference).
@@ -159,6 +210,43 @@ pub enum Bound {
     },
     /// A boolean metric equals this.
     Equals(bool),
+    /// The stability verdict of a stability scene's case: the run does what theory predicts
+    /// (`stable`, `marginal`, `unstable`, `contact-unstable`).
+    Theory(&'static str),
+}
+
+impl std::fmt::Display for Bound {
+    /// `<= max`, `>= min`, `in [min, max]`, `== flag`, `as predicted: stable`; numbers in their
+    /// shortest round-trip form (scientific below 1e-4 and from 1e6).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let num = |x: f64| {
+            if x != 0.0 && !(1e-4..1e6).contains(&x.abs()) {
+                format!("{x:e}")
+            } else {
+                format!("{x}")
+            }
+        };
+        match *self {
+            Bound::Range {
+                min: Some(lo),
+                max: Some(hi),
+            } => write!(f, "in [{}, {}]", num(lo), num(hi)),
+            Bound::Range {
+                min: Some(lo),
+                max: None,
+            } => write!(f, ">= {}", num(lo)),
+            Bound::Range {
+                min: None,
+                max: Some(hi),
+            } => write!(f, "<= {}", num(hi)),
+            Bound::Range {
+                min: None,
+                max: None,
+            } => write!(f, "unbounded"),
+            Bound::Equals(b) => write!(f, "== {b}"),
+            Bound::Theory(predicted) => write!(f, "as predicted: {predicted}"),
+        }
+    }
 }
 
 /// A requirement a case must meet, with its source of truth.
@@ -172,36 +260,166 @@ pub struct Expectation {
     pub at: Option<f64>,
     /// The bound.
     pub bound: Bound,
+    /// A case the measured value is relative to: the ratio `value(case) / value(relative_to)`,
+    /// or for `force_history_difference` the distance between the two histories.
+    pub relative_to: Option<String>,
+    /// `mass_deviation`: the mass kind compared and the one it is compared against.
+    pub masses: Option<(MassKind, MassKind)>,
+    /// Contact force metrics: the force measured, when not the scene's.
+    pub force: Option<ForceMeasure>,
     /// Where the bound comes from.
     pub source: String,
+}
+
+/// What a stability run does, as a finding states it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Observed {
+    /// Completed with bounded energy.
+    Stable,
+    /// Completed, its energy beyond the stability band.
+    EnergyGrowth,
+    /// Completed, but the scheme created energy beyond round-off (its balance `T + U - W` grew).
+    EnergyCreated,
+    /// The divergence guard stopped it.
+    Diverged,
+}
+
+impl Observed {
+    /// Scene-file name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Observed::Stable => "stable",
+            Observed::EnergyGrowth => "energy growth",
+            Observed::EnergyCreated => "energy created",
+            Observed::Diverged => "diverged",
+        }
+    }
+
+    fn parse(s: &str) -> Option<Self> {
+        [
+            Observed::Stable,
+            Observed::EnergyGrowth,
+            Observed::EnergyCreated,
+            Observed::Diverged,
+        ]
+        .into_iter()
+        .find(|o| o.name() == s)
+    }
+}
+
+/// A disagreement between stability theory and a run that the scene states, with its source.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Finding {
+    /// Cases it applies to.
+    pub cases: Vec<String>,
+    /// What those runs do against the prediction.
+    pub observed: Observed,
+    /// Where the finding is established.
+    pub source: String,
+}
+
+/// Read a `[[finding]]` table of a scene (`stability`: whether the scene is a stability scene).
+pub(super) fn finding(
+    src: &Source,
+    spanned: &Spanned<RawFinding>,
+    names: &[String],
+    stability: bool,
+) -> Result<Finding, SceneError> {
+    let raw = spanned.get_ref();
+    let fail = |msg: String| src.error(Some(spanned.span()), "finding", msg);
+    if !stability {
+        return Err(fail(
+            "a finding states a disagreement with stability theory: only a stability scene (`[scene] stability = true`) has one".into(),
+        ));
+    }
+    if raw.cases.is_empty() {
+        return Err(fail("`cases` is empty".into()));
+    }
+    if let Some(unknown) = raw.cases.iter().find(|c| !names.contains(c)) {
+        return Err(fail(format!(
+            "case \"{unknown}\" does not exist (cases: {})",
+            names.join(", ")
+        )));
+    }
+    let observed = Observed::parse(&raw.observed).ok_or_else(|| {
+        fail(format!(
+            "observed = \"{}\" is not one of stable, energy growth, energy created, diverged",
+            raw.observed
+        ))
+    })?;
+    if raw.source.trim().is_empty() {
+        return Err(fail(
+            "`source` must say where the finding is established".into(),
+        ));
+    }
+    Ok(Finding {
+        cases: raw.cases.clone(),
+        observed,
+        source: raw.source.clone(),
+    })
+}
+
+/// What an `[[expect]]` table is checked against when the scene is parsed.
+pub(super) struct ExpectContext<'a> {
+    /// The scene's case names.
+    pub names: &'a [String],
+    /// Whether the cases have an analytic reference.
+    pub has_reference: bool,
+    /// The scene's study.
+    pub study: Study,
+    /// Profile times (absolute).
+    pub profile_times: &'a [f64],
+    /// The scene's time unit (absolute time per unit).
+    pub unit: f64,
+    /// The mass kinds of a spectrum scene.
+    pub masses: &'a [MassKind],
 }
 
 pub(super) fn expectation(
     src: &Source,
     spanned: &Spanned<RawExpect>,
-    names: &[String],
-    has_reference: bool,
-    study: Study,
-    profile_times: &[f64],
-    unit: f64,
+    ctx: &ExpectContext,
 ) -> Result<Expectation, SceneError> {
+    let ExpectContext {
+        names,
+        has_reference,
+        study,
+        profile_times,
+        unit,
+        masses,
+    } = *ctx;
     let raw = spanned.get_ref();
     let fail = |msg: String| src.error(Some(spanned.span()), "expect", msg);
     let metric = Metric::parse(&raw.metric).ok_or_else(|| {
+        let all: Vec<&str> = METRICS
+            .iter()
+            .filter(|m| !AUTOMATIC.contains(&m.0))
+            .map(|m| m.1)
+            .collect();
         fail(format!(
-            "metric = \"{}\" is not one of l1, l2, linf, overshoot, energy_balance, energy_lost, tv_ratio, diverged, closed_form_deviation, dispersion_deviation, phase_error_order, plateau_deviation, impulse_error, duration_error, force_l1_error, energy_ratio, courant_deviation",
-            raw.metric
+            "metric = \"{}\" is not one of {}",
+            raw.metric,
+            all.join(", ")
         ))
     })?;
+    if metric == Metric::Stability {
+        return Err(fail(
+            "the stability verdict is automatic in a stability scene (`[scene] stability = true`); declare a disagreement with `[[finding]]`".into(),
+        ));
+    }
+    if AUTOMATIC.contains(&metric) {
+        return Err(fail(format!(
+            "metric \"{}\" is a convergence study's own verdict, not an expectation",
+            metric.name()
+        )));
+    }
     if metric.needs_reference() && !has_reference {
         return Err(fail(format!(
             "metric \"{}\" compares with a reference, but the scene has none",
             metric.name()
         )));
     }
-    let applies =
-        metric.study() == study || (metric == Metric::Diverged && study == Study::Contact);
-    if !applies {
+    if !metric.applies_to(study) {
         return Err(fail(format!(
             "metric \"{}\" does not apply to a {} scene",
             metric.name(),
@@ -252,6 +470,78 @@ pub(super) fn expectation(
         }
         (_, min, max, None) => Bound::Range { min, max },
     };
+    let relative_to = match (&raw.relative_to, metric) {
+        (Some(_), Metric::Diverged | Metric::MassDeviation) => {
+            return Err(fail(format!(
+                "`relative_to` does not apply to metric \"{}\"",
+                metric.name()
+            )));
+        }
+        (None, Metric::ForceHistoryDifference) => {
+            return Err(fail(
+                "metric \"force_history_difference\" needs `relative_to`: the case whose force history it is compared with".into(),
+            ));
+        }
+        (Some(other), _) if !names.contains(other) => {
+            return Err(fail(format!(
+                "relative_to = \"{other}\" is not a case (cases: {})",
+                names.join(", ")
+            )));
+        }
+        (other, _) => other.clone(),
+    };
+    let masses = match (metric, &raw.mass, &raw.against) {
+        (Metric::MassDeviation, Some(mass), Some(against)) => {
+            let kind = |label: &str| -> Result<MassKind, SceneError> {
+                let kind = parse_mass(label).map_err(&fail)?;
+                if masses.contains(&kind) {
+                    Ok(kind)
+                } else {
+                    let listed: Vec<String> = masses.iter().map(|m| mass_name(*m)).collect();
+                    Err(fail(format!(
+                        "mass \"{label}\" is not one of the scene's masses ({})",
+                        listed.join(", ")
+                    )))
+                }
+            };
+            Some((kind(mass)?, kind(against)?))
+        }
+        (Metric::MassDeviation, _, _) => {
+            return Err(fail(
+                "metric \"mass_deviation\" needs `mass` and `against` (two of the scene's mass kinds)".into(),
+            ));
+        }
+        (_, None, None) => None,
+        (_, _, _) => {
+            return Err(fail(
+                "`mass` and `against` apply only to metric \"mass_deviation\"".into(),
+            ));
+        }
+    };
+    let force_metric = matches!(
+        metric,
+        Metric::PlateauDeviation
+            | Metric::DurationError
+            | Metric::ForceL1Error
+            | Metric::MaxForce
+            | Metric::ForceHistoryDifference
+    );
+    let force = match raw.force.as_deref() {
+        None => None,
+        Some(_) if !force_metric => {
+            return Err(fail(format!(
+                "`force` applies only to the contact force metrics, not to \"{}\"",
+                metric.name()
+            )));
+        }
+        Some("penalty") => Some(ForceMeasure::PenaltyForce),
+        Some("transferred") => Some(ForceMeasure::TransferredMomentum),
+        Some(other) => {
+            return Err(fail(format!(
+                "force = \"{other}\" is not one of penalty, transferred"
+            )));
+        }
+    };
     if raw.source.trim().is_empty() {
         return Err(fail(
             "`source` must name the source of truth of the bound".into(),
@@ -262,6 +552,9 @@ pub(super) fn expectation(
         metric,
         at,
         bound,
+        relative_to,
+        masses,
+        force,
         source: raw.source.clone(),
     })
 }

@@ -1,30 +1,77 @@
 //! Reading a scene: TOML to a validated [`Scene`], dispatched by study kind.
 
 use super::cases::Scene;
-use super::error::{SceneError, Source};
-use super::expectation::{Study, expectation};
+use super::error::{SceneError, Source, collect_all};
+use super::expectation::{ExpectContext, Finding, Study, expectation, finding};
 use super::geometry::Geometry;
-use super::schema::{RawContactScene, RawHeader, RawScene};
+use super::schema::{RawContactScene, RawFinding, RawHeader, RawScene};
 use super::scheme_keys::{SchemeKey, split_off};
 use super::{contact, dispersion, spectrum, time_stepping};
+use courant_solver::MassKind;
 use serde::Deserialize;
+use toml::Spanned;
+
+/// Unknown keys reported in one pass, at most.
+const MAX_UNKNOWN_KEYS: usize = 20;
+
+/// `text` with line `line` (1-based) replaced by spaces: positions elsewhere stay the same.
+fn blank_line(text: &str, line: usize) -> String {
+    text.split_inclusive('\n')
+        .enumerate()
+        .map(|(i, l)| {
+            if i + 1 == line {
+                l.chars().map(|c| if c == '\n' { c } else { ' ' }).collect()
+            } else {
+                l.to_string()
+            }
+        })
+        .collect()
+}
+
+/// One reading of a scene: its first error.
+fn parse_once(name: &str, file: &str, text: &str) -> Result<Scene, SceneError> {
+    let src = Source { file, text };
+    let table: toml::Table = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
+    if table.contains_key("contact") || table.contains_key("contact_stability") {
+        let raw: RawContactScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
+        return build_contact(name, &src, raw);
+    }
+    // The schemes' parameters leave [integrator] first; the rest is read with its spans.
+    let mut document = toml::de::DeTable::parse(text).map_err(|e| src.from_toml(&e))?;
+    let scheme_keys = split_off(&src, &table, document.get_mut())?;
+    let raw = RawScene::deserialize(toml::de::Deserializer::from(document))
+        .map_err(|e| src.from_toml(&e))?;
+    build(name, &src, raw, &scheme_keys)
+}
 
 impl Scene {
     /// Parse and validate a scene. `file` is the path or name shown in errors; `name` becomes the
     /// output directory.
+    ///
+    /// Every unknown key of the file is reported in one pass (each is set aside and the file read
+    /// again), with the first other error found after them; invalid `[[expect]]` tables are all
+    /// reported too.
     pub fn parse(name: &str, file: &str, text: &str) -> Result<Scene, SceneError> {
-        let src = Source { file, text };
-        let table: toml::Table = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
-        if table.contains_key("contact") || table.contains_key("contact_stability") {
-            let raw: RawContactScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
-            return build_contact(name, &src, raw);
+        let first = match parse_once(name, file, text) {
+            Ok(scene) => return Ok(scene),
+            Err(e) => e,
+        };
+        let mut errors = vec![first];
+        let mut rest = text.to_string();
+        // Bounded: each round blanks one line of the file.
+        for _ in 0..MAX_UNKNOWN_KEYS {
+            let last = errors.last().expect("one error at least");
+            if !last.message.starts_with("unknown field") || last.line == 0 {
+                break;
+            }
+            rest = blank_line(&rest, last.line);
+            match parse_once(name, file, &rest) {
+                Ok(_) => break,
+                Err(e) if e.line == last.line && e.message == last.message => break,
+                Err(e) => errors.push(e),
+            }
         }
-        // The schemes' parameters leave [integrator] first; the rest is read with its spans.
-        let mut document = toml::de::DeTable::parse(text).map_err(|e| src.from_toml(&e))?;
-        let scheme_keys = split_off(&src, &table, document.get_mut())?;
-        let raw = RawScene::deserialize(toml::de::Deserializer::from(document))
-            .map_err(|e| src.from_toml(&e))?;
-        build(name, &src, raw, &scheme_keys)
+        Err(SceneError::all(errors).expect("one error at least"))
     }
 
     /// Read a scene from a file; its name is the file stem.
@@ -36,6 +83,7 @@ impl Scene {
             column: 0,
             key: String::new(),
             message: format!("cannot read the file: {e}"),
+            also: Vec::new(),
         })?;
         let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
         Scene::parse(name, &file, &text)
@@ -90,11 +138,16 @@ fn build(
         if let Some(dup) = names.iter().find(|n| !seen.insert(*n)) {
             return Err(src.error(None, kind, format!("case {dup} appears twice")));
         }
-        let expectations = raw
-            .expectations
-            .iter()
-            .map(|e| expectation(src, e, &names, false, study, &[], 1.0))
-            .collect::<Result<Vec<_>, _>>()?;
+        let masses: Vec<MassKind> = spectra.first().map_or(Vec::new(), |c| c.masses.clone());
+        let ctx = ExpectContext {
+            names: &names,
+            has_reference: false,
+            study,
+            profile_times: &[],
+            unit: 1.0,
+            masses: &masses,
+        };
+        let expectations = collect_all(raw.expectations.iter().map(|e| expectation(src, e, &ctx)))?;
         return Ok(Scene {
             name: name.to_string(),
             description: raw.scene.description.get_ref().clone(),
@@ -105,9 +158,13 @@ fn build(
             contact: Vec::new(),
             contact_sweeps: Vec::new(),
             expectations,
+            stability: raw.scene.stability,
+            findings: findings(src, &raw.findings, &names, raw.scene.stability)?,
         });
     }
     let (cases, expectations) = time_stepping::build(src, &raw, &geometry, scheme_keys)?;
+    let names: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
+    let findings = findings(src, &raw.findings, &names, raw.scene.stability)?;
     Ok(Scene {
         name: name.to_string(),
         description: raw.scene.description.into_inner(),
@@ -118,6 +175,8 @@ fn build(
         contact: Vec::new(),
         contact_sweeps: Vec::new(),
         expectations,
+        stability: raw.scene.stability,
+        findings,
     })
 }
 
@@ -147,11 +206,15 @@ fn build_contact(name: &str, src: &Source, raw: RawContactScene) -> Result<Scene
     } else {
         vec!["stability".into()]
     };
-    let expectations = raw
-        .expectations
-        .iter()
-        .map(|e| expectation(src, e, &names, false, study, &[], 1.0))
-        .collect::<Result<Vec<_>, _>>()?;
+    let ctx = ExpectContext {
+        names: &names,
+        has_reference: false,
+        study,
+        profile_times: &[],
+        unit: 1.0,
+        masses: &[],
+    };
+    let expectations = collect_all(raw.expectations.iter().map(|e| expectation(src, e, &ctx)))?;
     Ok(Scene {
         name: name.to_string(),
         description: raw.scene.description.get_ref().clone(),
@@ -162,5 +225,17 @@ fn build_contact(name: &str, src: &Source, raw: RawContactScene) -> Result<Scene
         contact: cases,
         contact_sweeps: sweeps,
         expectations,
+        stability: raw.scene.stability,
+        findings: findings(src, &raw.findings, &names, raw.scene.stability)?,
     })
+}
+
+/// The scene's `[[finding]]` tables.
+fn findings(
+    src: &Source,
+    raw: &[Spanned<RawFinding>],
+    names: &[String],
+    stability: bool,
+) -> Result<Vec<Finding>, SceneError> {
+    collect_all(raw.iter().map(|f| finding(src, f, names, stability)))
 }

@@ -38,6 +38,24 @@ pub struct RawScene {
     /// Default: none.
     #[serde(default, rename = "expect")]
     pub expectations: Vec<Spanned<RawExpect>>,
+    /// Default: none (stability scenes only).
+    #[serde(default, rename = "finding")]
+    pub findings: Vec<Spanned<RawFinding>>,
+}
+
+/// A disagreement between stability theory and a run that the scene states as an expected
+/// finding, with its source: the stability verdict of those cases then passes as a finding
+/// instead of failing.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawFinding {
+    /// Cases it applies to.
+    pub cases: Vec<String>,
+    /// What the runs do against the prediction: `energy growth`, `energy created`, `diverged`
+    /// or `stable`.
+    pub observed: String,
+    /// Where the finding is established (a paper, or "measured here" with what was measured).
+    pub source: String,
 }
 
 #[derive(Debug, Deserialize)]
@@ -47,6 +65,11 @@ pub struct RawHeader {
     pub description: Spanned<String>,
     /// Its source of truth (paper and figure, closed form, textbook result).
     pub source: Spanned<String>,
+    /// A stability scene (default false): every case gets a stability verdict, the step against
+    /// its scheme's limit, predicted against observed, and appears in the report's
+    /// stability-at-the-extremes table.
+    #[serde(default)]
+    pub stability: bool,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -362,7 +385,7 @@ pub struct RawReference {
 pub struct RawExpect {
     /// Cases it applies to. Default: all.
     pub cases: Option<Vec<String>>,
-    /// `l1`, `l2`, `linf`, `overshoot`, `energy_balance`, `diverged`.
+    /// A metric name (`scene::expectation::Metric`): `l1`, `l2`, `linf`, `overshoot`, ...
     pub metric: String,
     /// Profile time it applies to (in `output.time_unit`). Default: the worst over all times.
     pub at: Option<f64>,
@@ -372,6 +395,15 @@ pub struct RawExpect {
     pub min: Option<f64>,
     /// For boolean metrics (`diverged`).
     pub equals: Option<bool>,
+    /// A case the value is relative to (`value / value(relative_to)`; for
+    /// `force_history_difference` the case whose history is the comparison).
+    pub relative_to: Option<String>,
+    /// `mass_deviation`: the mass kind compared.
+    pub mass: Option<String>,
+    /// `mass_deviation`: the mass kind it is compared against.
+    pub against: Option<String>,
+    /// Contact force metrics: `penalty` or `transferred`, instead of the scene's `force`.
+    pub force: Option<String>,
     /// The source of truth the bound comes from.
     pub source: String,
 }
@@ -430,8 +462,9 @@ pub struct RawContact {
     pub schemes: Spanned<OneOrManyStrings>,
     /// Dimensionless penalty stiffness(es) `beta_s = k_s h/(E A)`.
     pub beta_s: Option<Spanned<OneOrMany>>,
-    /// Penalty ratio `r = beta_s/(4 beta_m)` (default 1, the neutral ratio).
-    pub ratio: Option<Spanned<f64>>,
+    /// Penalty ratio(s) `r = beta_s/(4 beta_m)` (default 1, the neutral ratio); several give one
+    /// case each, named `-r<r>`.
+    pub ratio: Option<Spanned<OneOrMany>>,
     /// Dimensionless penalty mass `beta_m = m_p/(rho A h)`, instead of `ratio`.
     pub beta_m: Option<Spanned<f64>>,
     /// Courant number(s), one case each (named `-co<Co>` when there are several): relative to
@@ -449,6 +482,11 @@ pub struct RawContact {
     pub allow_unstable: bool,
     /// Keep a sample every this many steps (default 1).
     pub history_every: Option<Spanned<i64>>,
+    /// The force the penalty schemes are graded and plotted by: `penalty` (default: the seed's
+    /// `f_cont = eps_s x penetration`, seed eq. 15) or `transferred` (the momentum delivered to
+    /// the bars per step over dt). The Lagrange multiplier method has no penalty and always
+    /// uses `transferred`.
+    pub force: Option<Spanned<String>>,
 }
 
 /// The unit of a contact scene's Courant numbers.
@@ -495,4 +533,6 @@ pub struct RawContactScene {
     pub contact_stability: Option<RawContactStability>,
     #[serde(default, rename = "expect")]
     pub expectations: Vec<Spanned<RawExpect>>,
+    #[serde(default, rename = "finding")]
+    pub findings: Vec<Spanned<RawFinding>>,
 }

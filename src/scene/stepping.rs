@@ -187,8 +187,9 @@ fn schemes(
             Some(unclaimed.span.clone()),
             &format!("integrator.{}", unclaimed.key),
             format!(
-                "unknown key: neither a key of [integrator] nor a parameter of its schemes ({}); \
-                 `courant list --schemes` lists every scheme's parameters",
+                "unknown field `{}`: neither a key of [integrator] nor a parameter of its schemes \
+                 ({}); `courant list --schemes` lists every scheme's parameters",
+                unclaimed.key,
                 declared.join("; ")
             ),
         ));

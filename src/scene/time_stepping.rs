@@ -3,13 +3,13 @@
 
 use super::bar::model_of;
 use super::cases::Case;
-use super::error::{SceneError, Source};
-use super::expectation::{Expectation, Study, expectation};
+use super::error::{SceneError, Source, collect_all};
+use super::expectation::{ExpectContext, Expectation, Study, expectation};
 use super::geometry::Geometry;
 use super::mass::mass_name;
 use super::outputs::Outputs;
 use super::reference::Reference;
-use super::schema::{RawCourantUnit, RawScene};
+use super::schema::{RawCourantUnit, RawScene, RawTimeUnit};
 use super::scheme_keys::SchemeKey;
 use super::stepping::{Stepping, keep_step_plan};
 use courant_solver::{CriticalStep, Integration, OutputRequest};
@@ -119,11 +119,30 @@ pub(super) fn build(
                     scheme: scheme.clone(),
                 };
                 let critical = integrator.check_stability(&model).map_err(|e| match &e {
-                    courant_solver::RunError::Unstable(u) => fail(format!(
-                        "{e} ({} {scheme_name} critical Courant number {:.6}, element {stiffest})",
-                        mass.label(),
-                        u.dt_crit / element_dt
-                    )),
+                    courant_solver::RunError::Unstable(u) => {
+                        let asked = if stepping.by_courant {
+                            format!("courant = {value}")
+                        } else {
+                            format!("dt = {value:e}")
+                        };
+                        let became = if plan.dt == nominal_dt {
+                            String::new()
+                        } else {
+                            format!(
+                                "; shrunk to hit the output times, the step is dt = {:.6e}",
+                                plan.dt
+                            )
+                        };
+                        fail(format!(
+                            "asked {asked}{became}: Courant number {:.6} (stiffest element {stiffest}, h/c = {element_dt:.6e}) \
+                             is above the critical {:.6} of {} with {scheme_name} (dt_crit = {:.6e}, {}); lower it or set allow_unstable = true",
+                            u.courant,
+                            u.dt_crit / element_dt,
+                            mass.label(),
+                            u.dt_crit,
+                            u.limit
+                        ))
+                    }
                     _ => fail(e.to_string()),
                 })?;
                 let node_steps = plan.steps as f64 * model.bar().element_count() as f64;
@@ -153,6 +172,7 @@ pub(super) fn build(
                     limit,
                     reference: reference.clone(),
                     transit_time: transit,
+                    times_in_transits: raw.output.time_unit == RawTimeUnit::Transit,
                 });
             }
         }
@@ -167,20 +187,14 @@ pub(super) fn build(
     }
     let has_reference = cases.iter().any(|c| c.reference.is_some());
     let names: Vec<String> = cases.iter().map(|c| c.name.clone()).collect();
-    let expectations = raw
-        .expectations
-        .iter()
-        .map(|e| {
-            expectation(
-                src,
-                e,
-                &names,
-                has_reference,
-                Study::TimeStepping,
-                &outputs.profile_times,
-                outputs.unit,
-            )
-        })
-        .collect::<Result<Vec<_>, _>>()?;
+    let ctx = ExpectContext {
+        names: &names,
+        has_reference,
+        study: Study::TimeStepping,
+        profile_times: &outputs.profile_times,
+        unit: outputs.unit,
+        masses: &[],
+    };
+    let expectations = collect_all(raw.expectations.iter().map(|e| expectation(src, e, &ctx)))?;
     Ok((cases, expectations))
 }

@@ -26,9 +26,11 @@ impl BaselineKind {
         }
     }
 
-    /// A directory with an `index.md` is a report, anything else a run's output.
+    /// A directory with an `index.md` is a report; so is one whose scene folders hold only what
+    /// a report keeps (its tables and SVG figures: scene folders copied out of a report);
+    /// anything else is a run's output.
     pub fn detect(root: &Path) -> Self {
-        if root.join("index.md").is_file() {
+        if root.join("index.md").is_file() || holds_only_report_tables(root) {
             BaselineKind::Report
         } else {
             BaselineKind::RunOutput
@@ -42,4 +44,26 @@ impl BaselineKind {
             BaselineKind::Report => "report",
         }
     }
+}
+
+/// True when `root` has scene folders and every file in them is a report table or an SVG figure.
+fn holds_only_report_tables(root: &Path) -> bool {
+    let Ok(entries) = std::fs::read_dir(root) else {
+        return false;
+    };
+    let mut files_seen = 0;
+    for dir in entries.flatten().filter(|e| e.path().is_dir()) {
+        let Ok(files) = std::fs::read_dir(dir.path()) else {
+            return false;
+        };
+        for f in files.flatten() {
+            let name = f.file_name().to_string_lossy().to_string();
+            let kept = REPORT_TABLES.contains(&name.as_str()) || name.ends_with(".svg");
+            if !kept || f.path().is_dir() {
+                return false;
+            }
+            files_seen += 1;
+        }
+    }
+    files_seen > 0
 }

@@ -183,6 +183,12 @@ mod tests {
         let scene = root.join("s");
         std::fs::create_dir_all(&scene).unwrap();
         assert_eq!(BaselineKind::detect(&root), BaselineKind::RunOutput);
+        // Scene folders copied out of a report (its tables only) are a report too.
+        std::fs::write(scene.join("summary.csv"), "case,l1\na,1\n").unwrap();
+        assert_eq!(BaselineKind::detect(&root), BaselineKind::Report);
+        std::fs::write(scene.join("a.csv"), "t,stress\n0,1\n").unwrap();
+        assert_eq!(BaselineKind::detect(&root), BaselineKind::RunOutput);
+        std::fs::remove_file(scene.join("a.csv")).unwrap();
         std::fs::write(root.join("index.md"), "# report\n").unwrap();
         assert_eq!(BaselineKind::detect(&root), BaselineKind::Report);
         std::fs::write(scene.join("summary.csv"), "case,l1\na,1\n").unwrap();

@@ -79,9 +79,28 @@ where
         .draw()
         .map_err(|err| e(&err))?;
 
+    // Series that coincide stay visible: solid lines are drawn widest first and thinnest last
+    // (nested bands), points as hollow circles from largest to smallest (concentric rings).
+    let count = |style: SeriesStyle| ctx.series.iter().filter(|s| s.style == style).count();
+    let (lines, points) = (count(SeriesStyle::Line), count(SeriesStyle::Points));
+    let (mut line_rank, mut point_rank) = (0, 0);
     for (i, s) in ctx.series.iter().enumerate() {
         let color = PALETTE[s.colour.unwrap_or(i) % PALETTE.len()];
-        let line = ShapeStyle::from(color).stroke_width(2);
+        let width = match s.style {
+            SeriesStyle::Line => {
+                line_rank += 1;
+                nested_size(line_rank - 1, lines, 1, 4)
+            }
+            _ => 2,
+        };
+        let radius = match s.style {
+            SeriesStyle::Points => {
+                point_rank += 1;
+                nested_size(point_rank - 1, points, 2, 6)
+            }
+            _ => 3,
+        };
+        let line = ShapeStyle::from(color).stroke_width(width);
         let anno = match s.style {
             SeriesStyle::Line => chart
                 .draw_series(
@@ -102,7 +121,7 @@ where
                     s.segments
                         .iter()
                         .flatten()
-                        .map(|&p| Circle::new(p, 3, color.filled())),
+                        .map(|&p| Circle::new(p, radius, color.stroke_width(2))),
                 )
                 .map_err(|err| e(&err))?,
         };
@@ -118,7 +137,9 @@ where
                 SeriesStyle::Dashed => {
                     DashedPathElement::new(vec![(lx, ly), (lx + 20, ly)], 6, 3, line).into_dyn()
                 }
-                SeriesStyle::Points => Circle::new((lx + 10, ly), 3, color.filled()).into_dyn(),
+                SeriesStyle::Points => {
+                    Circle::new((lx + 10, ly), radius, color.stroke_width(2)).into_dyn()
+                }
             });
     }
 
@@ -132,4 +153,27 @@ where
         .map_err(|err| e(&err))?;
     root.present().map_err(|err| e(&err))?;
     Ok(())
+}
+
+/// The size of the `rank`-th of `count` series, from `largest` (first) down to `smallest`
+/// (last): the first series drawn is the widest, so a later one on top of it leaves it visible.
+fn nested_size(rank: usize, count: usize, smallest: u32, largest: u32) -> u32 {
+    if count <= 1 {
+        return (smallest + largest) / 2;
+    }
+    let span = (largest - smallest) as usize;
+    largest - ((rank * span + (count - 1) / 2) / (count - 1)) as u32
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nested_sizes_run_from_largest_to_smallest() {
+        let sizes: Vec<u32> = (0..4).map(|r| nested_size(r, 4, 1, 4)).collect();
+        assert_eq!(sizes, vec![4, 3, 2, 1]);
+        assert_eq!(nested_size(0, 1, 1, 4), 2);
+        assert_eq!(nested_size(6, 7, 2, 6), 2);
+    }
 }

@@ -4,30 +4,12 @@
 //!
 //! - [`convergence`]: h-refinement studies with the order bands theory allows;
 //! - [`work_precision`]: error against work per scheme, with Courant variants;
-//! - [`STABILITY_SCENES`]: the scenes whose cases make the stability-at-the-extremes table.
 
 pub mod convergence;
 pub mod work_precision;
 
 use super::builtin::builtin_text;
 use super::cases::Scene;
-
-/// Scenes whose cases sit at the stability extremes (Co at 0.99/1.00/1.01 of each critical value,
-/// modulus ratio 1e4 on graded and layered bars, 1e6-step runs, SI units, contact with beta_s up
-/// to 1e8): their cases make the report's stability-at-the-extremes table.
-pub const STABILITY_SCENES: &[&str] = &[
-    "stability_extremes",
-    "stability_exact",
-    "stability_park",
-    "stability_noh_bathe",
-    "courant_sweep",
-    "graded_1e4",
-    "layered_1e4",
-    "layered",
-    "long_run",
-    "fig1_si",
-    "contact_extremes",
-];
 
 /// A study's scene: the built-in scene `scene` without its expectations, with each
 /// `(from, to)` substitution applied once; an error names the study when a substitution no
