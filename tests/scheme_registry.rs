@@ -3,9 +3,9 @@
 //! keys each scheme declares, unknown keys refused naming line and key).
 //!
 //! ```text
-//!   [integrator]
-//!   scheme = ["cd", "park-lts", "noh-bathe"]   -> cd-co0.5, park-lts-co0.5, noh-bathe-co0.5
-//!   theta = 0.5                                -> park-lts (declared by Park)
+//!   [integrator]                      (the fig1 scene, its scheme line replaced)
+//!   scheme = ["cd", "park-lts", "noh-bathe"]   -> cd-co1 ... park-lts-co1 ... noh-bathe-co0.1
+//!   theta = 0.25                               -> park-lts (declared by Park)
 //!   p = 0.6                                    -> noh-bathe (declared by Noh-Bathe)
 //! ```
 //!
@@ -16,40 +16,31 @@
 //! `courant list --schemes` lists every scheme with its parameters and source.
 
 use courant::scene::Scene;
+use courant::scene::builtin::builtin_text;
 use courant_solver::schemes::REGISTRY;
 use rstest::rstest;
 use std::process::Command;
 
-/// A minimal scene; `{integrator}` is replaced by the lines under test (line 17 on).
-const SCENE: &str = r#"[scene]
-description = "registry"
-source = "the registry"
-
-[material]
-modulus = 1.0
-
-[mesh]
-elements = 10
-
-[[load]]
-kind = "traction"
-end = "left"
-value = -1.0
-
-[integrator]
-{integrator}
-courant = 0.5
-
-[output]
-profile_times = [0.5]
-"#;
-
+/// The built-in fig1 scene (without its expectations and its `mass = "lumped"`, the default) with
+/// its `scheme = "central-difference"` line replaced by `integrator`.
 fn scene(integrator: &str) -> Result<Scene, courant::scene::SceneError> {
-    Scene::parse(
-        "registry",
-        "registry.toml",
-        &SCENE.replace("{integrator}", integrator),
-    )
+    let mut text = builtin_text("fig1").unwrap().to_string();
+    text.truncate(text.find("[[expect]]").unwrap());
+    let (line, mass) = ("scheme = \"central-difference\"\n", "mass = \"lumped\"\n");
+    assert!(text.contains(line) && text.contains(mass));
+    let text = text
+        .replacen(mass, "", 1)
+        .replacen(line, &format!("{integrator}\n"), 1);
+    Scene::parse("registry", "registry.toml", &text)
+}
+
+/// The line of fig1's `scheme` key, where the lines under test start.
+fn scheme_line() -> usize {
+    let text = builtin_text("fig1").unwrap();
+    text[..text.find("scheme = \"central-difference\"").unwrap()]
+        .lines()
+        .count()
+        + 1
 }
 
 #[test]
@@ -57,8 +48,8 @@ fn every_registry_name_builds_its_scheme_with_its_defaults() {
     for entry in REGISTRY {
         for name in std::iter::once(&entry.name).chain(entry.aliases) {
             let s = scene(&format!("scheme = \"{name}\"")).unwrap();
-            assert_eq!(s.cases.len(), 1);
-            assert_eq!(s.cases[0].name, "co0.5");
+            assert_eq!(s.cases.len(), 3);
+            assert_eq!(s.cases[1].name, "co0.5");
             assert_eq!(s.cases[0].integrator.scheme.name(), entry.name);
         }
     }
@@ -79,83 +70,102 @@ fn mixed_schemes_each_take_their_own_keys() {
     )
     .unwrap();
     let names: Vec<&str> = s.cases.iter().map(|c| c.name.as_str()).collect();
-    assert_eq!(names, ["cd-co0.5", "park-lts-co0.5", "noh-bathe-co0.5"]);
+    assert_eq!(
+        names,
+        [
+            "cd-co1",
+            "cd-co0.5",
+            "cd-co0.1",
+            "park-lts-co1",
+            "park-lts-co0.5",
+            "park-lts-co0.1",
+            "noh-bathe-co1",
+            "noh-bathe-co0.5",
+            "noh-bathe-co0.1"
+        ]
+    );
     let labels: Vec<String> = s
         .cases
         .iter()
+        .step_by(3)
         .map(|c| c.integrator.scheme.label())
         .collect();
     assert_eq!(
         labels,
         ["cd", "park-lts-incremental theta=0.25", "noh-bathe p=0.6"]
     );
-    assert_eq!(s.cases[2].integrator.scheme.force_evaluations(), 2);
+    assert_eq!(s.cases[8].integrator.scheme.force_evaluations(), 2);
     assert_eq!(s.cases[0].integrator.scheme.force_evaluations(), 1);
 }
 
+/// `offset`: the line of the error below the `scheme` line.
 #[rstest]
 #[case::parameter_out_of_its_range(
     "scheme = \"noh-bathe\"\np = 0.4",
-    18,
+    1,
     "integrator.p",
     "0.4 must lie in [0.5, 0.75]"
 )]
 #[case::parameter_no_listed_scheme_declares(
     "scheme = \"cd\"\np = 0.54",
-    18,
+    1,
     "integrator.p",
     "unknown field `p`: neither a key of [integrator] nor a parameter of its schemes (cd takes none)"
 )]
 #[case::misspelt_parameter(
     "scheme = \"park-lts\"\nthetta = 0.5",
-    18,
+    1,
     "integrator.thetta",
     "park-lts: theta, park_variant"
 )]
 #[case::word_where_a_number_goes(
     "scheme = \"noh-bathe\"\np = \"half\"",
-    18,
+    1,
     "integrator.p",
     "must be a number"
 )]
 #[case::unknown_choice(
     "scheme = \"park-lts\"\npark_variant = \"fast\"",
-    18,
+    1,
     "integrator.park_variant",
     "\"fast\" must be one of free, incremental"
 )]
 #[case::unknown_scheme(
     "scheme = [\"cd\", \"nb\"]",
-    17,
+    0,
     "integrator.scheme",
     "\"nb\" is not one of cd (central-difference), park-lts, park-global, noh-bathe"
 )]
 #[case::mass_the_scheme_does_not_take(
     "scheme = \"park-lts\"\nmass = \"cmm\"",
-    17,
+    0,
     "integrator.scheme",
     "Park's scheme runs with the lumped mass only"
 )]
 #[case::start_the_scheme_does_not_take(
     "scheme = \"noh-bathe\"\nstart = \"three-level\"",
-    17,
+    0,
     "integrator.scheme",
     "the three-level start is central difference's"
 )]
 #[case::table_as_a_parameter(
     "scheme = \"noh-bathe\"\np = [0.5]",
-    18,
+    1,
     "integrator.p",
     "a number or a word in quotes"
 )]
 fn bad_scheme_input_names_line_key_and_rule(
     #[case] integrator: &str,
-    #[case] line: usize,
+    #[case] offset: usize,
     #[case] key: &str,
     #[case] rule: &str,
 ) {
     let e = scene(integrator).unwrap_err();
-    assert_eq!((e.line, e.key.as_str()), (line, key), "{e}");
+    assert_eq!(
+        (e.line, e.key.as_str()),
+        (scheme_line() + offset, key),
+        "{e}"
+    );
     assert!(e.message.contains(rule), "{e}");
 }
 

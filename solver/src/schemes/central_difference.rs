@@ -89,17 +89,105 @@ pub(crate) fn half_step_start(state: &InitialState<'_>) -> (Vec<f64>, f64) {
     (v_half, staggered)
 }
 
-/// Central difference with the lumped mass: the fused kernel.
+/// What the shared [`CentralDifferenceStepper`] needs of a central-difference kernel (state
+/// `u^n`, `v^{n+1/2}`): how it is built from the half-step start, its step, and `a^n` at a node.
+pub trait CentralDifferenceKernel: Sized {
+    /// The kernel started with `v^{1/2}` and `T*^0` (from [`half_step_start`]).
+    fn build(state: InitialState<'_>, half_step_velocity: &[f64], staggered0: f64) -> Self;
+    /// Time step.
+    fn dt(&self) -> f64;
+    /// `u^n`.
+    fn displacement(&self) -> &[f64];
+    /// `v^{n+1/2}`.
+    fn half_step_velocity(&self) -> &[f64];
+    /// `a^n` at node `i`, time `t`.
+    fn acceleration_at(&self, model: &Model, i: usize, t: f64) -> f64;
+    /// One step with its energies; `forces` are `F^{n+1}` by node.
+    fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy;
+    /// `T*` recomputed from the mass (matrix masses only).
+    fn staggered_from_mass(&mut self) -> Option<f64> {
+        None
+    }
+}
+
+impl CentralDifferenceKernel for LumpedCentralDifference {
+    fn build(state: InitialState<'_>, half_step_velocity: &[f64], _: f64) -> Self {
+        Self::new(
+            state.model,
+            state.dt,
+            state.displacement,
+            half_step_velocity,
+        )
+    }
+    fn dt(&self) -> f64 {
+        self.dt()
+    }
+    fn displacement(&self) -> &[f64] {
+        self.displacement()
+    }
+    fn half_step_velocity(&self) -> &[f64] {
+        self.half_step_velocity()
+    }
+    /// Local for the lumped mass: `(F_i - (K u)_i)/m_i`.
+    fn acceleration_at(&self, model: &Model, i: usize, t: f64) -> f64 {
+        model.acceleration_at(self.displacement(), i, t)
+    }
+    #[inline]
+    fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
+        self.step_with_energy(forces)
+    }
+}
+
+impl CentralDifferenceKernel for MatrixCentralDifference {
+    fn build(state: InitialState<'_>, half_step_velocity: &[f64], staggered0: f64) -> Self {
+        let start = StartState {
+            displacement: state.displacement,
+            half_step_velocity,
+            acceleration: state.acceleration,
+            residual: state.residual,
+            kinetic_staggered: staggered0,
+        };
+        Self::new(state.dt, state.model.stiffness(), state.mass, &start)
+    }
+    fn dt(&self) -> f64 {
+        self.dt()
+    }
+    fn displacement(&self) -> &[f64] {
+        self.displacement()
+    }
+    fn half_step_velocity(&self) -> &[f64] {
+        self.half_step_velocity()
+    }
+    /// The kept solve `a^n = M^-1 r^n`.
+    fn acceleration_at(&self, _: &Model, i: usize, _: f64) -> f64 {
+        self.acceleration()[i]
+    }
+    #[inline]
+    fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
+        self.step_with_energy(forces)
+    }
+    fn staggered_from_mass(&mut self) -> Option<f64> {
+        Some(self.staggered_kinetic_from_mass())
+    }
+}
+
+/// Central difference as a stepper of the time loop, on one of its kernels.
 #[derive(Debug, Clone)]
-pub struct LumpedStepper {
-    kernel: LumpedCentralDifference,
+pub struct CentralDifferenceStepper<K> {
+    kernel: K,
     staggered0: f64,
 }
 
-impl LumpedStepper {
+/// Central difference with the lumped mass: the fused kernel.
+pub type LumpedStepper = CentralDifferenceStepper<LumpedCentralDifference>;
+
+/// Central difference with a consistent, averaged or reciprocal mass.
+pub type MatrixStepper = CentralDifferenceStepper<MatrixCentralDifference>;
+
+impl<K: CentralDifferenceKernel> CentralDifferenceStepper<K> {
     /// The stepper around a kernel already started (the contact schemes start it with their
     /// level-0 contact impulse, and keep their own energy accounts: `start_energy` is 0).
-    pub fn from_kernel(kernel: LumpedCentralDifference) -> Self {
+    pub fn from_kernel(kernel: K) -> Self {
         Self {
             kernel,
             staggered0: 0.0,
@@ -112,18 +200,13 @@ impl LumpedStepper {
     }
 }
 
-impl Integrator for LumpedStepper {
+impl<K: CentralDifferenceKernel> Integrator for CentralDifferenceStepper<K> {
     type Parameters = ();
 
     fn start(_: &(), state: InitialState<'_>) -> Result<Self, InputError> {
         let (v_half, staggered0) = half_step_start(&state);
         Ok(Self {
-            kernel: LumpedCentralDifference::new(
-                state.model,
-                state.dt,
-                state.displacement,
-                &v_half,
-            ),
+            kernel: K::build(state, &v_half, staggered0),
             staggered0,
         })
     }
@@ -136,61 +219,9 @@ impl Integrator for LumpedStepper {
         self.kernel.displacement()
     }
 
+    /// `v^n = v^{n+1/2} - dt/2 a^n`.
     fn velocity_and_acceleration_at(&self, model: &Model, i: usize, t: f64) -> (f64, f64) {
-        let a = model.acceleration_at(self.kernel.displacement(), i, t);
-        (self.kernel.half_step_velocity()[i] - 0.5 * self.dt() * a, a)
-    }
-
-    #[inline]
-    fn step(&mut self, _model: &Model, _t: f64, forces: &[(usize, f64)]) -> StepEnergy {
-        self.kernel.step_with_energy(forces)
-    }
-
-    fn start_energy(&self) -> f64 {
-        self.staggered0
-    }
-}
-
-/// Central difference with a consistent, averaged or reciprocal mass.
-#[derive(Debug, Clone)]
-pub struct MatrixStepper {
-    kernel: MatrixCentralDifference,
-    staggered0: f64,
-}
-
-impl Integrator for MatrixStepper {
-    type Parameters = ();
-
-    fn start(_: &(), state: InitialState<'_>) -> Result<Self, InputError> {
-        let (v_half, staggered0) = half_step_start(&state);
-        let start = StartState {
-            displacement: state.displacement,
-            half_step_velocity: &v_half,
-            acceleration: state.acceleration,
-            residual: state.residual,
-            kinetic_staggered: staggered0,
-        };
-        Ok(Self {
-            kernel: MatrixCentralDifference::new(
-                state.dt,
-                state.model.stiffness(),
-                state.mass,
-                &start,
-            ),
-            staggered0,
-        })
-    }
-
-    fn dt(&self) -> f64 {
-        self.kernel.dt()
-    }
-
-    fn displacement(&self) -> &[f64] {
-        self.kernel.displacement()
-    }
-
-    fn velocity_and_acceleration_at(&self, _model: &Model, i: usize, _t: f64) -> (f64, f64) {
-        let a = self.kernel.acceleration()[i];
+        let a = self.kernel.acceleration_at(model, i, t);
         (self.kernel.half_step_velocity()[i] - 0.5 * self.dt() * a, a)
     }
 
@@ -204,6 +235,6 @@ impl Integrator for MatrixStepper {
     }
 
     fn recomputed_balance_kinetic(&mut self) -> Option<f64> {
-        Some(self.kernel.staggered_kinetic_from_mass())
+        self.kernel.staggered_from_mass()
     }
 }
