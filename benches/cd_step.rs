@@ -19,7 +19,9 @@
 //! loop at `-march=native`. `step_with_energy` adds three energy sums, kept in 8 independent
 //! lanes so they vectorise.
 //!
-//! Also: `memory_triad`, the STREAM triad at the same sizes (and 4e6), the machine's bandwidth
+//! Also: `run_loop`, a whole 1000-step run through the public time loop (N = 1e4; lumped CD, CMM,
+//! Park, Noh-Bathe): what the loop adds around the kernels; `noh_bathe_step`, one Noh-Bathe step
+//! (LMM, CMM) beside CD's, both through the `Integrator` interface; `memory_triad`, the STREAM triad at the same sizes (and 4e6), the machine's bandwidth
 //! the report compares each step's model bandwidth with.
 //!
 //! Run:      cargo bench --bench cd_step
@@ -225,6 +227,94 @@ fn park_step(c: &mut Criterion) {
     group.finish();
 }
 
+/// One step of the Noh-Bathe scheme (p = 0.54, lumped and consistent mass) against central
+/// difference, both stepped through the public `Integrator` interface as the shared time loop
+/// steps them, on the Fig. 2 graded bar at 0.5 of each one's critical Courant number, N = 1e3,
+/// 1e5, 1e6. Noh-Bathe does two K u products and two mass solves per step.
+fn noh_bathe_step(c: &mut Criterion) {
+    use courant_solver::integrator::{InitialState, Integrator};
+    use courant_solver::schemes::central_difference::{LumpedStepper, MatrixStepper};
+    use courant_solver::schemes::noh_bathe::NohBatheStepper;
+    use courant_solver::{MassKind, MassOperator, Model, Start};
+    /// The start state of `model` from rest with the smooth velocity of the other benchmarks.
+    fn stepper<I: Integrator>(model: &Model, kind: MassKind, dt: f64, p: &I::Parameters) -> I {
+        let n = model.bar().node_count() - 1;
+        let (zeros, v) = (vec![0.0; n + 1], smooth_half_velocity(n));
+        let state = InitialState {
+            model,
+            dt,
+            displacement: &zeros,
+            velocity: &v,
+            acceleration: &zeros,
+            residual: &zeros,
+            kinetic: 0.0,
+            start: Start::HalfStep,
+            allow_unstable: false,
+            mass: MassOperator::new(model, kind).unwrap(),
+        };
+        I::start(p, state).unwrap()
+    }
+    fn bench<I: Integrator>(
+        group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+        name: &str,
+        model: &Model,
+        mut stepper: I,
+    ) {
+        let n = model.bar().element_count();
+        let forces = [(0usize, 1.0f64)];
+        let dt = stepper.dt();
+        let mut t = 0.0;
+        group.bench_function(BenchmarkId::new(name, n), |b| {
+            b.iter(|| {
+                let e = stepper.step(black_box(model), t, black_box(&forces));
+                t += dt;
+                e
+            })
+        });
+        assert!(
+            stepper.displacement().iter().all(|x| x.is_finite()),
+            "{name}"
+        );
+    }
+    let mut group = c.benchmark_group("noh_bathe_step");
+    group
+        .warm_up_time(Duration::from_secs(1))
+        .sample_size(20)
+        .measurement_time(Duration::from_secs(3));
+    for n in SIZES {
+        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let element_dt = model.bar().stiffest_element().1;
+        group.throughput(Throughput::Elements(n as u64));
+        let lumped = 0.5 * element_dt;
+        let consistent = 0.5 * MassKind::Consistent.critical_courant() * element_dt;
+        bench(
+            &mut group,
+            "cd-lmm",
+            &model,
+            stepper::<LumpedStepper>(&model, MassKind::Lumped, lumped, &()),
+        );
+        bench(
+            &mut group,
+            "noh-bathe-lmm",
+            &model,
+            stepper::<NohBatheStepper>(&model, MassKind::Lumped, 1.8725 * lumped, &0.54),
+        );
+        bench(
+            &mut group,
+            "cd-cmm",
+            &model,
+            stepper::<MatrixStepper>(&model, MassKind::Consistent, consistent, &()),
+        );
+        bench(
+            &mut group,
+            "noh-bathe-cmm",
+            &model,
+            stepper::<NohBatheStepper>(&model, MassKind::Consistent, 1.8725 * consistent, &0.54),
+        );
+    }
+    group.finish();
+}
+
 /// The machine's reach: the STREAM triad `a[i] = b[i] + s c[i]` (McCalpin, "Memory bandwidth and
 /// machine balance", 1995) over N = 1e3, 1e5, 1e6 and 4e6 elements, 24 bytes per element as
 /// STREAM counts them (write-allocate traffic not counted). The report's benchmark table divides
@@ -255,12 +345,72 @@ fn memory_triad(c: &mut Criterion) {
     group.finish();
 }
 
+/// A whole run through the public time loop (`Integration::run`: start, stability check, steps
+/// with the energy balance, the guard and the work of the loads), 1000 steps on the graded bar of
+/// N = 1e4 elements at Co = 0.5 (Park: its own Co = 0.5, CMM: half its critical Courant number,
+/// Noh-Bathe: half its own limit), no profiles, no histories, one energy sample at the end. Time
+/// per run; per step divide by 1000. It measures what the loop adds around the kernels.
+fn run_loop(c: &mut Criterion) {
+    use courant_solver::{CentralDifference, MassKind, OutputRequest, ParkOptions};
+    let mut group = c.benchmark_group("run_loop");
+    group
+        .warm_up_time(Duration::from_secs(1))
+        .sample_size(20)
+        .measurement_time(Duration::from_secs(4));
+    let (n, steps) = (10_000, 1_000);
+    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+    let element_dt = model.bar().stiffest_element().1;
+    let request = OutputRequest {
+        energy_every: steps,
+        history_every: steps,
+        ..OutputRequest::default()
+    };
+    group.throughput(Throughput::Elements((n * steps) as u64));
+    for (name, integrator) in [
+        ("lmm", CentralDifference::new(0.5 * element_dt)),
+        (
+            "cmm",
+            CentralDifference {
+                mass: MassKind::Consistent,
+                ..CentralDifference::new(0.5 * MassKind::Consistent.critical_courant() * element_dt)
+            },
+        ),
+        (
+            "park-lts",
+            CentralDifference {
+                park: Some(ParkOptions::default()),
+                ..CentralDifference::new(0.5 * element_dt)
+            },
+        ),
+    ]
+    .map(|(name, settings)| (name, settings.integration()))
+    .into_iter()
+    .chain([(
+        "noh-bathe",
+        courant_solver::Integration::new(
+            0.5 * 1.8725 * element_dt,
+            std::sync::Arc::new(courant_solver::schemes::noh_bathe::NohBathe { p: 0.54 }),
+        ),
+    )]) {
+        group.bench_function(BenchmarkId::new(name, n), |b| {
+            b.iter(|| {
+                let out = integrator.run(black_box(&model), steps, &request).unwrap();
+                assert_eq!(out.steps, steps);
+                out.energy.max_balance_error
+            })
+        });
+    }
+    group.finish();
+}
+
 criterion_group!(
     benches,
+    run_loop,
     lumped_cd_step,
     mass_kind_step,
     spectrum_dense,
     park_step,
+    noh_bathe_step,
     memory_triad
 );
 criterion_main!(benches);

@@ -18,8 +18,13 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Name the built-in scenes with a one-line description each.
-    List,
+    /// Name the built-in scenes with a one-line description each (with --schemes: the schemes
+    /// scenes may name, their parameters, masses and sources).
+    List {
+        /// List the schemes instead of the scenes.
+        #[arg(long)]
+        schemes: bool,
+    },
     /// Run scenes (built-in names or paths to .toml files; all built-in scenes when none given).
     ///
     /// Writes DIR/<scene>/<case>.csv (stress profiles), <case>.history.csv, <case>.energy.csv,
@@ -98,7 +103,7 @@ enum Command {
 fn main() -> ExitCode {
     courant::cli::exit_quietly_on_closed_pipe();
     match Cli::parse().command {
-        Command::List => courant::cli::list(),
+        Command::List { schemes } => courant::cli::list(schemes),
         Command::Run {
             scenes,
             out,

@@ -35,6 +35,11 @@ fn layered_bar_at_courant_one_is_exact_through_many_reflections() {
     let scene = scene_with(
         "layered",
         &[
+            // CD and Park at alpha = 1 (CD); Noh-Bathe is not exact here (the layered scene).
+            (
+                "scheme = [\"cd\", \"park-lts\", \"noh-bathe\"]",
+                "scheme = [\"cd\", \"park-lts\"]",
+            ),
             ("courant = [1.0, 0.5]", "courant = 1.0"),
             (
                 "profile_times = [0.5, 1.2, 2.6]",
@@ -68,10 +73,10 @@ fn equal_transit_cd_converges_at_first_order_to_the_graded_bar() {
                 "elements = [100, 200, 400]\nspacing = \"equal-transit\"",
             ),
             (
-                "scheme = [\"cd\", \"park-global\", \"park-lts\"]",
+                "scheme = [\"cd\", \"park-global\", \"park-lts\", \"noh-bathe\"]",
                 "scheme = \"cd\"",
             ),
-            ("theta = 0.5\npark_variant = \"free\"\n", ""),
+            ("theta = 0.5\npark_variant = \"free\"\np = 0.54\n", ""),
             ("courant = 0.5", "courant = 1.0"),
             ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
         ],

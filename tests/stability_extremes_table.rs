@@ -12,6 +12,8 @@
 //! the 8 runs at or below the critical step complete every planned step, the 4 runs at 1.01 are
 //! stopped by the divergence guard long before their planned end, with the step and node; on the
 //! graded_1e4 bar Park's alpha_e <= 1 is named a sufficient bound and predicts nothing above it;
+//! the Noh-Bathe rows (every mass at 0.99/1.00/1.01 of `Omega_crit(p)/omega_max`) agree: stable,
+//! marginal and completed, caught;
 //! the contact rows agree except the 4 that gain energy.
 
 use courant::compare::outcome::SceneOutcome;
@@ -143,8 +145,8 @@ fn contact_extremes_rows_agree_with_the_critical_steps() {
 /// rows name the bound as sufficient, predict nothing above it (the global step at 1.01 stays
 /// bounded, local stepping diverges; both `not predicted`); below it the global step agrees while
 /// local stepping (free variant) creates energy under the sustained load, which disagrees with
-/// `stable` and passes only as the finding the scene states; CD's exact 2/omega_max rows keep a
-/// prediction that holds.
+/// `stable` and passes only as the finding the scene states; the exact limits of CD
+/// (`2/omega_max`) and Noh-Bathe (`Omega_crit(p)/omega_max`) keep predictions that hold.
 #[test]
 fn park_on_a_graded_mesh_is_held_to_a_sufficient_bound_only() {
     let (_, rows) = time_stepping_rows("graded_1e4");
@@ -162,6 +164,9 @@ fn park_on_a_graded_mesh_is_held_to_a_sufficient_bound_only() {
             } else {
                 assert_eq!(row.agrees(), Some(true), "{row:?}");
             }
+        } else if row.case.starts_with("noh-bathe") {
+            assert_eq!(row.limit, "Omega_crit(p)/omega_max", "{row:?}");
+            assert_eq!(row.agrees(), Some(true), "{row:?}");
         } else {
             assert_eq!(row.limit, "2/omega_max", "{row:?}");
             assert_eq!(row.agrees(), Some(true), "{row:?}");
@@ -170,4 +175,19 @@ fn park_on_a_graded_mesh_is_held_to_a_sufficient_bound_only() {
     let by_name = |name: &str| rows.iter().find(|r| r.case == name).unwrap();
     assert!(by_name("park-global-co1.01").completed);
     assert!(!by_name("park-lts-co1.01").completed);
+}
+
+/// Source of truth: the Noh-Bathe limit `Omega_crit(p)/omega_max`, exact for the linear system
+/// (courant_solver::schemes::noh_bathe). Proves: every row of `stability_noh_bathe` names it and
+/// agrees with it: 0.99 stable, 1.00 marginal and completed (eigenvalue +1, the other det A < 1),
+/// 1.01 stopped by the guard.
+#[test]
+fn noh_bathe_rows_agree_with_its_exact_limit() {
+    let (_, rows) = time_stepping_rows("stability_noh_bathe");
+    assert_eq!(rows.len(), 12);
+    for row in &rows {
+        assert_eq!(row.limit, "Omega_crit(p)/omega_max", "{row:?}");
+        assert_eq!(row.agrees(), Some(true), "{row:?}");
+        assert_eq!(row.completed, !row.case.ends_with("-co1.01"), "{row:?}");
+    }
 }

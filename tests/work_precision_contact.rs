@@ -7,7 +7,8 @@
 //! Proves: the fig5_contact work-precision study runs CD with penalty at 0.9 of its own exact
 //! critical step (below the limit, which equals the closed form) beside the other schemes at
 //! Co = 0.5, on every mesh, with about 0.5/0.018 = 28 times their steps; its points are labelled
-//! with their Courant setting in the table's Co column, in both log-log charts and in the CPU-time
+//! with their Courant setting in the table's Co column, in the three log-log charts (the third
+//! against element force evaluations, one per step here) and in the CPU-time
 //! chart; its force error is finite, O(1) and mesh-independent (the stiff penalty spring rattles,
 //! similarity), far above the converging predictor-corrector and Lagrange-multiplier errors.
 
@@ -86,7 +87,8 @@ fn cd_penalty_runs_at_its_own_stable_step_with_its_courant_number_stated() {
     assert!(lm.windows(2).all(|w| w[1].l1 < w[0].l1), "LM converges");
     assert!(lm[meshes - 1].l1 * 100.0 < lo, "LM at the finest mesh");
 
-    // The Courant setting is stated in the table, the two work charts and the CPU chart.
+    // The Courant setting is stated in the table, the three work charts and the CPU chart; the
+    // table counts one force evaluation per step (central difference on the bulk).
     let page = study_page(study, &points);
     let (report, files) = (page.blocks, page.files);
     let csv = &files
@@ -94,18 +96,26 @@ fn cd_penalty_runs_at_its_own_stable_step_with_its_courant_number_stated() {
         .find(|f| f.0 == "work_precision/fig5_contact.csv")
         .unwrap()
         .1;
-    assert!(csv.starts_with("method,Co,Co_crit,N,steps,node_steps,l1\n"));
+    assert!(csv.starts_with(
+        "method,Co,Co_crit,N,steps,node_steps,l1,force_evals_per_step,element_force_evals\n"
+    ));
     let row = csv
         .lines()
         .find(|l| l.starts_with("cd-penalty-bs2500,"))
         .unwrap();
     let co: f64 = row.split(',').nth(1).unwrap().parse().unwrap();
     assert!((co - 0.9 * closed).abs() < 1e-6 * closed, "{row}");
+    let cells: Vec<&str> = row.split(',').collect();
+    assert_eq!(cells[7], "1", "{row}");
+    assert_eq!(
+        cells[8], cells[5],
+        "one K u per step: evaluations = node-steps: {row}"
+    );
     let charts: Vec<&(String, String)> = files.iter().filter(|f| f.0.ends_with(".svg")).collect();
     assert_eq!(
         charts.len(),
-        2,
-        "error against elements x steps and against steps"
+        3,
+        "error against elements x steps, against steps, against force evaluations"
     );
     let cpu = cpu_chart(study, &points).expect("timed points");
     for svg in charts.iter().map(|f| f.1.as_str()).chain([cpu.as_str()]) {
@@ -119,7 +129,7 @@ fn cd_penalty_runs_at_its_own_stable_step_with_its_courant_number_stated() {
     }
     assert!(
         report.len() >= 4,
-        "heading, two figures and the table: {}",
+        "heading, three figures and the table: {}",
         report.len()
     );
 }

@@ -123,3 +123,22 @@ pub struct DivergenceError {
     /// Courant number of the run.
     pub courant: f64,
 }
+
+/// Why a run did not complete.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum RunError {
+    /// Bad parameters; nothing ran.
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// `dt` above the critical step and unstable runs not allowed; nothing ran.
+    #[error(transparent)]
+    Unstable(#[from] UnstableStepError),
+    /// An allowed unstable run blew up; `partial` holds everything recorded before.
+    #[error("{error}")]
+    Diverged {
+        /// Where and how it diverged.
+        error: DivergenceError,
+        /// Outputs up to the divergence.
+        partial: Box<crate::output::RunOutput>,
+    },
+}

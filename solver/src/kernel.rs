@@ -57,7 +57,7 @@ pub struct LumpedCentralDifference {
 
 impl LumpedCentralDifference {
     /// Set up the operators of `model` for step `dt`, with state `u = u^0` and
-    /// `v = v^{1/2}` supplied by the caller (see [`crate::central_difference::Start`]).
+    /// `v = v^{1/2}` supplied by the caller (see [`crate::integrator::Start`]).
     pub fn new(model: &Model, dt: f64, u0: &[f64], v_half: &[f64]) -> Self {
         let n = model.bar().node_count();
         let pad = |inner: &mut dyn Iterator<Item = f64>| -> Vec<f64> {

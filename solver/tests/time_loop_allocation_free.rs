@@ -7,16 +7,20 @@
 //! ```
 //!
 //! Proves: one step of lumped CD, of CD with each non-diagonal mass (CMM, AMM: partitioned
-//! tridiagonal solve; RMM: product with M^-1), and of Park's scheme (global and local stepping,
-//! both variants) performs exactly zero heap allocations, counted by a global allocator wrapper.
+//! tridiagonal solve; RMM: product with M^-1), of Park's scheme (global and local stepping,
+//! both variants), and of the Noh-Bathe stepper with every mass (stepped through the public
+//! `Integrator` interface, as the shared time loop steps it) performs exactly zero heap
+//! allocations, counted by a global allocator wrapper.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use courant_solver::fixtures::graded_seed_bar;
+use courant_solver::integrator::{InitialState, Integrator};
 use courant_solver::kernel::LumpedCentralDifference;
 use courant_solver::matrix_kernel::{MatrixCentralDifference, StartState};
-use courant_solver::{MassKind, MassOperator, ParkOptions, ParkScheme, ParkVariant};
+use courant_solver::schemes::noh_bathe::NohBatheStepper;
+use courant_solver::{MassKind, MassOperator, ParkOptions, ParkScheme, ParkVariant, Start};
 
 /// The system allocator, counting allocations and reallocations.
 struct Counting;
@@ -119,5 +123,39 @@ fn every_time_stepping_kernel_steps_without_allocating() {
             );
             assert!(park.displacement().iter().all(|u| u.is_finite()));
         }
+    }
+
+    for kind in [
+        MassKind::Lumped,
+        MassKind::Consistent,
+        MassKind::Averaged { beta: 0.5 },
+        MassKind::Reciprocal { beta: 0.5 },
+    ] {
+        let zeros = vec![0.0; n + 1];
+        let dt = 0.5 * kind.critical_courant() * element_dt;
+        let state = InitialState {
+            model: &model,
+            dt,
+            displacement: &zeros,
+            velocity: &zeros,
+            acceleration: &zeros,
+            residual: &zeros,
+            kinetic: 0.0,
+            start: Start::HalfStep,
+            allow_unstable: false,
+            mass: MassOperator::new(&model, kind).unwrap(),
+        };
+        let mut stepper = NohBatheStepper::start(&0.54, state).unwrap();
+        let mut t = 0.0;
+        assert_eq!(
+            allocations_during(200, || {
+                std::hint::black_box(stepper.step(&model, t, &forces));
+                t += dt;
+            }),
+            0,
+            "noh-bathe {}",
+            kind.label()
+        );
+        assert!(stepper.displacement().iter().all(|u| u.is_finite()));
     }
 }

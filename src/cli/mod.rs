@@ -7,6 +7,7 @@
 pub mod check;
 pub mod reference;
 pub mod run;
+pub mod schemes;
 pub mod score;
 
 /// Let a closed pipe end the process quietly, as Unix tools do (`courant list | head`): Rust
@@ -30,7 +31,11 @@ use crate::scene::studies::convergence::CONVERGENCE_STUDIES;
 use crate::scene::studies::convergence::ConvergenceStudy;
 use std::process::ExitCode;
 
-pub fn list() -> ExitCode {
+pub fn list(schemes: bool) -> ExitCode {
+    if schemes {
+        print!("{}", schemes::listing());
+        return ExitCode::SUCCESS;
+    }
     let width = BUILTIN_SCENES
         .iter()
         .map(|(n, _)| n.len())

@@ -20,6 +20,9 @@ pub struct WorkPoint {
     pub elements: usize,
     /// Steps.
     pub steps: usize,
+    /// Internal-force evaluations `K u` per step of the scheme (central difference 1; Park and
+    /// Noh-Bathe 2; a contact scheme 1, its bulk being central difference).
+    pub force_evaluations: usize,
     /// Normalised L1 error of the stress.
     pub l1: f64,
     /// Wall time of the integration, in seconds.
@@ -27,6 +30,12 @@ pub struct WorkPoint {
 }
 
 impl WorkPoint {
+    /// Element force evaluations, `N x steps x K u per step`: the work in units of one element's
+    /// internal force, whatever the scheme.
+    pub fn element_force_evaluations(&self) -> usize {
+        self.elements * self.steps * self.force_evaluations
+    }
+
     /// Legend label: the method, with its Courant setting when the study's schemes run at
     /// different ones.
     pub fn label(&self) -> String {
@@ -37,10 +46,21 @@ impl WorkPoint {
     }
 }
 
-/// Deterministic table: `method, Co, Co_crit, N, steps, node_steps, l1` (`Co` relative to the
-/// stiffest element, `Co_crit` the exact critical Courant number of the case's scheme).
+/// Deterministic table: `method, Co, Co_crit, N, steps, node_steps, l1, force_evals_per_step,
+/// element_force_evals` (`Co` relative to the stiffest element, `Co_crit` the exact critical
+/// Courant number of the case's scheme).
 pub fn table(points: &[WorkPoint]) -> Table {
-    let mut t = Table::new(&["method", "Co", "Co_crit", "N", "steps", "node_steps", "l1"]);
+    let mut t = Table::new(&[
+        "method",
+        "Co",
+        "Co_crit",
+        "N",
+        "steps",
+        "node_steps",
+        "l1",
+        "force_evals_per_step",
+        "element_force_evals",
+    ]);
     for p in points {
         t.push(vec![
             p.method.as_str().into(),
@@ -50,6 +70,8 @@ pub fn table(points: &[WorkPoint]) -> Table {
             p.steps.into(),
             (p.elements * p.steps).into(),
             p.l1.into(),
+            p.force_evaluations.into(),
+            p.element_force_evaluations().into(),
         ]);
     }
     t

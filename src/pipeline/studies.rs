@@ -83,10 +83,11 @@ pub fn run_work_precision(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, 
                 setting,
                 courant: r.courant,
                 // Co_crit = Co dt_crit/dt with dt_crit the limit of the case's scheme (CD:
-                // 2/omega_max; Park: alpha_e <= 1).
+                // 2/omega_max; Park: alpha_e <= 1; Noh-Bathe: Omega_crit(p)/omega_max).
                 critical_courant: r.courant * r.limit.dt() / r.dt,
                 elements: r.elements,
                 steps: r.steps,
+                force_evaluations: case.integrator.scheme.force_evaluations(),
                 l1,
                 wall_time: r.wall_time.as_secs_f64(),
             })
@@ -129,6 +130,8 @@ fn run_contact_study(
                     .map(|b| b.bar().element_count())
                     .sum(),
                 steps: r.run.steps,
+                // Central difference on the bulk: one K u per step; the contact update is O(1).
+                force_evaluations: 1,
                 l1: r.errors.force_l1_error,
                 wall_time: r.wall_time.as_secs_f64(),
             })

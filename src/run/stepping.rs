@@ -2,17 +2,8 @@
 
 use crate::results::case::{CaseRecord, Status};
 use crate::scene::cases::Case;
-use courant_solver::{CentralDifference, RunError};
+use courant_solver::RunError;
 use std::time::Instant;
-
-/// What [`CaseRecord::scheme`] says of an integrator: `cd`, or Park's stepping, variant and
-/// blend, e.g. `park-lts-free theta=0.5`.
-pub fn scheme_label(integrator: &CentralDifference) -> String {
-    integrator.park.map_or_else(
-        || "cd".to_string(),
-        |park| format!("{} theta={}", park.label(), park.theta),
-    )
-}
 
 /// Run a case. A divergence (allowed unstable runs only) is a status, not an error: its partial
 /// outputs are kept.
@@ -36,7 +27,8 @@ pub fn run_case(case: &Case) -> Result<CaseRecord, RunError> {
     profile_steps.dedup();
     Ok(CaseRecord {
         case: case.name.clone(),
-        scheme: scheme_label(&case.integrator),
+        // The scheme and its parameters: `cd`, `park-lts-free theta=0.5`, `noh-bathe p=0.54`.
+        scheme: case.integrator.scheme.label(),
         mesh: case.model.bar().mesh().clone(),
         courant: output.courant,
         dt: output.dt,

@@ -9,6 +9,10 @@ use std::path::Path;
 pub const BUILTIN_SCENES: &[(&str, &str)] = &[
     ("fig1", include_str!("../../scenes/fig1.toml")),
     ("fig1_masses", include_str!("../../scenes/fig1_masses.toml")),
+    (
+        "fig1_schemes",
+        include_str!("../../scenes/fig1_schemes.toml"),
+    ),
     ("fig2", include_str!("../../scenes/fig2.toml")),
     (
         "fig2_reversed",
@@ -36,6 +40,10 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         include_str!("../../scenes/courant_sweep_schemes.toml"),
     ),
     (
+        "courant_sweep_own_limits",
+        include_str!("../../scenes/courant_sweep_own_limits.toml"),
+    ),
+    (
         "stability_extremes",
         include_str!("../../scenes/stability_extremes.toml"),
     ),
@@ -46,6 +54,10 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
     (
         "stability_park",
         include_str!("../../scenes/stability_park.toml"),
+    ),
+    (
+        "stability_noh_bathe",
+        include_str!("../../scenes/stability_noh_bathe.toml"),
     ),
     ("fig1_si", include_str!("../../scenes/fig1_si.toml")),
     ("long_run", include_str!("../../scenes/long_run.toml")),

@@ -5,9 +5,7 @@ use super::dispersion::DispersionCase;
 use super::expectation::{Expectation, Finding};
 use super::reference::Reference;
 use super::spectrum::SpectrumCase;
-use courant_solver::{
-    CentralDifference, CriticalStep, Model, OutputRequest, SchemeLimit, TimePlan,
-};
+use courant_solver::{CriticalStep, Integration, Model, OutputRequest, SchemeLimit, TimePlan};
 
 /// A validated scene.
 #[derive(Debug, Clone)]
@@ -43,15 +41,16 @@ pub struct Case {
     pub name: String,
     /// The model.
     pub model: Model,
-    /// The integrator with its final time step.
-    pub integrator: CentralDifference,
+    /// The scheme and its run settings, with the final time step.
+    pub integrator: Integration,
     /// The time-step plan.
     pub plan: TimePlan,
     /// What to record.
     pub request: OutputRequest,
     /// Critical-step estimates of the model.
     pub critical: CriticalStep,
-    /// The stability limit of the case's scheme (CD's `2/omega_max` or Park's `alpha_e <= 1`).
+    /// The stability limit of the case's scheme (CD's `2/omega_max`, Park's `alpha_e <= 1`,
+    /// Noh-Bathe's `Omega_crit(p)/omega_max`, ...).
     pub limit: SchemeLimit,
     /// Analytic reference, if the scene names one.
     pub reference: Option<Reference>,

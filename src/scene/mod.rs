@@ -11,7 +11,8 @@
 //! scene that can run, and bad input is a [`SceneError`] naming the file, line, column and key.
 //!
 //! - [`parse`] reads a file and dispatches by study kind: [`time_stepping`] (with [`geometry`],
-//!   [`material`], [`bar`], [`stepping`], [`outputs`]), [`spectrum`], [`dispersion`],
+//!   [`material`], [`bar`], [`stepping`] with [`scheme_keys`] (schemes by their registry names,
+//!   with the parameters they declare), [`outputs`]), [`spectrum`], [`dispersion`],
 //!   [`contact`]; [`expectation`] reads `[[expect]]`; [`reference`](mod@reference) binds a case to its analytic
 //!   reference in `courant-references` (validated against the model, evaluated by `compare`).
 //! - [`magnitude`]: the range of magnitudes inputs and derived scales may take, so that no
@@ -42,6 +43,7 @@ pub mod outputs;
 pub mod parse;
 pub mod reference;
 pub mod schema;
+pub mod scheme_keys;
 pub mod spectrum;
 pub mod stepping;
 pub mod studies;

@@ -6,9 +6,11 @@ use super::error::{SceneError, Source, collect_all};
 use super::expectation::{ExpectContext, Finding, Study, expectation, finding};
 use super::geometry::Geometry;
 use super::schema::{RawContactScene, RawFinding, RawHeader, RawScene};
+use super::scheme_keys::{SchemeKey, split_off};
 use super::work::Work;
 use super::{contact, dispersion, names, spectrum, time_stepping};
 use courant_solver::MassKind;
+use serde::Deserialize;
 use toml::Spanned;
 
 /// Unknown keys reported in one pass, at most.
@@ -36,8 +38,12 @@ fn parse_once(name: &str, file: &str, text: &str) -> Result<Scene, SceneError> {
         let raw: RawContactScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
         return build_contact(name, &src, raw);
     }
-    let raw: RawScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
-    build(name, &src, raw)
+    // The schemes' parameters leave [integrator] first; the rest is read with its spans.
+    let mut document = toml::de::DeTable::parse(text).map_err(|e| src.from_toml(&e))?;
+    let scheme_keys = split_off(&src, &table, document.get_mut())?;
+    let raw = RawScene::deserialize(toml::de::Deserializer::from(document))
+        .map_err(|e| src.from_toml(&e))?;
+    build(name, &src, raw, &scheme_keys)
 }
 
 impl Scene {
@@ -107,7 +113,12 @@ fn check_header(src: &Source, header: &RawHeader) -> Result<(), SceneError> {
     Ok(())
 }
 
-fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
+fn build(
+    name: &str,
+    src: &Source,
+    raw: RawScene,
+    scheme_keys: &[SchemeKey],
+) -> Result<Scene, SceneError> {
     check_header(src, &raw.scene)?;
     let geometry = Geometry::read(src, &raw)?;
     if raw.spectrum.is_some() || raw.dispersion.is_some() {
@@ -168,7 +179,7 @@ fn build(name: &str, src: &Source, raw: RawScene) -> Result<Scene, SceneError> {
         );
     }
     budget::time_stepping_validation(src, &raw, &geometry.element_counts)?;
-    let (cases, expectations) = time_stepping::build(src, &raw, &geometry)?;
+    let (cases, expectations) = time_stepping::build(src, &raw, &geometry, scheme_keys)?;
     let stepping = raw.integrator.as_ref().and_then(|i| {
         i.courant
             .as_ref()

@@ -281,16 +281,29 @@ pub enum RawStart {
     ThreeLevel,
 }
 
+/// The keys of `[integrator]` itself (the fields of [`RawIntegrator`]); every other key of the
+/// table is a parameter of its schemes, declared by their registry entries
+/// (`courant_solver::schemes::REGISTRY`; `theta` and `park_variant` for Park, `p` for
+/// Noh-Bathe), taken out before the table is read (`super::scheme_keys`).
+pub const INTEGRATOR_KEYS: &[&str] = &[
+    "scheme",
+    "mass",
+    "courant_unit",
+    "keep_step",
+    "courant",
+    "dt",
+    "start",
+    "allow_unstable",
+    "blowup_energy_ratio",
+];
+
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawIntegrator {
-    /// Scheme or schemes (one case each): `central-difference` (or `cd`), `park-lts` (Park's
-    /// scheme with local time stepping), `park-global` (without). Default `central-difference`.
+    /// Scheme or schemes (one case each), by their registry names: `cd` (or
+    /// `central-difference`), `park-lts` (Park's scheme with local time stepping), `park-global`
+    /// (without), `noh-bathe`, ... (`courant list --schemes`). Default `central-difference`.
     pub scheme: Option<Spanned<OneOrManyStrings>>,
-    /// Park's blend `theta` (default 1/2).
-    pub theta: Option<Spanned<f64>>,
-    /// Park's element acceleration: `free` (default, the seed's formula) or `incremental`.
-    pub park_variant: Option<Spanned<String>>,
     /// Mass matrix or matrices (one case each): `lmm`, `cmm`, `amm`, `rmm` (beta = 1/2), or
     /// `amm(beta)`, `rmm(beta)`. Default `lmm`.
     pub mass: Option<Spanned<OneOrManyStrings>>,

@@ -5,8 +5,16 @@ use super::error::{SceneError, Source, positive};
 use super::mass::parse_mass;
 use super::outputs::Outputs;
 use super::schema::{RawCourantUnit, RawIntegrator, RawStart};
-use courant_solver::{MassKind, ParkOptions, ParkVariant, StabilityPolicy, Start, TimePlan};
+use super::scheme_keys::SchemeKey;
+use courant_solver::integrator::{ParameterValue, SchemeEntry};
+use courant_solver::schemes;
+use courant_solver::{MassKind, Scheme, StabilityPolicy, Start, TimePlan};
 use std::ops::Range;
+use std::sync::Arc;
+
+/// A scheme of a scene: its registry name (the case-name prefix) and the scheme with its
+/// parameters.
+pub(super) type NamedScheme = (&'static str, Arc<dyn Scheme>);
 
 /// The integrator settings of a time-stepping scene.
 pub(super) struct Stepping {
@@ -19,14 +27,18 @@ pub(super) struct Stepping {
     /// `keep_step = true`: the step is kept exactly, output times snap to it.
     pub(super) keep_step: bool,
     pub(super) masses: Vec<MassKind>,
-    /// (case-name prefix, Park options or `None` for CD).
-    pub(super) schemes: Vec<(&'static str, Option<ParkOptions>)>,
+    /// (case-name prefix: the registry name, the scheme with its parameters).
+    pub(super) schemes: Vec<NamedScheme>,
     pub(super) start: Start,
     pub(super) stability: StabilityPolicy,
 }
 
 impl Stepping {
-    pub(super) fn read(src: &Source, raw: &RawIntegrator) -> Result<Self, SceneError> {
+    pub(super) fn read(
+        src: &Source,
+        raw: &RawIntegrator,
+        scheme_keys: &[SchemeKey],
+    ) -> Result<Self, SceneError> {
         let (key, spanned, by_courant) = match (&raw.courant, &raw.dt) {
             (Some(c), None) => ("integrator.courant", c, true),
             (None, Some(d)) => ("integrator.dt", d, false),
@@ -93,90 +105,7 @@ impl Stepping {
             allow_unstable: raw.allow_unstable,
             blowup_energy_ratio,
         };
-        let theta = match &raw.theta {
-            None => 0.5,
-            Some(t) if (0.0..=1.0).contains(t.get_ref()) => *t.get_ref(),
-            Some(t) => {
-                return Err(src.error(
-                    Some(t.span()),
-                    "integrator.theta",
-                    format!("{} must lie in [0, 1]", t.get_ref()),
-                ));
-            }
-        };
-        let variant = match raw
-            .park_variant
-            .as_ref()
-            .map(|v| (v.get_ref().as_str(), v.span()))
-        {
-            None | Some(("free", _)) => ParkVariant::Free,
-            Some(("incremental", _)) => ParkVariant::Incremental,
-            Some((other, span)) => {
-                return Err(src.error(
-                    Some(span),
-                    "integrator.park_variant",
-                    format!("\"{other}\" is not one of free, incremental"),
-                ));
-            }
-        };
-        let labels = raw
-            .scheme
-            .as_ref()
-            .map(|s| s.get_ref().values())
-            .unwrap_or_else(|| vec!["central-difference".into()]);
-        let scheme_span = raw.scheme.as_ref().map(|s| s.span());
-        if labels.is_empty() {
-            return Err(src.error(
-                scheme_span,
-                "integrator.scheme",
-                "the list is empty; give at least one scheme",
-            ));
-        }
-        let schemes = labels
-            .iter()
-            .map(|label| match label.as_str() {
-                "central-difference" | "cd" => Ok(("cd", None)),
-                "park-lts" => Ok((
-                    "park-lts",
-                    Some(ParkOptions {
-                        theta,
-                        variant,
-                        local_stepping: true,
-                    }),
-                )),
-                "park-global" => Ok((
-                    "park-global",
-                    Some(ParkOptions {
-                        theta,
-                        variant,
-                        local_stepping: false,
-                    }),
-                )),
-                other => Err(src.error(
-                    scheme_span.clone(),
-                    "integrator.scheme",
-                    format!(
-                        "\"{other}\" is not one of central-difference (cd), park-lts, park-global"
-                    ),
-                )),
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        if !schemes.iter().any(|s| s.1.is_some())
-            && (raw.theta.is_some() || raw.park_variant.is_some())
-        {
-            return Err(src.error(
-                scheme_span,
-                "integrator",
-                "`theta` and `park_variant` apply only to the park-lts and park-global schemes",
-            ));
-        }
-        if schemes.iter().any(|s| s.1.is_some()) && masses.iter().any(|m| *m != MassKind::Lumped) {
-            return Err(src.error(
-                scheme_span,
-                "integrator.scheme",
-                "Park's scheme runs with the lumped mass only",
-            ));
-        }
+        let schemes = schemes(src, raw, scheme_keys, &masses, start)?;
         let unit = match (&raw.courant_unit, by_courant) {
             (None, _) => RawCourantUnit::StiffestElement,
             (Some(u), true) => *u.get_ref(),
@@ -202,6 +131,91 @@ impl Stepping {
             stability,
         })
     }
+}
+
+/// The schemes of `integrator.scheme`, by their registry names, each built with the parameter
+/// keys it declares; a key no listed scheme declares, a value that breaks its rule, or a mass or
+/// start a scheme does not run with is an error at its line.
+fn schemes(
+    src: &Source,
+    raw: &RawIntegrator,
+    scheme_keys: &[SchemeKey],
+    masses: &[MassKind],
+    start: Start,
+) -> Result<Vec<NamedScheme>, SceneError> {
+    let labels = raw
+        .scheme
+        .as_ref()
+        .map(|s| s.get_ref().values())
+        .unwrap_or_else(|| vec!["central-difference".into()]);
+    let scheme_span = raw.scheme.as_ref().map(|s| s.span());
+    if labels.is_empty() {
+        return Err(src.error(
+            scheme_span,
+            "integrator.scheme",
+            "the list is empty; give at least one scheme",
+        ));
+    }
+    let entries: Vec<&'static SchemeEntry> = labels
+        .iter()
+        .map(|label| {
+            schemes::find(label).ok_or_else(|| {
+                src.error(
+                    scheme_span.clone(),
+                    "integrator.scheme",
+                    format!("\"{label}\" is not one of {}", schemes::names()),
+                )
+            })
+        })
+        .collect::<Result<_, _>>()?;
+    if let Some(unclaimed) = scheme_keys
+        .iter()
+        .find(|k| !entries.iter().any(|e| e.parameter(&k.key).is_some()))
+    {
+        let declared: Vec<String> = entries
+            .iter()
+            .map(|e| match e.parameters {
+                [] => format!("{} takes none", e.name),
+                ps => format!(
+                    "{}: {}",
+                    e.name,
+                    ps.iter().map(|p| p.key).collect::<Vec<_>>().join(", ")
+                ),
+            })
+            .collect();
+        return Err(src.error(
+            Some(unclaimed.span.clone()),
+            &format!("integrator.{}", unclaimed.key),
+            format!(
+                "unknown field `{}`: neither a key of [integrator] nor a parameter of its schemes \
+                 ({}); `courant list --schemes` lists every scheme's parameters",
+                unclaimed.key,
+                declared.join("; ")
+            ),
+        ));
+    }
+    let given: Vec<(String, ParameterValue)> = scheme_keys
+        .iter()
+        .map(|k| (k.key.clone(), k.value.clone()))
+        .collect();
+    entries
+        .into_iter()
+        .map(|entry| {
+            let scheme = entry.build_with(&given).map_err(|e| {
+                let span = scheme_keys
+                    .iter()
+                    .find(|k| k.key == e.key)
+                    .map(|k| k.span.clone());
+                src.error(span, &format!("integrator.{}", e.key), e.to_string())
+            })?;
+            for &mass in masses {
+                scheme.check_settings(mass, start).map_err(|e| {
+                    src.error(scheme_span.clone(), "integrator.scheme", e.to_string())
+                })?;
+            }
+            Ok((entry.name, scheme))
+        })
+        .collect()
 }
 
 /// The plan of a `keep_step` case: the step as given, end and profile times snapped to their

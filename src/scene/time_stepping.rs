@@ -10,8 +10,9 @@ use super::mass::mass_name;
 use super::outputs::Outputs;
 use super::reference::Reference;
 use super::schema::{RawCourantUnit, RawScene, RawTimeUnit};
+use super::scheme_keys::SchemeKey;
 use super::stepping::{Stepping, keep_step_plan};
-use courant_solver::{CentralDifference, CriticalStep, OutputRequest};
+use courant_solver::{CriticalStep, Integration, OutputRequest};
 
 /// Samples kept by default for histories and energy logs: every step up to this many steps,
 /// then every `ceil(steps / MAX_SAMPLES)`-th step.
@@ -25,6 +26,7 @@ pub(super) fn build(
     src: &Source,
     raw: &RawScene,
     geometry: &Geometry,
+    scheme_keys: &[SchemeKey],
 ) -> Result<(Vec<Case>, Vec<Expectation>), SceneError> {
     let Some(integrator) = &raw.integrator else {
         return Err(src.error(
@@ -33,7 +35,7 @@ pub(super) fn build(
             "is required: give [integrator] with `courant` or `dt`",
         ));
     };
-    let stepping = Stepping::read(src, integrator)?;
+    let stepping = Stepping::read(src, integrator, scheme_keys)?;
     let transit = geometry.transit_time();
     let outputs = Outputs::read(src, &raw.output, transit)?;
 
@@ -47,19 +49,16 @@ pub(super) fn build(
         };
         let history_nodes = outputs.history_nodes(src, &model)?;
         let (stiffest, element_dt) = model.bar().stiffest_element();
-        for (&(scheme_name, park), &mass) in stepping
+        for ((scheme_name, scheme), &mass) in stepping
             .schemes
             .iter()
             .flat_map(|s| stepping.masses.iter().map(move |m| (s, m)))
         {
             // The scheme's own limit on this mesh, once per (scheme, mass), when the Courant
-            // numbers are multiples of it: CD's 2/omega_max (a Sturm bisection), Park's
-            // min_e h_e/c_e.
-            let exact_limit = match (stepping.by_courant, stepping.unit, park) {
-                (true, RawCourantUnit::Exact, Some(_)) => {
-                    Some(courant_solver::ParkScheme::limit_step(&model))
-                }
-                (true, RawCourantUnit::Exact, None) => {
+            // numbers are multiples of it (from the exact critical steps of the mass: a Sturm
+            // bisection).
+            let exact_limit = match (stepping.by_courant, stepping.unit) {
+                (true, RawCourantUnit::Exact) => {
                     let operator =
                         courant_solver::MassOperator::new(&model, mass).map_err(|e| {
                             src.error(Some(stepping.span.clone()), stepping.key, e.to_string())
@@ -67,7 +66,7 @@ pub(super) fn build(
                     let critical = CriticalStep::of(&model, mass, &operator).map_err(|e| {
                         src.error(Some(stepping.span.clone()), stepping.key, e.to_string())
                     })?;
-                    Some(critical.exact)
+                    Some(scheme.limit(&model, &critical).dt())
                 }
                 _ => None,
             };
@@ -114,12 +113,12 @@ pub(super) fn build(
                     courant_solver::plan(nominal_dt, &outputs.profile_times, outputs.end_time)
                         .map_err(|e| fail(e.to_string()))?
                 };
-                let integrator = CentralDifference {
+                let integrator = Integration {
                     dt: plan.dt,
+                    mass,
                     start: stepping.start,
                     stability: stepping.stability,
-                    mass,
-                    park,
+                    scheme: scheme.clone(),
                 };
                 let critical = integrator.check_stability(&model).map_err(|e| match &e {
                     courant_solver::RunError::Unstable(u) => {

@@ -155,6 +155,6 @@ pub use output::{ContactProfile, ContactRequest, ContactRun, ContactSample};
 pub use penalty::{MassPenalty, Penalty};
 pub use problem::{ContactKind, ContactNode, ContactProblem};
 pub use run::ContactIntegrator;
-pub use scheme::ContactScheme;
+pub use scheme::{CONTACT_SCHEMES, ContactScheme, ContactSchemeEntry};
 pub use stability::{ContactCriticalStep, ContactPencil, LIMIT_TIE, StepLimit};
 pub use stepper::ContactStepper;

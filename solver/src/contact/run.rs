@@ -7,8 +7,8 @@ use super::problem::ContactProblem;
 use super::scheme::ContactScheme;
 use super::stability::ContactCriticalStep;
 use super::stepper::ContactStepper;
-use crate::central_difference::StabilityPolicy;
 use crate::error::{DivergenceError, InputError};
+use crate::integrator::StabilityPolicy;
 use crate::model::Model;
 
 /// Contact integrator: step, scheme and stability policy.
@@ -69,7 +69,7 @@ impl ContactIntegrator {
     /// [`ContactError::Diverged`] when an allowed unstable run blows up: the energy of the real
     /// masses, `kinetic + strain`, exceeds `blowup_energy_ratio` times the largest of its
     /// initial value, the external work and the loads' one-step impulse energy (as
-    /// [`crate::central_difference`]'s guard). Contact is passive: a stable scheme can only keep
+    /// the shared time loop's guard ([`crate::integrator`])). Contact is passive: a stable scheme can only keep
     /// or dissipate energy, so on an impact a ratio of ten already detects an unstable one.
     /// The penalty terms are left out: the spring energy of a first-step penetration
     /// `k_s (dt v0)^2/2` grows without bound with `k_s` even when the run is stable.

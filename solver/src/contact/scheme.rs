@@ -5,6 +5,49 @@ use super::penalty::Penalty;
 use super::problem::ContactProblem;
 use crate::error::InputError;
 
+/// What `courant list --schemes` says of a contact scheme: its name in a contact scene's
+/// `[contact] schemes`, what it is, the `[contact]` keys that set it, and its source.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ContactSchemeEntry {
+    /// Name in `[contact] schemes`.
+    pub name: &'static str,
+    /// One line: what it is.
+    pub summary: &'static str,
+    /// The `[contact]` keys that set it.
+    pub parameters: &'static [&'static str],
+    /// Where it comes from.
+    pub source: &'static str,
+}
+
+/// The contact schemes, in the order of [`ContactScheme`]'s variants. Each is the registry's
+/// `cd` stepper on the bulk plus an O(1) contact momentum per level (module docs).
+pub const CONTACT_SCHEMES: &[ContactSchemeEntry] = &[
+    ContactSchemeEntry {
+        name: "cd-penalty",
+        summary: "central difference with the stiffness penalty k_s",
+        parameters: &["beta_s"],
+        source: "Kolman et al. (seed) eq. 17; methods.md §7",
+    },
+    ContactSchemeEntry {
+        name: "cd-bipenalty",
+        summary: "central difference with stiffness and mass penalties (K_p, M_p)",
+        parameters: &["beta_s", "ratio or beta_m"],
+        source: "Kopacka et al., IJNME 113 (2018) (the seed's ref. [9]); methods.md §7",
+    },
+    ContactSchemeEntry {
+        name: "predictor-corrector",
+        summary: "the seed's stabilized predictor-corrector: contact from the predicted gap, corrected with (M + M_p)^-1",
+        parameters: &["beta_s", "ratio or beta_m"],
+        source: "Kolman et al. (seed), flowchart after \"Wu\" (attribution unverified); methods.md §7",
+    },
+    ContactSchemeEntry {
+        name: "lagrange-multiplier",
+        summary: "forward-increment Lagrange multiplier: the predicted gap made exactly zero",
+        parameters: &[],
+        source: "Carpenter, Taylor, Katona, IJNME 32 (1991) 103-128",
+    },
+];
+
 /// A contact scheme. All run on the lumped central-difference bulk (half-step form).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ContactScheme {

@@ -1,13 +1,16 @@
-//! The contact time loop's state: the per-body lumped kernels, their loads and the O(1) contact
-//! update of every level (module docs of [`crate::contact`], "The level update"), with the
+//! The contact time loop's state: the per-body bulk steppers (central difference with the lumped
+//! mass, the registry's `cd` stepper, stepped through the [`Integrator`] interface), their loads
+//! and the O(1) contact update of every level (module docs of [`crate::contact`], "The level update"), with the
 //! energies and momenta a run records. It does not check stability or record anything.
 
 use super::output::{ContactProfile, ContactSample};
 use super::problem::ContactProblem;
 use super::scheme::{ContactScheme, LevelInput, LevelUpdate, level_update};
 use crate::error::InputError;
+use crate::integrator::Integrator;
 use crate::kernel::LumpedCentralDifference;
 use crate::model::Model;
+use crate::schemes::central_difference::LumpedStepper;
 
 /// Loads and contact force of one body, as the kernel takes them.
 #[derive(Debug, Clone)]
@@ -68,7 +71,7 @@ pub struct ContactStepper<'a> {
     scheme: ContactScheme,
     dt: f64,
     step: usize,
-    kernels: Vec<LumpedCentralDifference>,
+    kernels: Vec<LumpedStepper>,
     bodies: Vec<BodyForces>,
     /// Slot of each contact node in its body's forces.
     contact_slots: [usize; 2],
@@ -144,7 +147,9 @@ impl<'a> ContactStepper<'a> {
                     .map(|(m, v)| m * v * v)
                     .sum::<f64>();
             strain += model.strain_energy(u0);
-            kernels.push(LumpedCentralDifference::new(model, dt, u0, &v_half));
+            kernels.push(LumpedStepper::from_kernel(LumpedCentralDifference::new(
+                model, dt, u0, &v_half,
+            )));
         }
         let relative_velocity: f64 = nodes
             .iter()
@@ -221,8 +226,14 @@ impl<'a> ContactStepper<'a> {
             self.bodies[c.body].forces[self.contact_slots[i]].1 += c.sign * update.impulse / dt;
         }
         let (mut kinetic, mut staggered, mut strain) = (0.0, 0.0, 0.0);
-        for (kernel, forces) in self.kernels.iter_mut().zip(&self.bodies) {
-            let e = kernel.step_with_energy(&forces.forces);
+        for ((kernel, forces), model) in self
+            .kernels
+            .iter_mut()
+            .zip(&self.bodies)
+            .zip(problem.bodies())
+        {
+            // The contact momentum rides on the loads at t^n: the bulk step is cd's.
+            let e = kernel.step(model, t - dt, &forces.forces);
             kinetic += e.kinetic;
             staggered += e.kinetic_staggered;
             strain += e.strain;

@@ -4,7 +4,7 @@
 //! **Enters:** a lumped [`Model`](crate::Model), the global step `dt` and [`ParkOptions`].
 //! **Leaves:** the state `u^n`, `v^n`, `a^n` and the energies of each step
 //! ([`StepEnergy`](crate::kernel::StepEnergy)). It must not know the run loop, its outputs or the
-//! stability policy ([`crate::central_difference`] drives it), nor any I/O.
+//! stability policy (the shared time loop drives it through [`crate::schemes::park`]), nor any I/O.
 //!
 //! Files: `options` (what the user chooses), `scheme` ([`ParkScheme`]: the per-element constants
 //! from the model, the loads, the AVX2 dispatch), `folded` (the folded step as one blocked sweep).

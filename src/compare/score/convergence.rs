@@ -19,7 +19,7 @@ const MEASURED: ConvergenceStudy = ConvergenceStudy {
     bands: [None; 3],
 };
 
-/// The report's study of `case` of `scene`: same scene, mass kind, scheme (Park's options),
+/// The report's study of `case` of `scene`: same scene, mass kind, scheme (its label, with its parameters),
 /// Courant number and first profile time.
 pub fn study_of(scene: &Scene, case: &Case) -> Option<ConvergenceStudy> {
     let courant = |c: &Case| c.integrator.dt / c.critical.element_transit;
@@ -31,7 +31,7 @@ pub fn study_of(scene: &Scene, case: &Case) -> Option<ConvergenceStudy> {
             let Ok(derived) = s.scene() else { return false };
             derived.cases.first().is_some_and(|c| {
                 c.integrator.mass == case.integrator.mass
-                    && c.integrator.park == case.integrator.park
+                    && c.integrator.scheme.label() == case.integrator.scheme.label()
                     && (courant(c) - courant(case)).abs() <= 1e-9 * courant(case)
                     && first(c)
                         .zip(first(case))

@@ -69,11 +69,43 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
     },
     WorkPrecisionStudy {
         name: "fig2_schemes",
-        title: "Fig. 2 graded bar at t = 0.5 T, CD and Park (Co = 0.5)",
+        title: "Fig. 2 graded bar at t = 0.5 T, CD, Park and Noh-Bathe (Co = 0.5)",
         scene: "fig2",
         replacements: &[
             ("elements = 100", "elements = [50, 100, 200, 400]"),
             ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
+        ],
+        contact_meshes: &[],
+        variants: &[],
+        error: STRESS_L1,
+    },
+    WorkPrecisionStudy {
+        name: "fig1_schemes",
+        title: "Fig. 1 bar at t = 0.5 T, CD, Park (local stepping) and Noh-Bathe at 0.9 of each one's exact limit",
+        scene: "fig1_schemes",
+        replacements: &[
+            (
+                "elements = 100",
+                "elements = [50, 100, 200, 400, 800, 1600]",
+            ),
+            ("courant = [1.0, 0.5]", "courant = 0.9"),
+            ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
+            ("history_points = [0.0, 0.5]", "history_points = []"),
+        ],
+        contact_meshes: &[],
+        variants: &[],
+        error: STRESS_L1,
+    },
+    WorkPrecisionStudy {
+        name: "fig2_own_limits",
+        title: "Fig. 2 graded bar at t = 0.5 T, CD, Park (local stepping) and Noh-Bathe at 0.9 of each one's exact limit",
+        scene: "courant_sweep_own_limits",
+        replacements: &[
+            ("elements = 100", "elements = [50, 100, 200, 400]"),
+            (
+                "courant = [0.1, 0.25, 0.5, 0.75, 0.9, 1.0]",
+                "courant = 0.9",
+            ),
         ],
         contact_meshes: &[],
         variants: &[],

@@ -1,8 +1,8 @@
 //! What a run records: the request checked against the model, and the stress profiles and node
 //! histories of each level.
 
+use super::contract::Integrator;
 use super::settings::OutputRequest;
-use super::step_kernel::Kernel;
 use crate::error::InputError;
 use crate::model::Model;
 use crate::output::{HistorySample, RunOutput, StressProfile};
@@ -34,11 +34,11 @@ pub(super) fn validate_request(
     Ok(())
 }
 
-/// Record profiles and histories at step `n` (state `u^n`, `v^{n+1/2}` in the kernel).
+/// Record profiles and histories at step `n` (the stepper's current level).
 #[allow(clippy::too_many_arguments)]
-pub(super) fn record<'a>(
+pub(super) fn record<'a, I: Integrator>(
     model: &Model,
-    kernel: &Kernel,
+    kernel: &I,
     step: usize,
     time: f64,
     initial_velocity: &[f64],

@@ -1,0 +1,175 @@
+//! [`Scheme`]: a scheme with its parameters set, as a registry builds it and a run holds it
+//! (object-safe: it runs the shared time loop compiled for its own [`super::Integrator`]), and
+//! [`Integration`]: everything a run is told (scheme, mass, step, start, stability policy).
+
+use super::limit::SchemeLimit;
+use super::record::validate_request;
+use super::settings::{OutputRequest, StabilityPolicy, Start};
+use crate::error::{InputError, RunError, UnstableStepError};
+use crate::mass::{MassKind, MassOperator};
+use crate::model::Model;
+use crate::output::RunOutput;
+use crate::stability::CriticalStep;
+use std::sync::Arc;
+
+/// What the time loop is given besides the scheme's parameters.
+#[derive(Debug)]
+pub struct RunSetup<'a> {
+    /// The model.
+    pub model: &'a Model,
+    /// The time step.
+    pub dt: f64,
+    /// Start procedure.
+    pub start: Start,
+    /// Stability policy (the guard's ratio; unstable runs allowed).
+    pub stability: StabilityPolicy,
+    /// The assembled mass.
+    pub mass: MassOperator,
+    /// Steps to take.
+    pub steps: usize,
+    /// What to record.
+    pub request: &'a OutputRequest,
+}
+
+/// A scheme with its parameters, ready to run on any model (what a registry entry builds from
+/// a scene's keys).
+pub trait Scheme: std::fmt::Debug + Send + Sync {
+    /// The registry name, e.g. `noh-bathe`.
+    fn name(&self) -> &'static str;
+
+    /// The scheme and its parameters as outputs name it, e.g. `noh-bathe p=0.54`.
+    fn label(&self) -> String;
+
+    /// Internal-force evaluations `K u` per step (element-level or assembled): the scheme's cost
+    /// per step in units of central difference's one.
+    fn force_evaluations(&self) -> usize;
+
+    /// Refuse a mass kind or start procedure the scheme does not run with.
+    ///
+    /// # Errors
+    /// [`InputError`] naming the setting and the rule.
+    fn check_settings(&self, mass: MassKind, start: Start) -> Result<(), InputError>;
+
+    /// The stability limit on `model`, given the critical steps of its mass.
+    fn limit(&self, model: &Model, critical: &CriticalStep) -> SchemeLimit;
+
+    /// Integrate: build the scheme's [`super::Integrator`] and run the shared time loop
+    /// ([`super::time_loop::run`]) with it.
+    ///
+    /// # Errors
+    /// As [`Integration::run`].
+    fn run(&self, setup: RunSetup<'_>) -> Result<RunOutput, RunError>;
+}
+
+/// Everything a run is told: the scheme (with its parameters), the mass, the step, the start and
+/// the stability policy.
+#[derive(Debug, Clone)]
+pub struct Integration {
+    /// Time step.
+    pub dt: f64,
+    /// Mass matrix.
+    pub mass: MassKind,
+    /// Start procedure.
+    pub start: Start,
+    /// Stability guard.
+    pub stability: StabilityPolicy,
+    /// The scheme.
+    pub scheme: Arc<dyn Scheme>,
+}
+
+impl Integration {
+    /// `scheme` with step `dt`, the lumped mass, the half-step start and the default guard.
+    pub fn new(dt: f64, scheme: Arc<dyn Scheme>) -> Self {
+        Self {
+            dt,
+            mass: MassKind::Lumped,
+            start: Start::HalfStep,
+            stability: StabilityPolicy::default(),
+            scheme,
+        }
+    }
+
+    /// The critical steps of the mass, after refusing `dt` above the scheme's limit
+    /// ([`Scheme::limit`]) with the relative allowance [`crate::time_step::ROUNDING_SLACK`] of
+    /// the time plan (so that Co = 1 on a free-free uniform bar, where `dt = dt_crit`, is
+    /// accepted after the plan's rounding), unless unstable runs are allowed.
+    ///
+    /// # Errors
+    /// [`RunError::Input`] for settings the scheme does not take, [`RunError::Unstable`] above
+    /// the limit.
+    pub fn check_stability(&self, model: &Model) -> Result<CriticalStep, RunError> {
+        self.scheme.check_settings(self.mass, self.start)?;
+        let operator = MassOperator::new(model, self.mass)?;
+        self.check_stability_with(model, &operator)
+    }
+
+    /// The scheme's limit on `model`, given the critical steps of its mass (from
+    /// [`Integration::check_stability`]).
+    pub fn limit(&self, model: &Model, critical: &CriticalStep) -> SchemeLimit {
+        self.scheme.limit(model, critical)
+    }
+
+    fn check_stability_with(
+        &self,
+        model: &Model,
+        operator: &MassOperator,
+    ) -> Result<CriticalStep, RunError> {
+        let critical = CriticalStep::of(model, self.mass, operator).map_err(InputError::from)?;
+        if self.stability.allow_unstable {
+            return Ok(critical);
+        }
+        let limit = self.limit(model, &critical);
+        if self.dt > limit.dt() * (1.0 + crate::time_step::ROUNDING_SLACK) {
+            return Err(UnstableStepError {
+                dt: self.dt,
+                dt_crit: limit.dt(),
+                limit: limit.name(),
+                courant: model.bar().courant_number(self.dt),
+                element: critical.controlling_element,
+                element_dt: critical.element_transit,
+            }
+            .into());
+        }
+        Ok(critical)
+    }
+
+    /// Integrate `steps` steps from the model's initial state.
+    ///
+    /// # Errors
+    /// [`RunError::Input`] for bad parameters, [`RunError::Unstable`] above the limit (unless
+    /// allowed), [`RunError::Diverged`] (with everything recorded before) when an allowed
+    /// unstable run blows up.
+    pub fn run(
+        &self,
+        model: &Model,
+        steps: usize,
+        request: &OutputRequest,
+    ) -> Result<RunOutput, RunError> {
+        crate::mesh::positive("dt", self.dt)?;
+        validate_request(model, steps, request)?;
+        self.scheme.check_settings(self.mass, self.start)?;
+        let operator = MassOperator::new(model, self.mass)?;
+        self.check_stability_with(model, &operator)?;
+        self.scheme.run(RunSetup {
+            model,
+            dt: self.dt,
+            start: self.start,
+            stability: self.stability,
+            mass: operator,
+            steps,
+            request,
+        })
+    }
+}
+
+/// The error of a scheme that runs with the lumped mass only.
+pub fn lumped_only(scheme: &str, mass: MassKind) -> Result<(), InputError> {
+    if mass == MassKind::Lumped {
+        Ok(())
+    } else {
+        Err(InputError::Other(format!(
+            "{scheme} runs with the lumped mass only, not {}",
+            mass.label()
+        )))
+    }
+}
