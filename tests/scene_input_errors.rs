@@ -234,7 +234,7 @@ fn the_minimal_scene_is_valid_and_uses_the_documented_defaults() {
     "scheme = \"park-lts\"\ncourant = 1.002\nkeep_step = true",
     18,
     "integrator.courant",
-    "with park-lts (dt_crit = 1.000000e-1, alpha_e <= 1)"
+    "with park-lts-free theta=0.5 (dt_crit = 1.000000e-1, alpha_e <= 1)"
 )]
 fn bad_input_names_line_key_and_rule(
     #[case] find: &str,

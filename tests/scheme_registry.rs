@@ -149,10 +149,10 @@ fn mixed_schemes_each_take_their_own_keys() {
     "the three-level start is central difference's"
 )]
 #[case::table_as_a_parameter(
-    "scheme = \"noh-bathe\"\np = [0.5]",
+    "scheme = \"noh-bathe\"\np = { value = 0.5 }",
     1,
     "integrator.p",
-    "a number or a word in quotes"
+    "a number, a word in quotes, or a list of them"
 )]
 fn bad_scheme_input_names_line_key_and_rule(
     #[case] integrator: &str,

@@ -9,7 +9,7 @@ use courant_solver::schemes::REGISTRY;
 /// The listing, one block per scheme.
 pub fn listing() -> String {
     let mut out = String::from(
-        "Time-stepping schemes ([integrator] scheme = [...]; parameters are keys of [integrator]):\n",
+        "Time-stepping schemes ([integrator] scheme = [...]; parameters are keys of [integrator], a list of values gives one case each):\n",
     );
     for entry in REGISTRY {
         let aliases = if entry.aliases.is_empty() {

@@ -10,6 +10,7 @@ use super::contact::{ContactResult, DURATION_UNDEFINED, ENERGY_RATIO_UNDEFINED, 
 use super::norms::ErrorNorms;
 use super::outcome::SceneOutcome;
 use super::spectrum::SpectrumResult;
+use super::stress_difference::{ProfileView, stress_difference};
 use super::verdict::{Measured, Verdict};
 use crate::results::case::Status;
 use crate::scene::cases::Scene;
@@ -146,7 +147,7 @@ fn relative<R: Named>(
     let Some(reference) = all.iter().find(|x| x.name() == other) else {
         return Measured::Missing(format!("no result for {other}"));
     };
-    if e.metric == Metric::ForceHistoryDifference {
+    if e.metric.compares_cases() {
         return value(e, r, Some(reference));
     }
     ratio(value(e, r, None), value(e, reference, None), other)
@@ -167,7 +168,7 @@ pub fn ratio(a: Measured, b: Measured, other: &str) -> Measured {
 }
 
 /// A time-stepping metric of one case.
-fn case_value(e: &Expectation, result: &CaseResult, _: Option<&CaseResult>) -> Measured {
+fn case_value(e: &Expectation, result: &CaseResult, other: Option<&CaseResult>) -> Measured {
     let norm_of = |pick: fn(&ErrorNorms) -> Option<f64>| -> Measured {
         let selected: Vec<Option<f64>> = result
             .profiles
@@ -205,6 +206,24 @@ fn case_value(e: &Expectation, result: &CaseResult, _: Option<&CaseResult>) -> M
             Measured::Value(result.critical.element / result.critical.exact)
         }
         Metric::CriticalCourant => Measured::Value(result.courant * result.limit.dt() / result.dt),
+        Metric::StressDifference => match other {
+            Some(other) => {
+                fn views(r: &CaseResult, at: Option<f64>) -> Vec<ProfileView<'_>> {
+                    r.profiles
+                        .iter()
+                        .filter(|p| at_time(at, p.time, r.dt))
+                        .map(|p| ProfileView {
+                            time: p.time,
+                            x: &p.x,
+                            stress: &p.stress,
+                        })
+                        .collect()
+                }
+                stress_difference(&views(result, e.at), &views(other, e.at), 0.5 * result.dt)
+                    .map_or_else(Measured::Missing, Measured::Value)
+            }
+            None => Measured::Missing("needs relative_to".into()),
+        },
         _ => Measured::Missing("not a time-stepping metric".into()),
     }
 }

@@ -41,6 +41,7 @@ pub mod score;
 pub mod spectrum;
 pub mod stability;
 pub mod stability_verdicts;
+pub mod stress_difference;
 pub mod study_tables;
 pub mod sweep;
 pub mod tables;

@@ -62,7 +62,8 @@ pub struct Verdict {
 
 impl Verdict {
     /// The metric as measured: `l1`, `l1 / co0.5` (a ratio to another case),
-    /// `force_history_difference vs <case>`, `mass_deviation rmm0.5 vs amm0.5`.
+    /// `force_history_difference vs <case>`, `stress_difference vs <case>`,
+    /// `mass_deviation rmm0.5 vs amm0.5`.
     pub fn metric_label(&self) -> String {
         let name = match self.force {
             Some(force) => format!("{} ({})", self.metric.name(), force.label()),
@@ -70,7 +71,7 @@ impl Verdict {
         };
         match (&self.relative_to, self.masses) {
             (_, Some((a, b))) => format!("{name} {} vs {}", mass_name(a), mass_name(b)),
-            (Some(other), _) if self.metric == Metric::ForceHistoryDifference => {
+            (Some(other), _) if self.metric.compares_cases() => {
                 format!("{name} vs {other}")
             }
             (Some(other), _) => format!("{name} / {other}"),

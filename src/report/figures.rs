@@ -22,6 +22,8 @@ use crate::scene::cases::Scene;
 /// drawable point).
 pub fn scene_figures(scene: &Scene, outcome: &SceneOutcome) -> Vec<(String, String, String)> {
     let mut figures = Vec::new();
+    // A parameter sweep's summary first: the profiles of its many cases follow.
+    figures.extend(super::parameter_figures::parameter_figures(scene, outcome));
     profile_figures(scene, outcome, &mut figures);
     // Spectra: relative frequency error per mode for each mass kind.
     for s in &outcome.spectra {

@@ -29,6 +29,7 @@ pub mod html;
 pub mod markdown;
 pub mod numbers;
 pub mod other_codes;
+pub mod parameter_figures;
 pub mod plot;
 pub mod scenes;
 pub mod stability;

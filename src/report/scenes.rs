@@ -12,8 +12,13 @@ use crate::scene::cases::Scene;
 pub fn section(scene: &Scene, outcome: &SceneOutcome) -> Page {
     let mut page = Page::default();
     page.push(Block::Heading(2, scene.name.clone()));
+    let stop = if scene.description.ends_with(['.', '!', '?']) {
+        ""
+    } else {
+        "."
+    };
     page.push(Block::Paragraph(format!(
-        "{} Source of truth: {}.",
+        "{}{stop} Source of truth: {}.",
         scene.description, scene.source
     )));
     for (svg_name, caption, svg) in scene_figures(scene, outcome) {

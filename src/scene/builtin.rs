@@ -14,6 +14,7 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         include_str!("../../scenes/fig1_schemes.toml"),
     ),
     ("fig2", include_str!("../../scenes/fig2.toml")),
+    ("fig2_theta", include_str!("../../scenes/fig2_theta.toml")),
     (
         "fig2_reversed",
         include_str!("../../scenes/fig2_reversed.toml"),
@@ -62,6 +63,10 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
     ("fig1_si", include_str!("../../scenes/fig1_si.toml")),
     ("long_run", include_str!("../../scenes/long_run.toml")),
     ("graded_1e4", include_str!("../../scenes/graded_1e4.toml")),
+    (
+        "graded_1e4_long",
+        include_str!("../../scenes/graded_1e4_long.toml"),
+    ),
     ("layered_1e4", include_str!("../../scenes/layered_1e4.toml")),
     (
         "contact_courant_sweep",

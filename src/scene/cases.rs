@@ -59,4 +59,7 @@ pub struct Case {
     /// The scene states its times in transit times (`[output] time_unit = "transit"`): reports
     /// show them as `t/T`.
     pub times_in_transits: bool,
+    /// The scheme parameters the scene lists (a sweep, `theta = [0, 0.5, 1]`) with this case's
+    /// value of each; empty when none is a list.
+    pub swept: Vec<(String, courant_solver::integrator::ParameterValue)>,
 }

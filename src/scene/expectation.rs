@@ -54,6 +54,10 @@ pub enum Metric {
     /// Contact, against the case `relative_to`: `max_k |F(t_k) - F_ref(t_k)| / F1` over the
     /// common samples, F1 the exact first plateau: how far two force histories differ.
     ForceHistoryDifference,
+    /// Time stepping, against the case `relative_to`: the largest stress difference of the two
+    /// runs over the peak of the other, at their common profile times
+    /// ([`crate::compare::stress_difference`]).
+    StressDifference,
     /// Time stepping and contact: the critical Courant number of the case's scheme on its mesh
     /// (CD: `2/omega_max`; Park: `alpha_e <= 1`; contact: the applicable exact limit), in units of
     /// the stiffest element's transit.
@@ -85,6 +89,11 @@ const METRICS: &[(Metric, &str, Study)] = &[
     (Metric::EnergyLost, "energy_lost", Study::TimeStepping),
     (Metric::EnergyBalance, "energy_balance", Study::TimeStepping),
     (Metric::Diverged, "diverged", Study::TimeStepping),
+    (
+        Metric::StressDifference,
+        "stress_difference",
+        Study::TimeStepping,
+    ),
     (
         Metric::ElementBoundRatio,
         "element_bound_ratio",
@@ -187,6 +196,15 @@ impl Metric {
                 self,
                 Metric::Diverged | Metric::CriticalCourant | Metric::Stability
             ) && study == Study::Contact)
+    }
+
+    /// True for metrics that compare a case with the case `relative_to` themselves (rather
+    /// than the ratio of their two values).
+    pub fn compares_cases(self) -> bool {
+        matches!(
+            self,
+            Metric::ForceHistoryDifference | Metric::StressDifference
+        )
     }
 
     /// True for metrics measured on profiles (they need a reference).
@@ -486,10 +504,11 @@ pub(super) fn expectation(
                 metric.name()
             )));
         }
-        (None, Metric::ForceHistoryDifference) => {
-            return Err(fail(
-                "metric \"force_history_difference\" needs `relative_to`: the case whose force history it is compared with".into(),
-            ));
+        (None, m) if m.compares_cases() => {
+            return Err(fail(format!(
+                "metric \"{}\" needs `relative_to`: the case it is compared with",
+                m.name()
+            )));
         }
         (Some(other), _) if !names.contains(other) => {
             return Err(fail(format!(

@@ -1,7 +1,8 @@
 //! The keys of a scene's `[integrator]` that are not the table's own: the parameters of its
 //! schemes (`theta`, `park_variant`, `p`, ...), taken out of the document before it is read into
 //! [`RawScene`](super::schema::RawScene) and checked against the registry's declarations in
-//! [`super::stepping`] (a key no listed scheme declares is an error naming its line).
+//! [`super::stepping`] (a key no listed scheme declares is an error naming its line). A key given
+//! as a list (`theta = [0, 0.25, 0.5]`) is a sweep: one case per value.
 
 use super::error::{SceneError, Source};
 use super::schema::INTEGRATOR_KEYS;
@@ -16,8 +17,10 @@ pub struct SchemeKey {
     pub key: String,
     /// Where it is (the key's span).
     pub span: Range<usize>,
-    /// Its value.
-    pub value: ParameterValue,
+    /// Its values: one, or the values of a list (a sweep, one case each).
+    pub values: Vec<ParameterValue>,
+    /// Given as a list: the value is part of each case's name (`theta0.25`).
+    pub listed: bool,
 }
 
 /// Remove from `document`'s `[integrator]` every key that is not one of [`INTEGRATOR_KEYS`] and
@@ -47,22 +50,36 @@ pub fn split_off(
         if INTEGRATOR_KEYS.contains(&name) {
             continue;
         }
-        let value = match values.get(name) {
-            Some(toml::Value::Float(x)) => ParameterValue::Number(*x),
-            Some(toml::Value::Integer(i)) => ParameterValue::Number(*i as f64),
-            Some(toml::Value::String(s)) => ParameterValue::Text(s.clone()),
-            _ => {
-                return Err(src.error(
-                    Some(spanned.span()),
-                    &format!("integrator.{name}"),
-                    "a scheme parameter is a number or a word in quotes",
-                ));
+        let bad = |rule: &str| src.error(Some(spanned.span()), &format!("integrator.{name}"), rule);
+        let (values, listed) = match values.get(name) {
+            Some(toml::Value::Array(list)) => {
+                let values: Option<Vec<ParameterValue>> = list.iter().map(scalar).collect();
+                match values {
+                    None => {
+                        return Err(bad(
+                            "a list of scheme parameter values holds numbers or words in quotes",
+                        ));
+                    }
+                    Some(v) if v.is_empty() => {
+                        return Err(bad("the list is empty; give at least one value"));
+                    }
+                    Some(v) => (v, true),
+                }
             }
+            value => match value.and_then(scalar) {
+                Some(v) => (vec![v], false),
+                None => {
+                    return Err(bad(
+                        "a scheme parameter is a number, a word in quotes, or a list of them (one case each)",
+                    ));
+                }
+            },
         };
         keys.push(SchemeKey {
             key: name.to_string(),
             span: key.span(),
-            value,
+            values,
+            listed,
         });
     }
     for key in &keys {
@@ -70,4 +87,14 @@ pub fn split_off(
     }
     keys.sort_by_key(|k| k.span.start);
     Ok(keys)
+}
+
+/// A number or a word, else `None`.
+fn scalar(value: &toml::Value) -> Option<ParameterValue> {
+    match value {
+        toml::Value::Float(x) => Some(ParameterValue::Number(*x)),
+        toml::Value::Integer(i) => Some(ParameterValue::Number(*i as f64)),
+        toml::Value::String(s) => Some(ParameterValue::Text(s.clone())),
+        _ => None,
+    }
 }

@@ -12,9 +12,16 @@ use courant_solver::{MassKind, Scheme, StabilityPolicy, Start, TimePlan};
 use std::ops::Range;
 use std::sync::Arc;
 
-/// A scheme of a scene: its registry name (the case-name prefix) and the scheme with its
-/// parameters.
-pub(super) type NamedScheme = (&'static str, Arc<dyn Scheme>);
+/// A scheme of a scene with one value of each of its parameters.
+pub(super) struct NamedScheme {
+    /// The case-name prefix: the registry name when the scene lists several schemes, then one
+    /// token per listed parameter (`theta0.25`, or the word itself: `incremental`); may be empty.
+    pub(super) prefix: String,
+    /// The scheme with its parameters.
+    pub(super) scheme: Arc<dyn Scheme>,
+    /// The values of the listed parameters it declares (a parameter sweep), in file order.
+    pub(super) swept: Vec<(String, ParameterValue)>,
+}
 
 /// The integrator settings of a time-stepping scene.
 pub(super) struct Stepping {
@@ -27,7 +34,7 @@ pub(super) struct Stepping {
     /// `keep_step = true`: the step is kept exactly, output times snap to it.
     pub(super) keep_step: bool,
     pub(super) masses: Vec<MassKind>,
-    /// (case-name prefix: the registry name, the scheme with its parameters).
+    /// Every scheme with every combination of its listed parameters' values.
     pub(super) schemes: Vec<NamedScheme>,
     pub(super) start: Start,
     pub(super) stability: StabilityPolicy,
@@ -194,14 +201,15 @@ fn schemes(
             ),
         ));
     }
-    let given: Vec<(String, ParameterValue)> = scheme_keys
-        .iter()
-        .map(|k| (k.key.clone(), k.value.clone()))
-        .collect();
-    entries
-        .into_iter()
-        .map(|entry| {
-            let scheme = entry.build_with(&given).map_err(|e| {
+    let several = entries.len() > 1;
+    let mut named = Vec::new();
+    for entry in entries {
+        let own: Vec<&SchemeKey> = scheme_keys
+            .iter()
+            .filter(|k| entry.parameter(&k.key).is_some())
+            .collect();
+        for combination in combinations(&own) {
+            let scheme = entry.build_with(&combination).map_err(|e| {
                 let span = scheme_keys
                     .iter()
                     .find(|k| k.key == e.key)
@@ -213,9 +221,42 @@ fn schemes(
                     src.error(scheme_span.clone(), "integrator.scheme", e.to_string())
                 })?;
             }
-            Ok((entry.name, scheme))
-        })
-        .collect()
+            let swept: Vec<(String, ParameterValue)> = combination
+                .into_iter()
+                .filter(|(k, _)| own.iter().any(|o| o.listed && &o.key == k))
+                .collect();
+            let prefix: Vec<String> = several
+                .then(|| entry.name.to_string())
+                .into_iter()
+                .chain(swept.iter().map(|(k, v)| match v {
+                    ParameterValue::Number(x) => format!("{k}{}", super::names::number(*x)),
+                    ParameterValue::Text(word) => word.clone(),
+                }))
+                .collect();
+            named.push(NamedScheme {
+                prefix: prefix.join("-"),
+                scheme,
+                swept,
+            });
+        }
+    }
+    Ok(named)
+}
+
+/// Every combination of one value per key (the cartesian product of the listed keys' values;
+/// one combination when no key is a list), keys in file order.
+fn combinations(keys: &[&SchemeKey]) -> Vec<Vec<(String, ParameterValue)>> {
+    keys.iter().fold(vec![Vec::new()], |done, key| {
+        done.iter()
+            .flat_map(|partial| {
+                key.values.iter().map(move |v| {
+                    let mut next = partial.clone();
+                    next.push((key.key.clone(), v.clone()));
+                    next
+                })
+            })
+            .collect()
+    })
 }
 
 /// The plan of a `keep_step` case: the step as given, end and profile times snapped to their

@@ -49,7 +49,7 @@ pub(super) fn build(
         };
         let history_nodes = outputs.history_nodes(src, &model)?;
         let (stiffest, element_dt) = model.bar().stiffest_element();
-        for ((scheme_name, scheme), &mass) in stepping
+        for (named, &mass) in stepping
             .schemes
             .iter()
             .flat_map(|s| stepping.masses.iter().map(move |m| (s, m)))
@@ -66,7 +66,7 @@ pub(super) fn build(
                     let critical = CriticalStep::of(&model, mass, &operator).map_err(|e| {
                         src.error(Some(stepping.span.clone()), stepping.key, e.to_string())
                     })?;
-                    Some(scheme.limit(&model, &critical).dt())
+                    Some(named.scheme.limit(&model, &critical).dt())
                 }
                 _ => None,
             };
@@ -75,8 +75,8 @@ pub(super) fn build(
                 if geometry.element_counts.len() > 1 {
                     case_name += &format!("n{elements}-");
                 }
-                if stepping.schemes.len() > 1 {
-                    case_name += &format!("{scheme_name}-");
+                if !named.prefix.is_empty() {
+                    case_name += &format!("{}-", named.prefix);
                 }
                 if stepping.masses.len() > 1 {
                     case_name += &format!("{}-", mass_name(mass));
@@ -118,7 +118,7 @@ pub(super) fn build(
                     mass,
                     start: stepping.start,
                     stability: stepping.stability,
-                    scheme: scheme.clone(),
+                    scheme: named.scheme.clone(),
                 };
                 let critical = integrator.check_stability(&model).map_err(|e| match &e {
                     courant_solver::RunError::Unstable(u) => {
@@ -137,10 +137,11 @@ pub(super) fn build(
                         };
                         fail(format!(
                             "asked {asked}{became}: Courant number {:.6} (stiffest element {stiffest}, h/c = {element_dt:.6e}) \
-                             is above the critical {:.6} of {} with {scheme_name} (dt_crit = {:.6e}, {}); lower it or set allow_unstable = true",
+                             is above the critical {:.6} of {} with {} (dt_crit = {:.6e}, {}); lower it or set allow_unstable = true",
                             u.courant,
                             u.dt_crit / element_dt,
                             mass.label(),
+                            named.scheme.label(),
                             u.dt_crit,
                             u.limit
                         ))
@@ -174,6 +175,7 @@ pub(super) fn build(
                     limit,
                     reference: reference.clone(),
                     transit_time: transit,
+                    swept: named.swept.clone(),
                     times_in_transits: raw.output.time_unit == RawTimeUnit::Transit,
                 });
             }

@@ -34,7 +34,7 @@ const PARAMETERS: &[Parameter] = &[
         key: "park_variant",
         default: ParameterDefault::Text("free"),
         rule: "must be one of free, incremental",
-        meaning: "element acceleration: free (the seed's formula) or incremental (keeps statics static)",
+        meaning: "element acceleration: free (the seed's formula; creates energy over long runs under a sustained load on graded meshes) or incremental (keeps statics static, dissipative: pick it for long runs)",
     },
 ];
 

@@ -14,6 +14,7 @@ use super::outcome::{Scored, ScoredCase, ScoredForce, Skipped};
 use crate::compare::contact::ForceErrors;
 use crate::compare::expect::{at_time, judge, ratio};
 use crate::compare::norms::ErrorNorms;
+use crate::compare::stress_difference::{ProfileView, stress_difference};
 use crate::compare::verdict::{Measured, Verdict};
 use crate::scene::cases::Scene;
 use crate::scene::expectation::{Expectation, Metric};
@@ -52,6 +53,9 @@ pub fn evaluate(scene: &Scene, cases: &[ScoredCase]) -> (Vec<Verdict>, Vec<Skipp
             };
             let measured = match (other, expectation.metric) {
                 (Some(o), Metric::ForceHistoryDifference) => force_history_difference(case, o),
+                (Some(o), Metric::StressDifference) => {
+                    file_stress_difference(case, o, expectation.at)
+                }
                 (Some(o), _) => measure(scene, expectation, case)
                     .and_then(|a| measure(scene, expectation, o).map(|b| ratio(a, b, &o.case))),
                 (None, _) => measure(scene, expectation, case),
@@ -63,6 +67,33 @@ pub fn evaluate(scene: &Scene, cases: &[ScoredCase]) -> (Vec<Verdict>, Vec<Skipp
         }
     }
     (verdicts, skipped)
+}
+
+/// The stress difference of two files' profiles ([`stress_difference`]), at their common
+/// profile times (to half of `a`'s step, or exactly without one), at `at` only when given.
+fn file_stress_difference(
+    a: &ScoredCase,
+    b: &ScoredCase,
+    at: Option<f64>,
+) -> Result<Measured, String> {
+    fn views(c: &ScoredCase, at: Option<f64>) -> Result<Vec<ProfileView<'_>>, String> {
+        let dt = c.dt.map_or(0.0, |d| d.0);
+        match &c.scored {
+            Scored::Profiles { profiles, .. } => Ok(profiles
+                .iter()
+                .filter(|p| at_time(at, p.time, dt))
+                .map(|p| ProfileView {
+                    time: p.time,
+                    x: &p.x,
+                    stress: &p.stress,
+                })
+                .collect()),
+            _ => Err(format!("{}.csv holds no stress profiles", c.case)),
+        }
+    }
+    let tolerance = a.dt.map_or(0.0, |d| 0.5 * d.0);
+    Ok(stress_difference(&views(a, at)?, &views(b, at)?, tolerance)
+        .map_or_else(Measured::Missing, Measured::Value))
 }
 
 /// `max_k |F_a(t_k) - F_b(t_k)| / F1` over the samples of two files at the same times (bit for
@@ -145,7 +176,9 @@ fn measure(
             Scored::Force(f) => Ok(Measured::Value(errors(f).max_force)),
             _ => Err("the file holds no force history".into()),
         },
-        Metric::ForceHistoryDifference => Err("needs relative_to".into()),
+        Metric::ForceHistoryDifference | Metric::StressDifference => {
+            Err("needs relative_to".into())
+        }
         Metric::ClosedFormDeviation => match &case.scored {
             Scored::Spectrum(s) => Ok(Measured::Value(s.deviation)),
             _ => Err("the file holds no spectrum".into()),
