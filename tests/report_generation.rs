@@ -8,7 +8,8 @@
 //! every generated SVG are well-formed XML (checker in
 //! `tests/common/xml.rs`, itself shown to reject malformed markup), the stability section carries
 //! the closed-form contact table for beta_s = 1e6 … 1e12, its deterministic files are identical
-//! from one generation to the next (timings apart), an expectation failure is flagged, and
+//! from one generation to the next (timings apart), no figure has text below 12 px, an
+//! expectation failure is flagged, and
 //! `courant report` replaces the output directory whole.
 
 use courant::pipeline::report_runs::run_for_report;
@@ -228,6 +229,14 @@ fn report_has_sections_tables_and_deterministic_content() {
                 reader.records().all(|r| r.unwrap().len() == width),
                 "{name}: ragged rows"
             );
+        }
+        if name.ends_with(".svg") {
+            // Legible at the 640 px the report shows a chart at: no text below 12 px (ticks,
+            // legends, axis descriptions and titles).
+            for size in text.split("font-size=\"").skip(1) {
+                let px: f64 = size[..size.find('"').unwrap()].parse().unwrap();
+                assert!(px >= 12.0, "{name}: text at {px} px");
+            }
         }
         if !name.starts_with("timing") {
             let other = &b.files.iter().find(|f| &f.0 == name).unwrap().1;

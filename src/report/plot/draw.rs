@@ -1,6 +1,6 @@
 //! Drawing a prepared chart with `plotters`' SVG backend into a string.
 
-use super::layout::{tick_formatter, title_font_size};
+use super::layout::{LABEL_FONT, tick_formatter, title_font_size};
 use super::prepared::{Prepared, clean_text};
 use super::series::{Axes, HEIGHT, PALETTE_SIZE, PlotError, SeriesStyle, WIDTH};
 use plotters::coord::ranged1d::{AsRangedCoord, Ranged, ValueFormatter};
@@ -72,8 +72,8 @@ where
         .y_desc(clean_text(&ctx.axes.y_label))
         .x_label_formatter(&x_fmt)
         .y_label_formatter(&y_fmt)
-        .label_style(("sans-serif", 13))
-        .axis_desc_style(("sans-serif", 15))
+        .label_style(("sans-serif", LABEL_FONT))
+        .axis_desc_style(("sans-serif", LABEL_FONT + 1))
         .light_line_style(RGBColor(235, 235, 235))
         .bold_line_style(RGBColor(205, 205, 205))
         .draw()
@@ -146,7 +146,7 @@ where
     chart
         .configure_series_labels()
         .position(ctx.legend.clone())
-        .label_font(("sans-serif", 13))
+        .label_font(("sans-serif", LABEL_FONT))
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .draw()

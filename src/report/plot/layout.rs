@@ -42,11 +42,22 @@ pub fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
     }
 }
 
-/// Font size of a chart title: 20 px, smaller for long titles so the whole title fits the
-/// 640 px chart (about 0.55 em per character of a sans-serif face), never below 11 px.
+/// What the SVG backend writes as `font-size` per unit of the size it is given (plotters
+/// scales a font size in points to pixels by 0.806: 15 is written 12.1 px).
+pub const PX_PER_FONT_UNIT: f64 = 0.806_451_612_903_225_8;
+
+/// Font size of tick labels and legend entries: 15, written 12.1 px, legible at the 640 px the
+/// report shows a chart at (the axis descriptions are one larger).
+pub const LABEL_FONT: u32 = 15;
+
+/// Font size of a chart title: 20 (16.1 px), smaller for long titles so the whole title fits the
+/// 640 px chart (about 0.55 em per character of a sans-serif face), never below 11 (8.9 px; the
+/// built-in report's titles all fit at 15 or more, 12.1 px: `tests/report_generation.rs`).
 pub fn title_font_size(title: &str) -> u32 {
     let chars = title.chars().count().max(1) as f64;
-    (600.0 / (0.55 * chars)).floor().clamp(11.0, 20.0) as u32
+    (600.0 / (0.55 * PX_PER_FONT_UNIT * chars))
+        .floor()
+        .clamp(11.0, 20.0) as u32
 }
 
 /// Approximate size of the plotting area in pixels (the 640x400 chart less title, labels and
@@ -209,8 +220,8 @@ mod tests {
         assert_eq!(title_font_size("fig1: stress at t = 0.5"), 20);
         let long = "Fig. 2 graded bar on equal-transit-time meshes, lumped CD at Co = 1, t = 0.5 T";
         let size = title_font_size(long);
-        assert_eq!(size, 13);
-        assert!(f64::from(size) * 0.55 * long.chars().count() as f64 <= 600.0);
+        assert_eq!(size, 17);
+        assert!(f64::from(size) * PX_PER_FONT_UNIT * 0.55 * long.chars().count() as f64 <= 600.0);
         assert_eq!(title_font_size(&"x".repeat(500)), 11);
     }
 }

@@ -147,7 +147,7 @@ pub const CONVERGENCE_STUDIES: &[ConvergenceStudy] = &[
     mass_kind_study!("fig1_rmm", "rmm", "RMM(1/2)", "sqrt(2/3)"),
     ConvergenceStudy {
         name: "layered_co1",
-        title: "Two-layer bar (impedance ratio 16) on equal-transit meshes, lumped CD at Co = 1, t = 0.5, 1.2 and 2.6 T",
+        title: "Two-layer bar (impedance ratio 16), equal-transit meshes, CD at Co = 1, t = 0.5/1.2/2.6 T",
         expected: "exact to round-off on every mesh: interfaces at nodes, every element at its own Courant number 1 (methods.md §4); round-off stays below the 1e-14 N^2 of methods.md §3 (3e-10 measured at N = 3200, where that bound is 1e-7)",
         bands: [Some(OrderBand::Exact { max_error: 1e-9 }); 3],
         scene: "layered",

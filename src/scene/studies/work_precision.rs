@@ -52,7 +52,7 @@ const STRESS_L1: &str = "L1 error / |sigma0|";
 pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
     WorkPrecisionStudy {
         name: "fig1_masses",
-        title: "Fig. 1 bar at t = 0.5 T, each mass kind at 0.9 of its critical Courant number (0.875 to 0.9 once the step hits t)",
+        title: "Fig. 1 bar, t = 0.5 T: each mass kind at 0.875-0.9 of its critical Courant number",
         scene: "fig1_masses",
         replacements: &[
             (
@@ -81,7 +81,7 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
     },
     WorkPrecisionStudy {
         name: "fig1_schemes",
-        title: "Fig. 1 bar at t = 0.5 T, CD, Park (local stepping) and Noh-Bathe at 0.9 of each one's exact limit",
+        title: "Fig. 1 bar, t = 0.5 T: CD, Park (local stepping), Noh-Bathe at 0.9 of each one's limit",
         scene: "fig1_schemes",
         replacements: &[
             (
@@ -98,7 +98,7 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
     },
     WorkPrecisionStudy {
         name: "fig2_own_limits",
-        title: "Fig. 2 graded bar at t = 0.5 T, CD, Park (local stepping) and Noh-Bathe at 0.9 of each one's exact limit",
+        title: "Fig. 2 graded bar, t = 0.5 T: CD, Park (local stepping), Noh-Bathe at 0.9 of each limit",
         scene: "courant_sweep_own_limits",
         replacements: &[
             ("elements = 100", "elements = [50, 100, 200, 400]"),
