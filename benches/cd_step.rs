@@ -403,9 +403,80 @@ fn run_loop(c: &mut Criterion) {
     group.finish();
 }
 
+/// The run loop at scale (issue 17, target 1): `Scheme::run` (the shared time loop: the start,
+/// the steps with the energy balance checked every step, the blow-up guard, the work of the
+/// loads, one energy sample at the end, no profiles or histories) on the graded bar of
+/// N = 1e5 (500 steps) and 1e6 (100 steps) elements, for lumped CD (compare with
+/// `lumped_cd_step/step`, the bare kernel), CMM, AMM(1/2), RMM(1/2) (with `mass_kind_step`, their
+/// own step) and Park with local stepping (with `park_step`), each at half its critical Courant
+/// number. The mass is assembled and factored outside the timing (`iter_batched`); the start is
+/// inside. Time per run; ns per node-step = time / (steps (N + 1)).
+fn run_loop_large(c: &mut Criterion) {
+    use courant_solver::integrator::{OutputRequest, RunSetup};
+    use courant_solver::{CentralDifference, MassKind, MassOperator, ParkOptions};
+    let mut group = c.benchmark_group("run_loop_large");
+    group
+        .warm_up_time(Duration::from_secs(1))
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(3));
+    for (n, steps) in [(100_000, 500), (1_000_000, 100)] {
+        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let element_dt = model.bar().stiffest_element().1;
+        let request = OutputRequest {
+            energy_every: steps,
+            history_every: steps,
+            ..OutputRequest::default()
+        };
+        group.throughput(Throughput::Elements((n * steps) as u64));
+        let matrix = |mass: MassKind| CentralDifference {
+            mass,
+            ..CentralDifference::new(0.5 * mass.critical_courant() * element_dt)
+        };
+        for (name, settings) in [
+            ("lmm", CentralDifference::new(0.5 * element_dt)),
+            ("cmm", matrix(MassKind::Consistent)),
+            ("amm0.5", matrix(MassKind::Averaged { beta: 0.5 })),
+            ("rmm0.5", matrix(MassKind::Reciprocal { beta: 0.5 })),
+            (
+                "park-lts",
+                CentralDifference {
+                    park: Some(ParkOptions::default()),
+                    ..CentralDifference::new(0.5 * element_dt)
+                },
+            ),
+        ] {
+            let integration = settings.integration();
+            group.bench_function(BenchmarkId::new(name, n), |b| {
+                b.iter_batched(
+                    || MassOperator::new(&model, integration.mass).unwrap(),
+                    |mass| {
+                        let out = integration
+                            .scheme
+                            .run(RunSetup {
+                                model: black_box(&model),
+                                dt: integration.dt,
+                                start: integration.start,
+                                stability: integration.stability,
+                                mass,
+                                steps,
+                                request: &request,
+                            })
+                            .unwrap();
+                        assert_eq!(out.steps, steps);
+                        out.energy.max_balance_error
+                    },
+                    criterion::BatchSize::LargeInput,
+                )
+            });
+        }
+    }
+    group.finish();
+}
+
 criterion_group!(
     benches,
     run_loop,
+    run_loop_large,
     lumped_cd_step,
     mass_kind_step,
     spectrum_dense,
