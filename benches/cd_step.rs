@@ -32,7 +32,6 @@
 //!           per step), HTML report in target/criterion/report/index.html.
 //! Duration: about a minute (warm-up 1 s and 3 s of measurement per benchmark, 4 s at N = 1e6).
 
-use std::f64::consts::FRAC_PI_2;
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -42,19 +41,7 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 /// Element counts.
 const SIZES: [usize; 3] = [1_000, 100_000, 1_000_000];
 
-/// A smooth, bounded half-step velocity `1e-3 cos(pi x / 2L)`, zero at the fixed right end
-/// (node `n`), so every nodal value stays a normal float.
-fn smooth_half_velocity(n: usize) -> Vec<f64> {
-    (0..=n)
-        .map(|i| {
-            if i == n {
-                0.0
-            } else {
-                1e-3 * (FRAC_PI_2 * i as f64 / n as f64).cos()
-            }
-        })
-        .collect()
-}
+use courant_solver::fixtures::smooth_half_velocity;
 
 /// The graded, loaded, free-fixed bar of `n` elements and its kernel at Courant number 0.5.
 fn graded_kernel(n: usize) -> LumpedCentralDifference {
