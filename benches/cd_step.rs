@@ -399,7 +399,7 @@ fn run_loop(c: &mut Criterion) {
 /// number. The mass is assembled and factored outside the timing (`iter_batched`); the start is
 /// inside. Time per run; ns per node-step = time / (steps (N + 1)).
 fn run_loop_large(c: &mut Criterion) {
-    use courant_solver::integrator::{OutputRequest, RunSetup};
+    use courant_solver::integrator::OutputRequest;
     use courant_solver::{CentralDifference, MassKind, MassOperator, ParkOptions};
     let mut group = c.benchmark_group("run_loop_large");
     group
@@ -438,16 +438,7 @@ fn run_loop_large(c: &mut Criterion) {
                     || MassOperator::new(&model, integration.mass).unwrap(),
                     |mass| {
                         let out = integration
-                            .scheme
-                            .run(RunSetup {
-                                model: black_box(&model),
-                                dt: integration.dt,
-                                start: integration.start,
-                                stability: integration.stability,
-                                mass,
-                                steps,
-                                request: &request,
-                            })
+                            .run_assembled(black_box(&model), steps, &request, mass)
                             .unwrap();
                         assert_eq!(out.steps, steps);
                         out.energy.max_balance_error

@@ -412,22 +412,7 @@ fn lane_sums<const K: usize, D: Copy>(
     f: impl Fn(usize, &mut f64, D) -> [f64; K],
 ) -> [f64; K] {
     let mut lanes = [[0.0; LANES]; K];
-    let whole = x.len() / LANES * LANES;
-    let (body, rest) = x.split_at_mut(whole);
-    for (c, chunk) in body.chunks_exact_mut(LANES).enumerate() {
-        for (l, xi) in chunk.iter_mut().enumerate() {
-            let terms = f(c * LANES + l, xi, data);
-            for (lane, term) in lanes.iter_mut().zip(terms) {
-                lane[l] += term;
-            }
-        }
-    }
-    for (l, xi) in rest.iter_mut().enumerate() {
-        let terms = f(whole + l, xi, data);
-        for (lane, term) in lanes.iter_mut().zip(terms) {
-            lane[l] += term;
-        }
-    }
+    lane_sums_into(x, data, f, &mut lanes.each_mut());
     lanes.map(|lane| lane.iter().sum())
 }
 

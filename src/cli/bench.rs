@@ -23,7 +23,7 @@
 use crate::io::atomic::write_file_atomically;
 use crate::results::table::{Precision, Table};
 use courant_solver::fixtures::{graded_seed_bar, smooth_half_velocity};
-use courant_solver::integrator::{OutputRequest, RunSetup};
+use courant_solver::integrator::OutputRequest;
 use courant_solver::kernel::LumpedCentralDifference;
 use courant_solver::{CentralDifference, MassOperator, Model};
 use std::hint::black_box;
@@ -74,7 +74,7 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
         eprintln!("error: {e}");
         return ExitCode::from(2);
     }
-    println!("cpu:        {}", cpu_name());
+    println!("cpu:        {}", crate::report::timing::cpu());
     println!(
         "node-steps: {:.3e} per repetition, {} repetitions, median reported",
         options.node_steps, options.reps
@@ -232,16 +232,7 @@ fn time_run_loop(model: &Model, options: &BenchOptions) -> Result<f64, String> {
         let mass = MassOperator::new(model, integration.mass).map_err(|e| e.to_string())?;
         let start = Instant::now();
         let out = integration
-            .scheme
-            .run(RunSetup {
-                model,
-                dt: integration.dt,
-                start: integration.start,
-                stability: integration.stability,
-                mass,
-                steps,
-                request: &request,
-            })
+            .run_assembled(model, steps, &request, mass)
             .map_err(|e| e.to_string())?;
         black_box(out.energy.max_balance_error);
         Ok(start.elapsed().as_secs_f64())
@@ -338,21 +329,6 @@ fn fastest_variants(output: &str) -> Vec<(usize, String, f64)> {
         }
     }
     rows
-}
-
-/// The CPU's model name (Linux), or `unknown`.
-fn cpu_name() -> String {
-    let cores = std::thread::available_parallelism().map_or(0, |n| n.get());
-    let name = std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("model name"))
-                .and_then(|l| l.split(':').nth(1))
-                .map(|s| s.trim().to_string())
-        })
-        .unwrap_or_else(|| "unknown".into());
-    format!("{name} ({cores} cores)")
 }
 
 #[cfg(test)]
