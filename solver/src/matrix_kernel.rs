@@ -1,6 +1,7 @@
 //! The central-difference step with a non-diagonal mass (CMM, AMM: a pre-factored, partitioned
 //! tridiagonal solve, [`crate::partitioned_ldl`]; RMM: a tridiagonal product with the assembled
-//! `M^-1`, no solve), O(N) per step, no dense matrix, no allocation.
+//! `M^-1`, no solve), O(N) per step, no dense matrix, no allocation; the passes run in cache
+//! blocks ([`MatrixCentralDifference::step_with_energy`]).
 //!
 //! ```text
 //!   u^{n+1}   = u^n + dt v^{n+1/2}
@@ -49,11 +50,9 @@ pub struct MatrixCentralDifference {
     a: Vec<f64>,
     r: Vec<f64>,
     r_previous: Vec<f64>,
-    /// Element forces padded with a zero at both ends (length N + 2).
-    element_force: Vec<f64>,
     scratch: Vec<f64>,
     staggered: f64,
-    /// Whether the CPU has AVX2 (the blocked reciprocal step then runs its AVX2-compiled copy).
+    /// Whether the CPU has AVX2 (the blocked step then runs its AVX2-compiled copy).
     avx2: bool,
 }
 
@@ -80,7 +79,6 @@ impl MatrixCentralDifference {
             a: a0.to_vec(),
             r: vec![0.0; n],
             r_previous: r0.to_vec(),
-            element_force: vec![0.0; n + 1],
             scratch: vec![0.0; n],
             staggered: staggered0,
             avx2: has_avx2(),
@@ -113,23 +111,28 @@ impl MatrixCentralDifference {
     /// sums (node or element `i` adds to lane `i % LANES`, a fixed order, so the result is
     /// deterministic) so that no pass waits on the latency of one long chain of additions.
     pub fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
-        if matches!(self.mass, MassOperator::Reciprocal { .. }) {
-            self.blocked_reciprocal_step(forces)
-        } else {
-            self.whole_pass_step(forces)
+        #[cfg(target_arch = "x86_64")]
+        if self.avx2 {
+            // SAFETY: `avx2` is set only when the running CPU reports AVX2 support.
+            return unsafe { self.blocked_step_avx2(forces) };
         }
+        self.blocked_step(forces)
     }
 
-    /// The step as whole passes over the arrays (any mass operator).
+    /// The step as whole passes over the arrays (any mass operator): the reference the blocked
+    /// step is tested against.
+    #[cfg(test)]
     fn whole_pass_step(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
         let dt = self.dt;
+        // Element forces padded with a zero at both ends (length N + 2).
+        let mut element_force = vec![0.0; self.u.len() + 1];
         for (u, v) in self.u.iter_mut().zip(&self.v) {
             *u += dt * v;
         }
         // Element forces N_e = k_e (u_{e+1} - u_e) at padded index e + 1 (ghosts stay 0).
         let n = self.u.len();
         let [strain] = lane_sums(
-            &mut self.element_force[1..n],
+            &mut element_force[1..n],
             (&self.stiffness[1..n], &self.u[..]),
             |e, force, (k, u)| {
                 let du = u[e + 1] - u[e];
@@ -138,7 +141,7 @@ impl MatrixCentralDifference {
             },
         );
         // r_i = N_i - N_{i-1} + F_i.
-        for (r, pair) in self.r.iter_mut().zip(self.element_force.windows(2)) {
+        for (r, pair) in self.r.iter_mut().zip(element_force.windows(2)) {
             *r = pair[1] - pair[0];
         }
         for &(node, f) in forces {
@@ -163,43 +166,35 @@ impl MatrixCentralDifference {
         }
     }
 
-    /// [`Self::step_with_energy`] for the reciprocal mass, whose `M^-1` is a tridiagonal product
-    /// (a stencil): the passes run in blocks of [`BLOCK`] nodes, each pass advanced just as far
-    /// as the next one reads (`u` and the element forces one node ahead of the residual, the
-    /// residual one node ahead of `a = M^-1 r`), so a block's intermediate arrays are still in
-    /// L1 when the next pass reads them and a step streams each array about once. Every value
-    /// is computed by the same operations as in whole passes, and each pass's blocks start at
-    /// multiples of [`LANES`], so every term goes to the same lane in the same order:
-    /// bit-identical to the unblocked step (tested).
-    fn blocked_reciprocal_step(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
-        #[cfg(target_arch = "x86_64")]
-        if self.avx2 {
-            // SAFETY: `avx2` is set only when the running CPU reports AVX2 support.
-            return unsafe { self.blocked_reciprocal_step_avx2(forces) };
-        }
-        self.blocked_reciprocal_body(forces)
-    }
-
-    /// The blocked step compiled for AVX2 (no FMA: the same roundings, the same bits).
+    /// [`Self::step_with_energy`] in blocks of [`BLOCK`] nodes: each pass advanced just as far
+    /// as the next one reads (`u` one node ahead of the residual, whose element forces are
+    /// formed in registers, not stored; for the reciprocal mass, whose `M^-1` is a tridiagonal
+    /// product (a stencil), the residual one node ahead of `a = M^-1 r` and the velocity update
+    /// in the same block), so a block's data are still in L1 when the next pass reads them.
+    /// CMM and AMM solve with the whole residual after the blocks, then update `v` in one pass.
+    /// Every value is computed by the same operations as in whole passes, and each pass's
+    /// blocks start at multiples of [`LANES`], so every energy term goes to the same lane in the
+    /// same order: bit-identical to the whole-pass step (tested).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    fn blocked_reciprocal_step_avx2(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
-        self.blocked_reciprocal_body(forces)
+    fn blocked_step_avx2(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
+        self.blocked_step(forces)
     }
 
     #[inline(always)]
-    fn blocked_reciprocal_body(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
-        let MassOperator::Reciprocal { inverse, .. } = &self.mass else {
-            unreachable!("called for the reciprocal mass only")
+    fn blocked_step(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
+        let mass = &self.mass;
+        let reciprocal = match mass {
+            MassOperator::Reciprocal { inverse, .. } => Some((&inverse.diag[..], &inverse.off[..])),
+            _ => None,
         };
         let (dt, n) = (self.dt, self.u.len());
-        let (diag, off) = (&inverse.diag[..], &inverse.off[..]);
         let (u, v, a, r) = (&mut self.u, &mut self.v, &mut self.a, &mut self.r);
         let (k, r_previous) = (&self.stiffness, &self.r_previous);
         let (mut strain, mut increment, mut impulse) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
-        let (mut u_done, mut e_done, mut r_done, mut a_done, mut v_done) = (0, 0, 0, 0, 0);
+        let (mut u_done, mut e_done, mut r_done, mut v_done) = (0, 0, 0, 0);
         let mut next_force = 0;
-        while v_done < n {
+        while r_done < n {
             let v_to = (v_done + BLOCK).min(n);
             let r_to = (v_to + 1).min(n);
             let e_to = r_to.div_ceil(LANES).saturating_mul(LANES).min(n - 1);
@@ -222,22 +217,35 @@ impl MatrixCentralDifference {
                 next_force += 1;
             }
             r_done = r_to;
-            // a = M^-1 r, row by row as `Tridiagonal::apply` forms it.
-            apply_rows(diag, off, r, a, a_done, v_to);
-            a_done = v_to;
-            // v^{n+3/2} = v^{n+1/2} + dt a^{n+1}; the increment and impulse lanes.
-            let (block_r, block_r_previous) = (&r[v_done..v_to], &r_previous[v_done..v_to]);
-            lane_sums_into(
-                &mut v[v_done..v_to],
-                (&a[v_done..v_to], (block_r_previous, block_r)),
-                |i, v, (a, (r_previous, r))| {
-                    let terms = [*v * (r_previous[i] + r[i]), a[i] * r[i]];
-                    *v += dt * a[i];
-                    terms
-                },
-                &mut [&mut increment, &mut impulse],
-            );
+            // Reciprocal mass: a = M^-1 r, row by row as `Tridiagonal::apply` forms it, and v.
+            if let Some((diag, off)) = reciprocal {
+                apply_rows(diag, off, r, a, v_done, v_to);
+                velocity_lanes(
+                    v,
+                    a,
+                    r_previous,
+                    r,
+                    dt,
+                    v_done,
+                    v_to,
+                    [&mut increment, &mut impulse],
+                );
+            }
             v_done = v_to;
+        }
+        if reciprocal.is_none() {
+            // a = M^-1 r (CMM, AMM: the factored solve), then v in one pass.
+            mass.apply_inverse(r, a);
+            velocity_lanes(
+                v,
+                a,
+                r_previous,
+                r,
+                dt,
+                0,
+                n,
+                [&mut increment, &mut impulse],
+            );
         }
         let total = |lanes: [f64; LANES]| lanes.iter().sum::<f64>();
         self.staggered += 0.5 * dt * total(increment);
@@ -277,6 +285,32 @@ fn has_avx2() -> bool {
 
 /// Nodes per block of the blocked reciprocal-mass step (a multiple of [`LANES`]).
 const BLOCK: usize = 512;
+
+/// `v^{n+3/2} = v^{n+1/2} + dt a^{n+1}` for nodes `from..to` (`from` a multiple of [`LANES`]),
+/// adding `v^{n+1/2} (r^n + r^{n+1})` and `a r` to the increment and impulse lanes.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn velocity_lanes(
+    v: &mut [f64],
+    a: &[f64],
+    r_previous: &[f64],
+    r: &[f64],
+    dt: f64,
+    from: usize,
+    to: usize,
+    lanes: [&mut [f64; LANES]; 2],
+) {
+    lane_sums_into(
+        &mut v[from..to],
+        (&a[from..to], (&r_previous[from..to], &r[from..to])),
+        |i, v, (a, (r_previous, r))| {
+            let terms = [*v * (r_previous[i] + r[i]), a[i] * r[i]];
+            *v += dt * a[i];
+            terms
+        },
+        &mut { lanes },
+    );
+}
 
 /// Add `N_e du_e`, `N_e = k[e] du_e`, `du_e = u[e + 1] - u[e]`, of the elements of `k` to lane
 /// `e % LANES` (the slices start at a multiple of [`LANES`] of the whole element array).
@@ -403,6 +437,7 @@ fn lane_sums_into<const K: usize, D: Copy>(
     }
 }
 
+#[cfg(test)]
 /// Update every `x[i]` with `f(i, &mut x[i], data)` and sum each of the `K` terms it returns in
 /// [`LANES`] partial sums, added up in a fixed order at the end.
 #[inline(always)]
@@ -421,9 +456,8 @@ mod tests {
     use super::*;
     use crate::mass::MassKind;
 
-    fn reciprocal_kernel(n: usize) -> MatrixCentralDifference {
+    fn matrix_kernel(n: usize, kind: MassKind) -> MatrixCentralDifference {
         let model = crate::fixtures::graded_seed_bar(n).unwrap();
-        let kind = MassKind::Reciprocal { beta: 0.5 };
         let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
         let v = crate::fixtures::smooth_half_velocity(n);
         let zeros = vec![0.0; n + 1];
@@ -439,7 +473,7 @@ mod tests {
     }
 
     #[test]
-    fn blocked_reciprocal_step_is_bit_identical_to_whole_passes() {
+    fn blocked_step_is_bit_identical_to_whole_passes_for_every_matrix_mass() {
         // Several blocks, loads inside a block, at a block edge and at the last node; and a
         // mesh shorter than a block.
         for (n, forces) in [
@@ -454,18 +488,28 @@ mod tests {
             ),
             (5, vec![(0, 1.0)]),
         ] {
-            let mut blocked = reciprocal_kernel(n);
-            let mut whole = reciprocal_kernel(n);
-            for _ in 0..200 {
-                let a = blocked.blocked_reciprocal_step(&forces);
-                let b = whole.whole_pass_step(&forces);
-                assert_eq!(a, b);
+            for (kind, avx2) in [
+                MassKind::Reciprocal { beta: 0.5 },
+                MassKind::Consistent,
+                MassKind::Averaged { beta: 0.5 },
+            ]
+            .into_iter()
+            .flat_map(|kind| [(kind, false), (kind, has_avx2())])
+            {
+                let mut blocked = matrix_kernel(n, kind);
+                blocked.avx2 = avx2;
+                let mut whole = matrix_kernel(n, kind);
+                for _ in 0..200 {
+                    let a = blocked.step_with_energy(&forces);
+                    let b = whole.whole_pass_step(&forces);
+                    assert_eq!(a, b, "{kind:?}");
+                }
+                assert_eq!((&blocked.u, &blocked.v), (&whole.u, &whole.v));
+                assert_eq!(
+                    (&blocked.a, &blocked.r_previous),
+                    (&whole.a, &whole.r_previous)
+                );
             }
-            assert_eq!((&blocked.u, &blocked.v), (&whole.u, &whole.v));
-            assert_eq!(
-                (&blocked.a, &blocked.r_previous),
-                (&whole.a, &whole.r_previous)
-            );
         }
     }
 }
