@@ -393,7 +393,7 @@ fn run_loop(c: &mut Criterion) {
 /// The run loop at scale (issue 17, target 1): `Scheme::run` (the shared time loop: the start,
 /// the steps with the energy balance checked every step, the blow-up guard, the work of the
 /// loads, one energy sample at the end, no profiles or histories) on the graded bar of
-/// N = 1e5 (500 steps) and 1e6 (100 steps) elements, for lumped CD (compare with
+/// N = 1e5 (1000 steps) and 1e6 (300 steps) elements, for lumped CD (compare with
 /// `lumped_cd_step/step`, the bare kernel), CMM, AMM(1/2), RMM(1/2) (with `mass_kind_step`, their
 /// own step) and Park with local stepping (with `park_step`), each at half its critical Courant
 /// number. The mass is assembled and factored outside the timing (`iter_batched`); the start is
@@ -406,7 +406,7 @@ fn run_loop_large(c: &mut Criterion) {
         .warm_up_time(Duration::from_secs(1))
         .sample_size(10)
         .measurement_time(Duration::from_secs(3));
-    for (n, steps) in [(100_000, 500), (1_000_000, 100)] {
+    for (n, steps) in [(100_000, 1_000), (1_000_000, 300)] {
         let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
         let element_dt = model.bar().stiffest_element().1;
         let request = OutputRequest {
