@@ -9,7 +9,8 @@
 //! Proves the command's shape, never a time (no timed tests): it writes one CSV row per size
 //! with the columns the README names, every measured time positive and every ratio the quotient
 //! of its two columns (to the 4 significant digits written); without the C reference the C
-//! columns stay empty; bad options are refused with exit status 2, naming the option.
+//! columns stay empty; bad options are refused with exit status 2, naming the option; a file
+//! `courant bench` did not write is never replaced.
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -56,6 +57,24 @@ fn bench_writes_one_row_per_size_with_consistent_ratios() {
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 2);
+    // A second run replaces the file it wrote.
+    let again = courant(&[
+        "bench",
+        "--sizes",
+        "200",
+        "--node-steps",
+        "1e3",
+        "--reps",
+        "1",
+        "--no-c",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        again.status.success(),
+        "{}",
+        String::from_utf8_lossy(&again.stderr)
+    );
     for (row, n) in rows.iter().zip(["200", "1000"]) {
         assert_eq!(row[0], n);
         // No C reference: its columns and ratios are empty.
@@ -86,4 +105,25 @@ fn bad_bench_options_are_refused_naming_the_option() {
     assert_eq!(run.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&run.stderr).contains("--sizes: 1 must lie in"));
     assert!(!out.exists());
+}
+
+#[test]
+fn a_file_bench_did_not_write_is_not_replaced() {
+    let out = scratch("foreign").join("bench.csv");
+    std::fs::write(&out, "my own notes\n").unwrap();
+    let run = courant(&[
+        "bench",
+        "--sizes",
+        "200",
+        "--node-steps",
+        "1e3",
+        "--reps",
+        "1",
+        "--no-c",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(run.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&run.stderr).contains("is not a file `courant bench` wrote"));
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "my own notes\n");
 }

@@ -34,6 +34,19 @@ use std::time::Instant;
 /// The C reference, compiled into the binary so that `courant bench` runs from anywhere.
 const C_SOURCE: &str = include_str!("../../benches/c_reference/cd_step.c");
 
+/// The columns of the CSV `courant bench` writes.
+const COLUMNS: [&str; 9] = [
+    "N",
+    "c_variant",
+    "c_ns",
+    "kernel_ns",
+    "kernel_over_c",
+    "kernel_energy_ns",
+    "loop_ns",
+    "loop_over_kernel",
+    "loop_over_c",
+];
+
 /// What `courant bench` measures and where it writes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BenchOptions {
@@ -88,17 +101,7 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
         Ok(c) => println!("C:          {} {}", c.compiler, c.flags),
         Err(e) => println!("C:          not measured: {e}"),
     }
-    let mut table = Table::new(&[
-        "N",
-        "c_variant",
-        "c_ns",
-        "kernel_ns",
-        "kernel_over_c",
-        "kernel_energy_ns",
-        "loop_ns",
-        "loop_over_kernel",
-        "loop_over_c",
-    ]);
+    let mut table = Table::new(&COLUMNS);
     for &n in &options.sizes {
         let measured = graded_seed_bar(n)
             .map_err(|e| e.to_string())
@@ -169,6 +172,25 @@ fn check(options: &BenchOptions) -> Result<(), String> {
     }
     if !(1..=1000).contains(&options.reps) {
         return Err(format!("--reps: {} must lie in 1..=1000", options.reps));
+    }
+    // Only a file `courant bench` wrote is replaced (its header line), never a user's file.
+    let out = &options.out;
+    if out.is_dir() {
+        return Err(format!(
+            "--out: {} is a directory, not a file",
+            out.display()
+        ));
+    }
+    if out.exists() {
+        let first = std::fs::read_to_string(out)
+            .ok()
+            .and_then(|text| text.lines().next().map(String::from));
+        if first.as_deref() != Some(COLUMNS.join(",").as_str()) {
+            return Err(format!(
+                "--out: {} exists and is not a file `courant bench` wrote (its first line is not the bench header); give another path or remove it",
+                out.display()
+            ));
+        }
     }
     Ok(())
 }
