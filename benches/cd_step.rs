@@ -32,7 +32,6 @@
 //!           per step), HTML report in target/criterion/report/index.html.
 //! Duration: about a minute (warm-up 1 s and 3 s of measurement per benchmark, 4 s at N = 1e6).
 
-use std::f64::consts::FRAC_PI_2;
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -42,19 +41,7 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 /// Element counts.
 const SIZES: [usize; 3] = [1_000, 100_000, 1_000_000];
 
-/// A smooth, bounded half-step velocity `1e-3 cos(pi x / 2L)`, zero at the fixed right end
-/// (node `n`), so every nodal value stays a normal float.
-fn smooth_half_velocity(n: usize) -> Vec<f64> {
-    (0..=n)
-        .map(|i| {
-            if i == n {
-                0.0
-            } else {
-                1e-3 * (FRAC_PI_2 * i as f64 / n as f64).cos()
-            }
-        })
-        .collect()
-}
+use courant_solver::fixtures::smooth_half_velocity;
 
 /// The graded, loaded, free-fixed bar of `n` elements and its kernel at Courant number 0.5.
 fn graded_kernel(n: usize) -> LumpedCentralDifference {
@@ -403,9 +390,71 @@ fn run_loop(c: &mut Criterion) {
     group.finish();
 }
 
+/// The run loop at scale (issue 17, target 1): `Scheme::run` (the shared time loop: the start,
+/// the steps with the energy balance checked every step, the blow-up guard, the work of the
+/// loads, one energy sample at the end, no profiles or histories) on the graded bar of
+/// N = 1e5 (1000 steps) and 1e6 (300 steps) elements, for lumped CD (compare with
+/// `lumped_cd_step/step`, the bare kernel), CMM, AMM(1/2), RMM(1/2) (with `mass_kind_step`, their
+/// own step) and Park with local stepping (with `park_step`), each at half its critical Courant
+/// number. The mass is assembled and factored outside the timing (`iter_batched`); the start is
+/// inside. Time per run; ns per node-step = time / (steps (N + 1)).
+fn run_loop_large(c: &mut Criterion) {
+    use courant_solver::integrator::OutputRequest;
+    use courant_solver::{CentralDifference, MassKind, MassOperator, ParkOptions};
+    let mut group = c.benchmark_group("run_loop_large");
+    group
+        .warm_up_time(Duration::from_secs(1))
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(3));
+    for (n, steps) in [(100_000, 1_000), (1_000_000, 300)] {
+        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let element_dt = model.bar().stiffest_element().1;
+        let request = OutputRequest {
+            energy_every: steps,
+            history_every: steps,
+            ..OutputRequest::default()
+        };
+        group.throughput(Throughput::Elements((n * steps) as u64));
+        let matrix = |mass: MassKind| CentralDifference {
+            mass,
+            ..CentralDifference::new(0.5 * mass.critical_courant() * element_dt)
+        };
+        for (name, settings) in [
+            ("lmm", CentralDifference::new(0.5 * element_dt)),
+            ("cmm", matrix(MassKind::Consistent)),
+            ("amm0.5", matrix(MassKind::Averaged { beta: 0.5 })),
+            ("rmm0.5", matrix(MassKind::Reciprocal { beta: 0.5 })),
+            (
+                "park-lts",
+                CentralDifference {
+                    park: Some(ParkOptions::default()),
+                    ..CentralDifference::new(0.5 * element_dt)
+                },
+            ),
+        ] {
+            let integration = settings.integration();
+            group.bench_function(BenchmarkId::new(name, n), |b| {
+                b.iter_batched(
+                    || MassOperator::new(&model, integration.mass).unwrap(),
+                    |mass| {
+                        let out = integration
+                            .run_assembled(black_box(&model), steps, &request, mass)
+                            .unwrap();
+                        assert_eq!(out.steps, steps);
+                        out.energy.max_balance_error
+                    },
+                    criterion::BatchSize::LargeInput,
+                )
+            });
+        }
+    }
+    group.finish();
+}
+
 criterion_group!(
     benches,
     run_loop,
+    run_loop_large,
     lumped_cd_step,
     mass_kind_step,
     spectrum_dense,

@@ -98,6 +98,30 @@ enum Command {
     /// one fails (a verdict, or a file beyond its baseline tolerance), 2 on bad input (nothing
     /// is written then).
     Check(CheckOptions),
+    /// Time the C reference of the lumped central-difference step (its fastest variant, built
+    /// with $CC, default gcc, and $CFLAGS, default -O3 -march=native), courant's kernel and
+    /// courant's run loop side by side on this machine, and write their ratios (CSV) to FILE.
+    ///
+    /// Medians of wall time (ns per node-step) on the graded bar of the benchmarks; a shared
+    /// machine is noisy: repeat when in doubt. Exit status: 0, or 2 on bad options. Without a C
+    /// compiler the C columns stay empty.
+    Bench {
+        /// Element counts, comma-separated.
+        #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000, 1_000_000])]
+        sizes: Vec<usize>,
+        /// Node-steps per repetition.
+        #[arg(long, default_value_t = 5e7)]
+        node_steps: f64,
+        /// Repetitions (the median is reported).
+        #[arg(long, default_value_t = 9)]
+        reps: usize,
+        /// The CSV file written.
+        #[arg(long, value_name = "FILE", default_value = "bench.csv")]
+        out: PathBuf,
+        /// Skip the C reference.
+        #[arg(long)]
+        no_c: bool,
+    },
 }
 
 fn main() -> ExitCode {
@@ -120,5 +144,18 @@ fn main() -> ExitCode {
         }
         Command::Report { scenes, out } => courant::cli::report(&scenes, out.as_deref()),
         Command::Check(options) => courant::cli::check::check(&options),
+        Command::Bench {
+            sizes,
+            node_steps,
+            reps,
+            out,
+            no_c,
+        } => courant::cli::bench::bench(&courant::cli::bench::BenchOptions {
+            sizes,
+            node_steps,
+            reps,
+            out,
+            skip_c: no_c,
+        }),
     }
 }

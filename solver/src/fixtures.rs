@@ -82,3 +82,19 @@ pub fn loaded_wall(
     )?;
     crate::contact::ContactProblem::wall(model, End::Right, gap)
 }
+
+/// The benchmarks' start state (`benches/cd_step.rs`, `courant bench`, and the C reference
+/// `benches/c_reference/cd_step.c`): a smooth, bounded half-step velocity
+/// `1e-3 cos(pi x / 2L)` on the `elements + 1` nodes of the unit bar, zero at the fixed right end,
+/// so that every nodal value stays a normal float however many steps a benchmark takes.
+pub fn smooth_half_velocity(elements: usize) -> Vec<f64> {
+    (0..=elements)
+        .map(|i| {
+            if i == elements {
+                0.0
+            } else {
+                1e-3 * (std::f64::consts::FRAC_PI_2 * i as f64 / elements as f64).cos()
+            }
+        })
+        .collect()
+}

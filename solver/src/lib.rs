@@ -31,6 +31,8 @@ pub mod error;
 pub mod fixtures;
 pub mod integrator;
 pub mod kernel;
+#[cfg(target_arch = "x86_64")]
+mod kernel_avx2;
 pub mod load;
 pub mod mass;
 pub mod matrix_kernel;

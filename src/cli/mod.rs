@@ -4,6 +4,7 @@
 //! Enters: parsed arguments. Leaves: terminal output, files, exit status. The top of the
 //! pipeline: it may use every stage, and no stage uses it.
 
+pub mod bench;
 pub mod check;
 pub mod reference;
 pub mod run;

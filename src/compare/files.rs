@@ -8,9 +8,10 @@ use super::study_tables::{
     sweep_table,
 };
 use super::tables::{
-    energy_table, expectations_table, history_table, norms_table, profile_table, summary_table,
+    PROFILE_COLUMNS, energy_table, expectations_table, history_table, norms_table, profile_rows,
+    summary_table,
 };
-use crate::results::table::{Precision, Table};
+use crate::results::table::{Precision, Table, csv_text};
 
 /// The names of the scene tables a report keeps: `courant report` writes each scene's
 /// deterministic tables under these names (and no others), and a report baseline compares them.
@@ -43,7 +44,10 @@ pub fn scene_files(outcome: &SceneOutcome) -> Vec<(String, String)> {
     let (results, verdicts) = (&outcome.results, &outcome.verdicts);
     let mut files = Vec::new();
     for r in results {
-        files.push((format!("{}.csv", r.case), profile_table(r).to_csv(full)));
+        files.push((
+            format!("{}.csv", r.case),
+            csv_text(&PROFILE_COLUMNS, profile_rows(r), full),
+        ));
         if !r.histories.is_empty() {
             files.push((
                 format!("{}.history.csv", r.case),

@@ -9,24 +9,33 @@ use super::verdict::{Measured, Verdict};
 use crate::results::case::Status;
 use crate::results::table::{Cell, Table};
 
+/// Columns of [`profile_table`].
+pub const PROFILE_COLUMNS: [&str; 6] = ["t", "element", "x", "stress", "reference", "error"];
+
 /// Element stress profiles: `t, element, x, stress, reference, error` (all profile times of
 /// the case, in time order; `reference` and `error` empty without a reference).
 pub fn profile_table(result: &CaseResult) -> Table {
-    let mut table = Table::new(&["t", "element", "x", "stress", "reference", "error"]);
-    for p in &result.profiles {
-        for e in 0..p.stress.len() {
+    let mut table = Table::new(&PROFILE_COLUMNS);
+    profile_rows(result).for_each(|row| table.push(row));
+    table
+}
+
+/// The rows of [`profile_table`], one at a time (`courant run` writes them without holding
+/// the table: at 10^7 elements its cells would take 144 bytes per element).
+pub fn profile_rows(result: &CaseResult) -> impl Iterator<Item = Vec<Cell>> + '_ {
+    result.profiles.iter().flat_map(|p| {
+        (0..p.stress.len()).map(move |e| {
             let reference = p.reference.as_ref().map(|r| r[e]);
-            table.push(vec![
+            vec![
                 p.time.into(),
                 e.into(),
                 p.x[e].into(),
                 p.stress[e].into(),
                 reference.into(),
                 reference.map(|r| p.stress[e] - r).into(),
-            ]);
-        }
-    }
-    table
+            ]
+        })
+    })
 }
 
 /// Nodal histories: `node, x, t, u, u_reference, v, v_reference, a`.

@@ -93,7 +93,7 @@ pub fn timing_files(scenes: &[Scene], runs: &ReportRuns) -> Vec<(String, String)
 }
 
 /// The CPU model and core count, from `/proc/cpuinfo` where there is one.
-fn cpu() -> String {
+pub fn cpu() -> String {
     let model = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {

@@ -135,32 +135,47 @@ impl Table {
 
     /// Render as CSV with a header row.
     pub fn to_csv(&self, precision: Precision) -> String {
-        let mut writer = csv::Writer::from_writer(Vec::new());
-        let mut write = |fields: Vec<String>| {
-            writer
-                .write_record(&fields)
-                .expect("writing CSV to memory cannot fail")
-        };
-        write(self.columns.clone());
-        for row in &self.rows {
-            write(
-                row.iter()
-                    .map(|c| match c {
-                        Cell::Num(x) => precision.format(*x),
-                        Cell::Int(i) => i.to_string(),
-                        Cell::Text(s) => s.clone(),
-                        Cell::Empty => String::new(),
-                    })
-                    .collect(),
-            );
-        }
-        String::from_utf8(
-            writer
-                .into_inner()
-                .expect("in-memory CSV flush cannot fail"),
-        )
-        .expect("CSV of UTF-8 fields is UTF-8")
+        csv_text(&self.columns, self.rows.iter().cloned(), precision)
     }
+}
+
+/// CSV with a header row from `columns` and rows produced one at a time (so a table of
+/// millions of rows need not be held as cells: only its text is), rendered as
+/// [`Table::to_csv`] renders the same rows.
+pub fn csv_text<C: AsRef<str>>(
+    columns: &[C],
+    rows: impl Iterator<Item = Vec<Cell>>,
+    precision: Precision,
+) -> String {
+    let mut writer = csv::Writer::from_writer(Vec::new());
+    let mut write = |fields: &[String]| {
+        writer
+            .write_record(fields)
+            .expect("writing CSV to memory cannot fail")
+    };
+    write(
+        &columns
+            .iter()
+            .map(|c| c.as_ref().to_string())
+            .collect::<Vec<_>>(),
+    );
+    let mut fields = Vec::new();
+    for row in rows {
+        fields.clear();
+        fields.extend(row.into_iter().map(|c| match c {
+            Cell::Num(x) => precision.format(x),
+            Cell::Int(i) => i.to_string(),
+            Cell::Text(s) => s,
+            Cell::Empty => String::new(),
+        }));
+        write(&fields);
+    }
+    String::from_utf8(
+        writer
+            .into_inner()
+            .expect("in-memory CSV flush cannot fail"),
+    )
+    .expect("CSV of UTF-8 fields is UTF-8")
 }
 
 impl Table {

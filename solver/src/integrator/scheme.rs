@@ -150,12 +150,28 @@ impl Integration {
         self.scheme.check_settings(self.mass, self.start)?;
         let operator = MassOperator::new(model, self.mass)?;
         self.check_stability_with(model, &operator)?;
+        self.run_assembled(model, steps, request, operator)
+    }
+
+    /// The time loop of [`Self::run`] with the mass already assembled (`MassOperator::new(model,
+    /// self.mass)`) and the request and step already checked: what the benchmarks time, the
+    /// assembly and the critical step left out.
+    ///
+    /// # Errors
+    /// As [`Self::run`]'s time loop.
+    pub fn run_assembled(
+        &self,
+        model: &Model,
+        steps: usize,
+        request: &OutputRequest,
+        mass: MassOperator,
+    ) -> Result<RunOutput, RunError> {
         self.scheme.run(RunSetup {
             model,
             dt: self.dt,
             start: self.start,
             stability: self.stability,
-            mass: operator,
+            mass,
             steps,
             request,
         })

@@ -1,0 +1,129 @@
+//! Source of truth: issue 17, target 5 (a `courant bench` command that times the C reference,
+//! courant's kernel and its run loop side by side and writes the ratios) and the README's
+//! "Speed" section, which tells a user to run it.
+//!
+//! ```text
+//!   courant bench --sizes 200,1000 --out FILE  ->  stdout table + FILE (CSV, one row per N)
+//! ```
+//!
+//! Proves the command's shape, never a time (no timed tests): it writes one CSV row per size
+//! with the columns the README names, every measured time positive and every ratio the quotient
+//! of its two columns (to the 4 significant digits written); without the C reference the C
+//! columns stay empty; bad options are refused with exit status 2, naming the option; a file
+//! `courant bench` did not write is never replaced.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn courant(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_courant"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("courant-bench-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn bench_writes_one_row_per_size_with_consistent_ratios() {
+    let out = scratch("rows").join("bench.csv");
+    let run = courant(&[
+        "bench",
+        "--sizes",
+        "200,1000",
+        "--node-steps",
+        "2e4",
+        "--reps",
+        "3",
+        "--no-c",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let text = std::fs::read_to_string(&out).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "N,c_variant,c_ns,kernel_ns,kernel_over_c,kernel_energy_ns,loop_ns,loop_over_kernel,loop_over_c"
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2);
+    // A second run replaces the file it wrote.
+    let again = courant(&[
+        "bench",
+        "--sizes",
+        "200",
+        "--node-steps",
+        "1e3",
+        "--reps",
+        "1",
+        "--no-c",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        again.status.success(),
+        "{}",
+        String::from_utf8_lossy(&again.stderr)
+    );
+    for (row, n) in rows.iter().zip(["200", "1000"]) {
+        assert_eq!(row[0], n);
+        // No C reference: its columns and ratios are empty.
+        assert!(row[1].is_empty() && row[2].is_empty() && row[4].is_empty() && row[8].is_empty());
+        let value = |i: usize| row[i].parse::<f64>().unwrap();
+        assert!(value(3) > 0.0 && value(5) > 0.0, "{row:?}");
+        // The loop time is a difference of two runs: it may be noise-small, never the ratio's
+        // inconsistency.
+        let ratio = value(6) / value(3);
+        assert!(
+            (value(7) - ratio).abs() <= 1e-3 * ratio.abs() + 1e-12,
+            "{row:?}"
+        );
+    }
+}
+
+#[test]
+fn bad_bench_options_are_refused_naming_the_option() {
+    let out = scratch("bad").join("bench.csv");
+    let run = courant(&[
+        "bench",
+        "--sizes",
+        "1",
+        "--no-c",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(run.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&run.stderr).contains("--sizes: 1 must lie in"));
+    assert!(!out.exists());
+}
+
+#[test]
+fn a_file_bench_did_not_write_is_not_replaced() {
+    let out = scratch("foreign").join("bench.csv");
+    std::fs::write(&out, "my own notes\n").unwrap();
+    let run = courant(&[
+        "bench",
+        "--sizes",
+        "200",
+        "--node-steps",
+        "1e3",
+        "--reps",
+        "1",
+        "--no-c",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(run.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&run.stderr).contains("is not a file `courant bench` wrote"));
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "my own notes\n");
+}
