@@ -107,7 +107,7 @@ enum Command {
     /// compiler the C columns stay empty.
     Bench {
         /// Element counts, comma-separated.
-        #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000, 1_000_000])]
+        #[arg(long, value_delimiter = ',', default_value = "1000,100000,1000000")]
         sizes: Vec<usize>,
         /// Node-steps per repetition.
         #[arg(long, default_value_t = 5e7)]
