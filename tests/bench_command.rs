@@ -12,22 +12,9 @@
 //! columns stay empty; bad options are refused with exit status 2, naming the option; a file
 //! `courant bench` did not write is never replaced.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn courant(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_courant"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("courant-bench-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+#[path = "common/cli.rs"]
+mod cli;
+use cli::{courant, scratch};
 
 #[test]
 fn bench_writes_one_row_per_size_with_consistent_ratios() {

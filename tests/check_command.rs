@@ -21,22 +21,8 @@
 //! bad scene or a bad tolerance exits 2 and writes neither the JUnit file nor the output
 //! directories.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn courant(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_courant"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("courant-check-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+use std::path::Path;
+use std::process::Output;
 
 fn text(out: &Output) -> String {
     format!(
@@ -54,6 +40,10 @@ fn s(path: &Path) -> &str {
 #[path = "common/xml.rs"]
 mod xml;
 use xml::{Element, parse_xml};
+
+#[path = "common/cli.rs"]
+mod cli;
+use cli::{courant, scratch};
 
 /// Parse a JUnit file and check its nesting and counts; returns the root.
 fn junit(path: &Path) -> Element {

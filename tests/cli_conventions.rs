@@ -10,22 +10,11 @@
 //! writes its figures and tables and says what it found and where `index.html` is.
 
 use std::io::Read;
-use std::path::PathBuf;
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Stdio};
 
-fn courant(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_courant"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("courant-conv-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+#[path = "common/cli.rs"]
+mod cli;
+use cli::{courant, scratch};
 
 #[test]
 fn a_closed_pipe_ends_the_listing_quietly() {

@@ -10,21 +10,12 @@
 //! reference, Park), fig5 (13 contact cases) and fig3 (the stability sweep), only the wall-time
 //! column differs; and a failed expectation fails the command.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
+use std::process::Command;
 
-fn courant(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_courant"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("courant-cli-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
-}
+#[path = "common/cli.rs"]
+mod cli;
+use cli::{courant, scratch};
 
 fn header(path: &Path) -> String {
     std::fs::read_to_string(path)

@@ -10,18 +10,15 @@
 
 use courant::io::atomic::{recover_interrupted, write_dir_atomically};
 use courant::io::manifest::{MANIFEST, manifest_text};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::Duration;
 
-const MARKER: &str = "# previous report (marker)\n";
+#[path = "common/cli.rs"]
+mod cli;
+use cli::scratch;
 
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("courant-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+const MARKER: &str = "# previous report (marker)\n";
 
 /// Entry names of a directory, sorted.
 fn entries(dir: &Path) -> Vec<String> {

@@ -17,6 +17,10 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+#[path = "common/cli.rs"]
+mod cli;
+use cli::scratch;
+
 /// Status 2 comes within this, whatever the input (validation only).
 const REFUSAL_LIMIT: Duration = Duration::from_secs(5);
 
@@ -24,13 +28,6 @@ fn data(file: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/data/robustness")
         .join(file)
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("courant-robust-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 /// `courant ARGS`: exit code, stdout, stderr, wall time.
