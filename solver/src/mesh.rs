@@ -19,7 +19,7 @@ pub struct Mesh {
     lengths: Vec<f64>,
 }
 
-/// Largest number of elements a mesh may have (memory: about 135 bytes per element in a lumped
+/// Largest number of elements a mesh may have (memory: about 110 bytes per element in a lumped
 /// `courant run` with one profile time, measured: `benches/RESULTS.md`).
 pub const MAX_ELEMENTS: usize = 10_000_000;
 

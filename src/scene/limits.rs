@@ -20,8 +20,8 @@ pub struct Limits {
 
 /// Elements of one bar with `--large`: the solver's mesh cap. Measured here (release build,
 /// `benches/bar1e7.toml`, `benches/RESULTS.md`): `courant run --large` of a lumped Fig. 1 bar of
-/// 10^7 elements (validation, 2223 steps, comparison and files) took 89 to 124 s of wall time on
-/// the shared 2-core machine and peaked at 1.34 GB. A bar this size cannot run one transit
+/// 10^7 elements (validation, 2223 steps, comparison and files) took 84 to 124 s of wall time on
+/// the shared 2-core machine and peaked at 1.11 GB. A bar this size cannot run one transit
 /// within the node-step limit (`scene::budget::MAX_NODE_STEPS`), so such runs are short probes
 /// of speed and memory; and validating one takes seconds (10^6 lumped elements validated in 0.47
 /// to 0.9 s here, `scene::budget::MAX_VALIDATED_ELEMENTS`), not the default's quarter second:
