@@ -40,6 +40,11 @@ enum Command {
         /// to DIR/<scene>/.
         #[arg(long, value_name = "DIR")]
         exchange: Option<PathBuf>,
+        /// Opt in to one large run: up to 10^7 elements per bar (the solver's mesh cap) and per
+        /// scene, and the output of one profile time of such a bar, instead of the default 5x10^5
+        /// (chosen so any scene validates in about a second). The node-step limit stays.
+        #[arg(long)]
+        large: bool,
     },
     /// Grade another code's results (the exchange format: DIR/<case>.csv, results.toml) against
     /// a scene's references, with the norms and expectations of `run`, plus diagnostics
@@ -132,7 +137,17 @@ fn main() -> ExitCode {
             scenes,
             out,
             exchange,
-        } => courant::cli::run::run(&scenes, &out, exchange.as_deref()),
+            large,
+        } => courant::cli::run::run(
+            &scenes,
+            &out,
+            exchange.as_deref(),
+            if large {
+                courant::scene::limits::Limits::LARGE
+            } else {
+                courant::scene::limits::Limits::DEFAULT
+            },
+        ),
         Command::Score {
             scene,
             results,

@@ -285,3 +285,74 @@ fn courant_run_exits_2_and_writes_nothing_on_bad_input() {
     assert!(!out.exists(), "nothing may be written on bad input");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The minimal scene with a bar of `elements` and a profile time short enough for the node-step
+/// limit (which `--large` keeps).
+fn with_elements(elements: u64) -> String {
+    broken("elements = 10", &format!("elements = {elements}"))
+        .replace("profile_times = [0.5]", "profile_times = [0.001]")
+}
+
+/// Source of truth: `scene::limits` (README, "Large runs"). Proves: a bar beyond the default
+/// 5e5 elements is refused naming the key, the value, the rule and the opt-in; with the opt-in
+/// (`Limits::LARGE`) it validates; beyond the large bound (the solver's 1e7 mesh cap) it is
+/// refused again, with no opt-in left to suggest.
+#[test]
+fn large_bars_are_an_explicit_opt_in() {
+    use courant::scene::limits::Limits;
+    let big = with_elements(600_000);
+    let err = Scene::parse("big", "big.toml", &big).expect_err("refused by default");
+    let message = err.to_string();
+    for part in ["mesh.elements", "600000", "1..=500000", "--large"] {
+        assert!(message.contains(part), "{part:?} missing: {message}");
+    }
+    let scene = Scene::parse_within("big", "big.toml", &big, Limits::LARGE)
+        .expect("a bar of 6e5 elements validates with the opt-in");
+    assert_eq!(scene.cases[0].model.bar().element_count(), 600_000);
+    let huge = with_elements(10_000_001);
+    let err = Scene::parse_within("huge", "huge.toml", &huge, Limits::LARGE)
+        .expect_err("refused beyond the large bound");
+    let message = err.to_string();
+    assert!(
+        message.contains("1..=10000000") && !message.contains("--large"),
+        "{message}"
+    );
+}
+
+/// Proves: `courant run --large` passes the opt-in to validation (a bar beyond the large bound
+/// is refused with the large bound, before anything runs), and `courant run` without it refuses
+/// a bar beyond the default and tells the user about `--large`; nothing is written either way.
+#[test]
+fn courant_run_large_flag_reaches_validation() {
+    let dir = std::env::temp_dir().join(format!("courant-large-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("out");
+    for (elements, large, expected) in [
+        (600_000, false, "--large"),
+        (10_000_001, true, "1..=10000000"),
+    ] {
+        let scene = dir.join("big.toml");
+        std::fs::write(&scene, with_elements(elements)).unwrap();
+        let mut args = vec![
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        if large {
+            args.push("--large");
+        }
+        let output = Command::new(env!("CARGO_BIN_EXE_courant"))
+            .args(&args)
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(2));
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.contains("mesh.elements") && stderr.contains(expected),
+            "{stderr}"
+        );
+        assert!(!out.exists(), "nothing may be written on refused input");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

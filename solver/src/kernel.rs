@@ -63,7 +63,18 @@ impl LumpedCentralDifference {
     /// Set up the operators of `model` for step `dt`, with state `u = u^0` and
     /// `v = v^{1/2}` supplied by the caller (see [`crate::integrator::Start`]).
     pub fn new(model: &Model, dt: f64, u0: &[f64], v_half: &[f64]) -> Self {
+        Self::with_half_step_velocity(model, dt, u0, v_half.to_vec())
+    }
+
+    /// [`Self::new`] taking `v^{1/2}` by value: it becomes the kernel's padded velocity in place
+    /// (grown by its two ghosts before the other arrays are made), so a run never holds two
+    /// copies of it. The same values as [`Self::new`].
+    pub fn with_half_step_velocity(model: &Model, dt: f64, u0: &[f64], v_half: Vec<f64>) -> Self {
         let n = model.bar().node_count();
+        let mut v = v_half;
+        v.reserve_exact(2);
+        v.insert(0, 0.0);
+        v.push(0.0);
         let pad = |inner: &mut dyn Iterator<Item = f64>| -> Vec<f64> {
             std::iter::once(0.0)
                 .chain(inner)
@@ -74,8 +85,8 @@ impl LumpedCentralDifference {
         let dt_inverse_mass = pad(&mut model.inverse_mass().iter().map(|m| dt * m));
         let mass = pad(&mut model.nodal_mass().iter().copied());
         let u = pad(&mut u0.iter().copied());
-        let v = pad(&mut v_half.iter().copied());
         debug_assert_eq!(u.len(), n + 2);
+        debug_assert_eq!(v.len(), n + 2);
         Self {
             dt,
             k,

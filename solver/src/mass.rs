@@ -18,6 +18,7 @@
 use crate::banded::{PartitionedLdl, SymmetricBanded, Tridiagonal};
 use crate::error::InputError;
 use crate::model::Model;
+use std::sync::Arc;
 
 /// The mass matrix of a run.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -117,10 +118,10 @@ impl MassKind {
 pub enum MassOperator {
     /// `M` diagonal: `inverse[i] = 1/m_i` (0 at fixed nodes) and `mass[i] = m_i`.
     Diagonal {
-        /// `1/m_i`, 0 at fixed nodes.
-        inverse: Vec<f64>,
-        /// `m_i`.
-        mass: Vec<f64>,
+        /// `1/m_i`, 0 at fixed nodes (the model's own array, shared).
+        inverse: Arc<[f64]>,
+        /// `m_i` (the model's own array, shared).
+        mass: Arc<[f64]>,
     },
     /// `M` tridiagonal (CMM, AMM): solve with its factor, multiply with the matrix.
     Tridiagonal {
@@ -187,10 +188,10 @@ impl MassOperator {
             ))
         };
         Ok(match kind {
-            MassKind::Lumped => MassOperator::Diagonal {
-                inverse: model.inverse_mass().to_vec(),
-                mass: model.nodal_mass().to_vec(),
-            },
+            MassKind::Lumped => {
+                let (mass, inverse) = model.shared_lumped_mass();
+                MassOperator::Diagonal { inverse, mass }
+            }
             MassKind::Consistent | MassKind::Averaged { .. } => {
                 let beta = kind.beta();
                 let mut matrix = assemble(
@@ -249,7 +250,7 @@ impl MassOperator {
     pub fn apply_inverse(&self, r: &[f64], a: &mut [f64]) {
         match self {
             MassOperator::Diagonal { inverse, .. } => {
-                for ((ai, ri), inv) in a.iter_mut().zip(r).zip(inverse) {
+                for ((ai, ri), inv) in a.iter_mut().zip(r).zip(inverse.iter()) {
                     *ai = inv * ri;
                 }
             }

@@ -19,7 +19,8 @@ pub struct Mesh {
     lengths: Vec<f64>,
 }
 
-/// Largest number of elements a mesh may have (memory: about 100 bytes per element in a run).
+/// Largest number of elements a mesh may have (memory: about 110 bytes per element in a lumped
+/// `courant run` with one profile time, measured: `benches/RESULTS.md`).
 pub const MAX_ELEMENTS: usize = 10_000_000;
 
 /// Smallest element length relative to the bar length a graded mesh may produce.

@@ -4,6 +4,7 @@
 use crate::bar::Bar;
 use crate::error::InputError;
 use crate::load::{End, Load, NodalLoad};
+use std::sync::Arc;
 
 /// Support condition of one end.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -50,8 +51,9 @@ pub struct Model {
     initial_displacement: Vec<f64>,
     initial_velocity: Vec<f64>,
     stiffness: Vec<f64>,
-    nodal_mass: Vec<f64>,
-    inverse_mass: Vec<f64>,
+    /// Shared with the lumped [`crate::mass::MassOperator`] (one copy per run, not two).
+    nodal_mass: Arc<[f64]>,
+    inverse_mass: Arc<[f64]>,
 }
 
 impl Model {
@@ -193,6 +195,7 @@ impl Model {
         let inverse_mass = (0..nodes)
             .map(|i| if fixed(i) { 0.0 } else { 1.0 / nodal_mass[i] })
             .collect();
+        let nodal_mass = Arc::from(nodal_mass);
         let [(_, initial_displacement), (_, initial_velocity)] = std::mem::take(&mut fields);
         Ok(Self {
             bar,
@@ -244,6 +247,12 @@ impl Model {
     /// Inverse lumped masses, 0 at fixed nodes (which removes them from the equations).
     pub fn inverse_mass(&self) -> &[f64] {
         &self.inverse_mass
+    }
+
+    /// The lumped nodal masses and their inverses, shared (not copied) with the lumped mass
+    /// operator of a run.
+    pub(crate) fn shared_lumped_mass(&self) -> (Arc<[f64]>, Arc<[f64]>) {
+        (Arc::clone(&self.nodal_mass), Arc::clone(&self.inverse_mass))
     }
 
     /// True when node `i` is held by a fixed support.

@@ -138,11 +138,8 @@ fn nodal_gershgorin(model: &Model, kind: MassKind, operator: &MassOperator) -> f
     let lumped = gershgorin_upper_bound(&diag, &off);
     // The stiffness with fixed rows and columns deleted (the (K, M) pencil of the lumped mass;
     // the RMM pencil is (M^-1 K M^-1, M^-1), not (K, .)).
-    let (k, _) = MassOperator::Diagonal {
-        inverse: model.inverse_mass().to_vec(),
-        mass: model.nodal_mass().to_vec(),
-    }
-    .pencil(model);
+    let (mass, inverse) = model.shared_lumped_mass();
+    let (k, _) = MassOperator::Diagonal { inverse, mass }.pencil(model);
     let n = k.order();
     let row_sum = |i: usize| -> f64 {
         (i.saturating_sub(1)..=(i + 1).min(n - 1))

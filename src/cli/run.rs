@@ -2,23 +2,30 @@
 //! files of all of them, or of none.
 
 use crate::compare::case::CaseResult;
-use crate::compare::files::scene_files;
+use crate::compare::files::{StreamedFiles, scene_files_streamed, write_profile_csv};
 use crate::compare::outcome::SceneOutcome;
 use crate::compare::score::export::exchange_set;
-use crate::io::atomic::stage_dir;
+use crate::io::atomic::{Stream, stage_dir_streamed};
 use crate::io::manifest::check_replaceable;
 use crate::pipeline::evaluate_scene;
 use crate::report::numbers::shown;
 use crate::results::case::Status;
 use crate::results::exchange::writer::set_files;
 use crate::results::table::{Cell, Table};
-use crate::scene::builtin::{BUILTIN_SCENES, resolve};
+use crate::scene::builtin::{BUILTIN_SCENES, resolve_within};
 use crate::scene::cases::Scene;
+use crate::scene::limits::Limits;
 use std::process::ExitCode;
 
 /// Run scenes and write their files to `out/<scene>/`; with `exchange`, also their results in the
-/// exchange format to `exchange/<scene>/` (what `courant score` reads).
-pub fn run(args: &[String], out: &std::path::Path, exchange: Option<&std::path::Path>) -> ExitCode {
+/// exchange format to `exchange/<scene>/` (what `courant score` reads). Scenes are validated
+/// against `limits` ([`Limits::LARGE`] for `courant run --large`).
+pub fn run(
+    args: &[String],
+    out: &std::path::Path,
+    exchange: Option<&std::path::Path>,
+    limits: Limits,
+) -> ExitCode {
     let names: Vec<String> = if args.is_empty() {
         BUILTIN_SCENES.iter().map(|(n, _)| n.to_string()).collect()
     } else {
@@ -28,7 +35,7 @@ pub fn run(args: &[String], out: &std::path::Path, exchange: Option<&std::path::
     let mut scenes = Vec::new();
     let mut bad = false;
     for name in &names {
-        match resolve(name) {
+        match resolve_within(name, limits) {
             Ok(scene) => scenes.push(scene),
             Err(e) => {
                 eprintln!("error: {e}");
@@ -95,19 +102,30 @@ pub fn run(args: &[String], out: &std::path::Path, exchange: Option<&std::path::
         };
         print_scene(scene, &outcome);
         failed |= !outcome.passed();
-        let mut files = vec![(dir.clone(), scene_files(&outcome), "")];
+        // The cases' profile files are streamed into the staged directory row by row.
+        let StreamedFiles { texts, profiles } = scene_files_streamed(&outcome);
+        let writers: Vec<_> = profiles
+            .iter()
+            .map(|(_, r)| move |out: &mut dyn std::io::Write| write_profile_csv(r, out))
+            .collect();
+        let streams: Vec<Stream<'_>> = profiles
+            .iter()
+            .zip(&writers)
+            .map(|((name, _), w)| (name.clone(), w as &dyn Fn(&mut dyn std::io::Write) -> _))
+            .collect();
+        let mut files = vec![(dir.clone(), texts, &streams[..], "")];
         if let Some(root) = exchange {
             let xdir = root.join(&scene.name);
             match exchange_set(scene, &outcome, &xdir.display().to_string()) {
-                Some(set) => files.push((xdir, set_files(&set), " (exchange format)")),
+                Some(set) => files.push((xdir, set_files(&set), &[], " (exchange format)")),
                 None => println!(
                     "  (no exchange form of {}: a dispersion or contact-stability study)",
                     scene.name
                 ),
             }
         }
-        for (dir, files, label) in files {
-            match stage_dir(&dir, &files) {
+        for (dir, files, streams, label) in files {
+            match stage_dir_streamed(&dir, &files, streams) {
                 Ok(s) => staged.push((s, label)),
                 Err(e) => {
                     eprintln!(

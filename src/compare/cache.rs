@@ -4,6 +4,7 @@ use super::exact::ExactSolution;
 use crate::scene::reference::Reference;
 use courant_solver::Mesh;
 use rayon::prelude::*;
+use std::sync::Arc;
 
 /// A reference, the index of a mesh and a time: what an exact profile is a function of.
 type ProfileKey = (Reference, usize, f64);
@@ -20,8 +21,8 @@ type ExactProfile = (Vec<f64>, f64);
 /// whether or not a value came from the cache.
 #[derive(Default)]
 pub struct ProfileCache {
-    /// The distinct meshes (each kept once).
-    meshes: Vec<Mesh>,
+    /// The distinct meshes (each kept once, shared with the records: never copied).
+    meshes: Vec<Arc<Mesh>>,
     /// `(reference, index into meshes, time)` and the exact profile.
     entries: Vec<(ProfileKey, ExactProfile)>,
 }
@@ -36,14 +37,14 @@ impl ProfileCache {
     /// Evaluate every distinct exact profile that `runs` (each a reference, the mesh of its
     /// record and the times of its profiles) needs, in parallel, in the order of first
     /// appearance.
-    pub fn for_runs(runs: &[(&Reference, &Mesh, Vec<f64>)]) -> Self {
-        let mut meshes: Vec<Mesh> = Vec::new();
+    pub fn for_runs(runs: &[(&Reference, &Arc<Mesh>, Vec<f64>)]) -> Self {
+        let mut meshes: Vec<Arc<Mesh>> = Vec::new();
         let mut keys: Vec<ProfileKey> = Vec::new();
         for (reference, mesh, times) in runs {
             let m = match meshes.iter().position(|m| same_mesh(m, mesh)) {
                 Some(m) => m,
                 None => {
-                    meshes.push((*mesh).clone());
+                    meshes.push(Arc::clone(mesh));
                     meshes.len() - 1
                 }
             };

@@ -119,9 +119,13 @@ pub fn compare_case(
         status,
         wall_time,
     } = record;
-    let x: Vec<f64> = (0..mesh.element_count())
-        .map(|e| mesh.midpoint(e))
-        .collect();
+    // The midpoints are made per profile (not one array cloned): with one profile a run holds
+    // them once.
+    let midpoints = || {
+        (0..mesh.element_count())
+            .map(|e| mesh.midpoint(e))
+            .collect()
+    };
     let profiles = profiles
         .into_iter()
         .map(|p| {
@@ -132,7 +136,7 @@ pub fn compare_case(
             ProfileComparison {
                 time: p.time,
                 step: p.step,
-                x: x.clone(),
+                x: midpoints(),
                 stress: p.stress,
                 reference: exact.map(|e| e.0),
                 norms,

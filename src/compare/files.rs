@@ -2,6 +2,7 @@
 //! round-trip precision), and the deterministic tables a report keeps of them, which
 //! `courant check --baseline <report>` compares.
 
+use super::case::CaseResult;
 use super::outcome::SceneOutcome;
 use super::study_tables::{
     contact_summary_table, dispersion_table, force_table, spectrum_summary_table, spectrum_table,
@@ -11,7 +12,7 @@ use super::tables::{
     PROFILE_COLUMNS, energy_table, expectations_table, history_table, norms_table, profile_rows,
     summary_table,
 };
-use crate::results::table::{Precision, Table, csv_text};
+use crate::results::table::{Precision, Table, csv_text, write_csv};
 
 /// The names of the scene tables a report keeps: `courant report` writes each scene's
 /// deterministic tables under these names (and no others), and a report baseline compares them.
@@ -40,14 +41,61 @@ pub const REPORT_TABLES: &[&str] = &[
 
 /// All files of a scene's output directory, as (file name, CSV text).
 pub fn scene_files(outcome: &SceneOutcome) -> Vec<(String, String)> {
+    files(outcome, true)
+}
+
+/// The files of [`scene_files`] split in two: every file but the cases' profile files, as
+/// (file name, CSV text), and the profile files as (file name, case), to be streamed into place
+/// by [`write_profile_csv`] (a profile of 10^7 elements is never held as text). Together the same
+/// names and bytes as [`scene_files`].
+pub fn scene_files_streamed(outcome: &SceneOutcome) -> StreamedFiles<'_> {
+    StreamedFiles {
+        texts: files(outcome, false),
+        profiles: outcome
+            .results
+            .iter()
+            .map(|r| (profile_file(r), r))
+            .collect(),
+    }
+}
+
+/// A scene's files with the profiles left to stream ([`scene_files_streamed`]).
+#[derive(Debug)]
+pub struct StreamedFiles<'a> {
+    /// Every file but the profiles: (file name, CSV text).
+    pub texts: Vec<(String, String)>,
+    /// The profile files: (file name, case), written by [`write_profile_csv`].
+    pub profiles: Vec<(String, &'a CaseResult)>,
+}
+
+/// A case's profile file: `time, element, x, stress, reference, error`, every row.
+///
+/// # Errors
+/// Any I/O error of `out`.
+pub fn write_profile_csv(result: &CaseResult, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+    write_csv(
+        out,
+        &PROFILE_COLUMNS,
+        profile_rows(result),
+        Precision::RoundTrip,
+    )
+}
+
+fn profile_file(result: &CaseResult) -> String {
+    format!("{}.csv", result.case)
+}
+
+fn files(outcome: &SceneOutcome, with_profiles: bool) -> Vec<(String, String)> {
     let full = Precision::RoundTrip;
     let (results, verdicts) = (&outcome.results, &outcome.verdicts);
     let mut files = Vec::new();
     for r in results {
-        files.push((
-            format!("{}.csv", r.case),
-            csv_text(&PROFILE_COLUMNS, profile_rows(r), full),
-        ));
+        if with_profiles {
+            files.push((
+                profile_file(r),
+                csv_text(&PROFILE_COLUMNS, profile_rows(r), full),
+            ));
+        }
         if !r.histories.is_empty() {
             files.push((
                 format!("{}.history.csv", r.case),

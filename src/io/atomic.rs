@@ -70,6 +70,24 @@ pub struct Staged {
 /// # Errors
 /// As [`write_dir_atomically`]; the staging directory is removed.
 pub fn stage_dir(dir: &Path, files: &[(String, String)]) -> Result<Staged, WriteError> {
+    stage_dir_streamed(dir, files, &[])
+}
+
+/// A file written by streaming into it (`courant run`'s profile files, too large to hold as
+/// text): its name and what writes its bytes.
+pub type Stream<'a> = (String, &'a dyn Fn(&mut dyn io::Write) -> io::Result<()>);
+
+/// [`stage_dir`], with `streamed` files besides `files`, each written into its staged file
+/// through a buffer by its writer (never held whole). The staging directory is removed on any
+/// error, so a streamed file is never left half-written.
+///
+/// # Errors
+/// As [`write_dir_atomically`]; the staging directory is removed.
+pub fn stage_dir_streamed(
+    dir: &Path,
+    files: &[(String, String)],
+    streamed: &[Stream<'_>],
+) -> Result<Staged, WriteError> {
     let (parent, name) = parent_and_name(dir);
     check_replaceable(dir)?;
     std::fs::create_dir_all(&parent)?;
@@ -85,7 +103,12 @@ pub fn stage_dir(dir: &Path, files: &[(String, String)]) -> Result<Staged, Write
     };
     let _ = std::fs::remove_dir_all(&staged.staging);
     std::fs::create_dir_all(&staged.staging)?;
-    let manifest = manifest_text(files.iter().map(|(f, _)| f.as_str()));
+    let manifest = manifest_text(
+        files
+            .iter()
+            .map(|(f, _)| f.as_str())
+            .chain(streamed.iter().map(|(f, _)| f.as_str())),
+    );
     files
         .iter()
         .chain(std::iter::once(&(MANIFEST.to_string(), manifest)))
@@ -96,6 +119,15 @@ pub fn stage_dir(dir: &Path, files: &[(String, String)]) -> Result<Staged, Write
             }
             std::fs::write(path, text)
         })?;
+    for (file, write) in streamed {
+        let path = staged.staging.join(file);
+        if let Some(dir) = path.parent() {
+            std::fs::create_dir_all(dir)?;
+        }
+        let mut out = io::BufWriter::new(std::fs::File::create(path)?);
+        write(&mut out)?;
+        io::Write::flush(&mut out)?;
+    }
     Ok(staged)
 }
 

@@ -23,8 +23,8 @@ pub struct CaseRecord {
     /// The time-stepping scheme that ran: `cd`, or Park's with its stepping, element-acceleration
     /// variant and blend, e.g. `park-lts-free theta=0.5` (methods.md §6).
     pub scheme: String,
-    /// The mesh the stresses live on (element `e` spans nodes `e` and `e + 1`).
-    pub mesh: Mesh,
+    /// The mesh the stresses live on (element `e` spans nodes `e` and `e + 1`; shared with the comparison's cache, never copied).
+    pub mesh: std::sync::Arc<Mesh>,
     /// Courant number relative to the stiffest element.
     pub courant: f64,
     /// Time step.

@@ -147,18 +147,24 @@ pub fn csv_text<C: AsRef<str>>(
     rows: impl Iterator<Item = Vec<Cell>>,
     precision: Precision,
 ) -> String {
-    let mut writer = csv::Writer::from_writer(Vec::new());
-    let mut write = |fields: &[String]| {
-        writer
-            .write_record(fields)
-            .expect("writing CSV to memory cannot fail")
-    };
-    write(
-        &columns
-            .iter()
-            .map(|c| c.as_ref().to_string())
-            .collect::<Vec<_>>(),
-    );
+    let mut text = Vec::new();
+    write_csv(&mut text, columns, rows, precision).expect("writing CSV to memory cannot fail");
+    String::from_utf8(text).expect("CSV of UTF-8 fields is UTF-8")
+}
+
+/// [`csv_text`] written into `out` row by row, never held whole (`courant run` streams a
+/// profile file of 10^7 rows into its staged file this way): the same bytes.
+///
+/// # Errors
+/// Any I/O error of `out`.
+pub fn write_csv<C: AsRef<str>>(
+    out: &mut dyn std::io::Write,
+    columns: &[C],
+    rows: impl Iterator<Item = Vec<Cell>>,
+    precision: Precision,
+) -> std::io::Result<()> {
+    let mut writer = csv::Writer::from_writer(out);
+    writer.write_record(columns.iter().map(|c| c.as_ref()))?;
     let mut fields = Vec::new();
     for row in rows {
         fields.clear();
@@ -168,14 +174,9 @@ pub fn csv_text<C: AsRef<str>>(
             Cell::Text(s) => s,
             Cell::Empty => String::new(),
         }));
-        write(&fields);
+        writer.write_record(&fields)?;
     }
-    String::from_utf8(
-        writer
-            .into_inner()
-            .expect("in-memory CSV flush cannot fail"),
-    )
-    .expect("CSV of UTF-8 fields is UTF-8")
+    writer.flush()
 }
 
 impl Table {

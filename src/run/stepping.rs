@@ -29,7 +29,7 @@ pub fn run_case(case: &Case) -> Result<CaseRecord, RunError> {
         case: case.name.clone(),
         // The scheme and its parameters: `cd`, `park-lts-free theta=0.5`, `noh-bathe p=0.54`.
         scheme: case.integrator.scheme.label(),
-        mesh: case.model.bar().mesh().clone(),
+        mesh: std::sync::Arc::new(case.model.bar().mesh().clone()),
         courant: output.courant,
         dt: output.dt,
         steps_planned: case.plan.steps,

@@ -14,9 +14,16 @@
 //! | reference work | [`MAX_REFERENCE_WORK`] | lattice nodes of the graded reference's characteristics (~7 ns each, measured; an upper bound), or tracked waves of the layered one |
 //!
 //! Every refusal names the key, the line, what the scene asks for, the limit and what to change.
+//!
+//! Large runs are an explicit opt-in ([`Limits::LARGE`], `courant run --large`): the elements of
+//! one bar, the elements validated and the output values are raised so that a bar of up to
+//! 10^7 elements (the solver's own mesh cap, `courant_solver::mesh::MAX_ELEMENTS`) runs with one
+//! profile time; the node-step, case and reference limits stay. The defaults ([`Limits::DEFAULT`])
+//! are what every other command, the report and the fuzz tests use.
 //! What a validated scene asks for is estimated by [`super::work`].
 
 use super::error::{SceneError, Source};
+pub use super::limits::{LARGE_ELEMENTS, LARGE_OUTPUT_VALUES, Limits};
 use super::mass::parse_mass;
 use super::schema::RawScene;
 use courant_solver::MassKind;
@@ -28,14 +35,14 @@ use std::ops::Range;
 pub const MAX_NODE_STEPS: f64 = 1e11;
 /// Most elements of one bar (a mesh of a time-stepping, spectrum or dispersion scene, a contact
 /// striker or target).
-pub const MAX_ELEMENTS: i64 = 500_000;
+pub const MAX_ELEMENTS: i64 = Limits::DEFAULT.elements;
 /// Most cases of one scene.
 pub const MAX_CASES: usize = 10_000;
 /// Most elements validated per scene, summed over its cases with their weights: validation of
 /// 10^6 lumped elements took 0.47 to 0.9 s here (release build, idle to loaded machine), of 10^6
 /// consistent-mass elements 2.9 s; at this limit a scene validates in about a quarter of a
 /// second.
-pub const MAX_VALIDATED_ELEMENTS: f64 = 5e5;
+pub const MAX_VALIDATED_ELEMENTS: f64 = Limits::DEFAULT.validated_elements;
 /// Validation weight of a case with a consistent, averaged or reciprocal mass: its exact
 /// critical step is a banded Sturm bisection, measured 6 times the lumped one.
 pub const MATRIX_MASS_WEIGHT: f64 = 6.0;
@@ -43,7 +50,7 @@ pub const MATRIX_MASS_WEIGHT: f64 = 6.0;
 pub const CONTACT_WEIGHT: f64 = 2.0;
 /// Most numbers a scene records and writes (profiles x elements x 6 columns, history samples x
 /// nodes x 8, energy samples x 10, contact samples x 12).
-pub const MAX_OUTPUT_VALUES: f64 = 2e7;
+pub const MAX_OUTPUT_VALUES: f64 = Limits::DEFAULT.output_values;
 /// Most work of a scene's reference, in lattice nodes of the graded bar's characteristics
 /// (`courant_references::graded`, ~7 ns each measured). The estimate is an upper bound: for the
 /// Fig. 2 bar with modulus ratios 256 and 1000 it was 6.5 and 3 times the work done (15 s and
@@ -64,20 +71,29 @@ pub fn refuse(src: &Source, blame: &Blame, message: String) -> SceneError {
     src.error(blame.0.clone(), blame.1, message)
 }
 
-/// An element count within `1 ..= MAX_ELEMENTS`.
+/// An element count within `1 ..= ` the limits' elements ([`MAX_ELEMENTS`] by default).
 pub fn element_count(
     src: &Source,
     span: Option<Range<usize>>,
     key: &str,
     n: i64,
 ) -> Result<usize, SceneError> {
-    if (1..=MAX_ELEMENTS).contains(&n) {
+    let limits = src.limits;
+    if (1..=limits.elements).contains(&n) {
         Ok(n as usize)
     } else {
+        let hint = if n > limits.elements {
+            limits.hint()
+        } else {
+            ""
+        };
         Err(src.error(
             span,
             key,
-            format!("{n} must lie in 1..={MAX_ELEMENTS} (elements of one bar)"),
+            format!(
+                "{n} must lie in 1..={} (elements of one bar){hint}",
+                limits.elements
+            ),
         ))
     }
 }
@@ -130,7 +146,8 @@ fn key_of(courant: bool) -> &'static str {
     }
 }
 
-/// At most [`MAX_CASES`] cases and [`MAX_VALIDATED_ELEMENTS`] weighted elements to validate.
+/// At most [`MAX_CASES`] cases and the limits' weighted elements to validate
+/// ([`MAX_VALIDATED_ELEMENTS`] by default).
 pub fn validation(
     src: &Source,
     blame: &Blame,
@@ -146,15 +163,18 @@ pub fn validation(
             ),
         ));
     }
-    if weighted_elements > MAX_VALIDATED_ELEMENTS {
+    let limits = src.limits;
+    if weighted_elements > limits.validated_elements {
         return Err(refuse(
             src,
             blame,
             format!(
                 "the scene's {cases} cases hold {weighted_elements:.3e} elements to validate (each case's exact critical step is a \
                  Sturm bisection over its mesh; a consistent, averaged or reciprocal mass counts {MATRIX_MASS_WEIGHT} times, a \
-                 contact case {CONTACT_WEIGHT} times), more than the {MAX_VALIDATED_ELEMENTS:e} a scene may hold; use fewer \
-                 cases or coarser meshes"
+                 contact case {CONTACT_WEIGHT} times), more than the {:e} a scene may hold; use fewer \
+                 cases or coarser meshes{}",
+                limits.validated_elements,
+                limits.hint()
             ),
         ));
     }

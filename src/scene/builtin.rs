@@ -3,6 +3,7 @@
 
 use super::cases::Scene;
 use super::error::SceneError;
+use super::limits::Limits;
 use std::path::Path;
 
 /// (name, TOML text) of every built-in scene.
@@ -89,25 +90,35 @@ pub fn builtin_text(name: &str) -> Option<&'static str> {
 
 /// Parse a built-in scene.
 pub fn builtin_scene(name: &str) -> Option<Result<Scene, SceneError>> {
-    builtin_text(name).map(|text| Scene::parse(name, &format!("scenes/{name}.toml"), text))
+    builtin_scene_within(name, Limits::DEFAULT)
+}
+
+fn builtin_scene_within(name: &str, limits: Limits) -> Option<Result<Scene, SceneError>> {
+    builtin_text(name)
+        .map(|text| Scene::parse_within(name, &format!("scenes/{name}.toml"), text, limits))
 }
 
 /// Resolve a command-line argument: a path to a `.toml` file, or the name of a built-in scene.
 pub fn resolve(arg: &str) -> Result<Scene, SceneError> {
+    resolve_within(arg, Limits::DEFAULT)
+}
+
+/// [`resolve`] against `limits` ([`Limits::LARGE`] for `courant run --large`).
+pub fn resolve_within(arg: &str, limits: Limits) -> Result<Scene, SceneError> {
     let path = Path::new(arg);
     // A name ending in .toml is a path even when it does not exist (and a FIFO or device named
     // so is refused by what it is, never opened); a built-in name wins over a directory of the
     // same name; any other existing path is read as a scene file, which names what it is.
     if arg.ends_with(".toml") || path.is_file() {
-        return Scene::from_path(path);
+        return Scene::from_path_within(path, limits);
     }
-    if let Some(scene) = builtin_scene(arg) {
+    if let Some(scene) = builtin_scene_within(arg, limits) {
         return scene;
     }
     if std::fs::metadata(path).is_ok() {
-        return Scene::from_path(path);
+        return Scene::from_path_within(path, limits);
     }
-    builtin_scene(arg).unwrap_or_else(|| {
+    builtin_scene_within(arg, limits).unwrap_or_else(|| {
         let names: Vec<&str> = BUILTIN_SCENES.iter().map(|(n, _)| *n).collect();
         let hint = closest(arg, &names)
             .map(|n| format!("did you mean {n}? "))

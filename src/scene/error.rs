@@ -81,6 +81,8 @@ pub struct Source<'a> {
     pub file: &'a str,
     /// The TOML text.
     pub text: &'a str,
+    /// The limits it is validated against.
+    pub limits: super::limits::Limits,
 }
 
 impl Source<'_> {
@@ -244,6 +246,7 @@ mod tests {
         let src = Source {
             file: "a.toml",
             text,
+            limits: Default::default(),
         };
         let offset = text.find("-1").unwrap();
         assert_eq!(src.position(offset), (5, 11));

@@ -35,6 +35,7 @@ pub mod dispersion;
 pub mod error;
 pub mod expectation;
 pub mod geometry;
+pub mod limits;
 pub mod magnitude;
 pub mod mass;
 pub mod material;

@@ -85,6 +85,7 @@ mod tests {
         let src = Source {
             file: "s.toml",
             text: "",
+            limits: Default::default(),
         };
         let ok = ["co0.5".to_string(), "cd-penalty-bs1e300".to_string()];
         check(&src, None, "k", &ok).unwrap();

@@ -5,6 +5,7 @@ use super::cases::Scene;
 use super::error::{SceneError, Source, collect_all};
 use super::expectation::{ExpectContext, Finding, Study, expectation, finding};
 use super::geometry::Geometry;
+use super::limits::Limits;
 use super::schema::{RawContactScene, RawFinding, RawHeader, RawScene};
 use super::scheme_keys::{SchemeKey, split_off};
 use super::work::Work;
@@ -31,8 +32,8 @@ fn blank_line(text: &str, line: usize) -> String {
 }
 
 /// One reading of a scene: its first error.
-fn parse_once(name: &str, file: &str, text: &str) -> Result<Scene, SceneError> {
-    let src = Source { file, text };
+fn parse_once(name: &str, file: &str, text: &str, limits: Limits) -> Result<Scene, SceneError> {
+    let src = Source { file, text, limits };
     let table: toml::Table = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
     if table.contains_key("contact") || table.contains_key("contact_stability") {
         let raw: RawContactScene = toml::from_str(text).map_err(|e| src.from_toml(&e))?;
@@ -54,7 +55,17 @@ impl Scene {
     /// again), with the first other error found after them; invalid `[[expect]]` tables are all
     /// reported too.
     pub fn parse(name: &str, file: &str, text: &str) -> Result<Scene, SceneError> {
-        let first = match parse_once(name, file, text) {
+        Self::parse_within(name, file, text, Limits::DEFAULT)
+    }
+
+    /// [`Scene::parse`] against `limits` ([`Limits::LARGE`] for `courant run --large`).
+    pub fn parse_within(
+        name: &str,
+        file: &str,
+        text: &str,
+        limits: Limits,
+    ) -> Result<Scene, SceneError> {
+        let first = match parse_once(name, file, text, limits) {
             Ok(scene) => return Ok(scene),
             Err(e) => e,
         };
@@ -67,7 +78,7 @@ impl Scene {
                 break;
             }
             rest = blank_line(&rest, last.line);
-            match parse_once(name, file, &rest) {
+            match parse_once(name, file, &rest, limits) {
                 Ok(_) => break,
                 Err(e) if e.line == last.line && e.message == last.message => break,
                 Err(e) => errors.push(e),
@@ -78,6 +89,11 @@ impl Scene {
 
     /// Read a scene from a file; its name is the file stem.
     pub fn from_path(path: &std::path::Path) -> Result<Scene, SceneError> {
+        Self::from_path_within(path, Limits::DEFAULT)
+    }
+
+    /// [`Scene::from_path`] against `limits`.
+    pub fn from_path_within(path: &std::path::Path, limits: Limits) -> Result<Scene, SceneError> {
         let file = path.display().to_string();
         let whole_file = |message: String| SceneError {
             file: file.clone(),
@@ -96,7 +112,7 @@ impl Scene {
         let text = std::fs::read_to_string(path)
             .map_err(|e| whole_file(format!("cannot read the scene file: {e}")))?;
         let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
-        Scene::parse(name, &file, &text)
+        Scene::parse_within(name, &file, &text, limits)
     }
 }
 

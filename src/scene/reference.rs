@@ -138,7 +138,7 @@ fn load_case(model: &Model) -> Result<f64, String> {
     {
         return Err("this scene has initial displacement or velocity".into());
     }
-    if !model.bar().area().windows(2).all(|w| w[0] == w[1]) {
+    if !model.bar().area().is_uniform() {
         return Err("this bar's area varies".into());
     }
     // Nodal force F0 = -sigma0 A at the left end (methods.md §2).

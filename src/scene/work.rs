@@ -2,8 +2,7 @@
 //! from its cases without running anything, and checked against [`super::budget`]'s limits.
 
 use super::budget::{
-    Blame, LAYERED_WAVE_WORK, MAX_NODE_STEPS, MAX_OUTPUT_VALUES, MAX_REFERENCE_WORK,
-    SWEEP_PASSES_PER_POINT, refuse,
+    Blame, LAYERED_WAVE_WORK, MAX_NODE_STEPS, MAX_REFERENCE_WORK, SWEEP_PASSES_PER_POINT, refuse,
 };
 use super::cases::{Case, Scene};
 use super::contact::{ContactCase, StabilitySweep};
@@ -100,7 +99,7 @@ impl Work {
         self.add("stability", passes, points * 4.0);
     }
 
-    /// Within [`MAX_NODE_STEPS`], [`MAX_OUTPUT_VALUES`] and [`MAX_REFERENCE_WORK`], else the
+    /// Within [`MAX_NODE_STEPS`], the limits' output values (`src.limits`) and [`MAX_REFERENCE_WORK`], else the
     /// error saying what the scene asks for and the limit, at the key that `blame` names for
     /// each (`[node-steps, output values, reference]`).
     pub fn check(&self, src: &Source, blame: [&Blame; 3]) -> Result<(), SceneError> {
@@ -122,16 +121,18 @@ impl Work {
                 ),
             ));
         }
-        if self.output_values > MAX_OUTPUT_VALUES {
+        if self.output_values > src.limits.output_values {
             return Err(refuse(
                 src,
                 output_blame,
                 format!(
                     "the scene would record {:.2e} numbers (profiles, histories, energy logs, force histories; about {:.0} MB \
-                     in memory), more than the {MAX_OUTPUT_VALUES:.0e} a scene may record; record fewer samples \
-                     (history_every, energy_every), fewer profile times or fewer history points",
+                     in memory), more than the {:.0e} a scene may record; record fewer samples \
+                     (history_every, energy_every), fewer profile times or fewer history points{}",
                     self.output_values,
-                    self.output_values * 30.0 / 1e6
+                    self.output_values * 30.0 / 1e6,
+                    src.limits.output_values,
+                    src.limits.hint()
                 ),
             ));
         }

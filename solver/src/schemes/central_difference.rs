@@ -92,8 +92,9 @@ pub(crate) fn half_step_start(state: &InitialState<'_>) -> (Vec<f64>, f64) {
 /// What the shared [`CentralDifferenceStepper`] needs of a central-difference kernel (state
 /// `u^n`, `v^{n+1/2}`): how it is built from the half-step start, its step, and `a^n` at a node.
 pub trait CentralDifferenceKernel: Sized {
-    /// The kernel started with `v^{1/2}` and `T*^0` (from [`half_step_start`]).
-    fn build(state: InitialState<'_>, half_step_velocity: &[f64], staggered0: f64) -> Self;
+    /// The kernel started with `v^{1/2}` (taken: a kernel may keep its buffer) and `T*^0` (from
+    /// [`half_step_start`]).
+    fn build(state: InitialState<'_>, half_step_velocity: Vec<f64>, staggered0: f64) -> Self;
     /// Time step.
     fn dt(&self) -> f64;
     /// `u^n`.
@@ -111,8 +112,8 @@ pub trait CentralDifferenceKernel: Sized {
 }
 
 impl CentralDifferenceKernel for LumpedCentralDifference {
-    fn build(state: InitialState<'_>, half_step_velocity: &[f64], _: f64) -> Self {
-        Self::new(
+    fn build(state: InitialState<'_>, half_step_velocity: Vec<f64>, _: f64) -> Self {
+        Self::with_half_step_velocity(
             state.model,
             state.dt,
             state.displacement,
@@ -139,10 +140,10 @@ impl CentralDifferenceKernel for LumpedCentralDifference {
 }
 
 impl CentralDifferenceKernel for MatrixCentralDifference {
-    fn build(state: InitialState<'_>, half_step_velocity: &[f64], staggered0: f64) -> Self {
+    fn build(state: InitialState<'_>, half_step_velocity: Vec<f64>, staggered0: f64) -> Self {
         let start = StartState {
             displacement: state.displacement,
-            half_step_velocity,
+            half_step_velocity: &half_step_velocity,
             acceleration: state.acceleration,
             residual: state.residual,
             kinetic_staggered: staggered0,
@@ -206,7 +207,7 @@ impl<K: CentralDifferenceKernel> Integrator for CentralDifferenceStepper<K> {
     fn start(_: &(), state: InitialState<'_>) -> Result<Self, InputError> {
         let (v_half, staggered0) = half_step_start(&state);
         Ok(Self {
-            kernel: K::build(state, &v_half, staggered0),
+            kernel: K::build(state, v_half, staggered0),
             staggered0,
         })
     }
