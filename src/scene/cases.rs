@@ -6,6 +6,7 @@ use super::expectation::{Expectation, Finding};
 use super::reference::Reference;
 use super::spectrum::SpectrumCase;
 use courant_solver::{CriticalStep, Integration, Model, OutputRequest, SchemeLimit, TimePlan};
+use std::sync::Arc;
 
 /// A validated scene.
 #[derive(Debug, Clone)]
@@ -39,8 +40,8 @@ pub struct Scene {
 pub struct Case {
     /// Case name, e.g. `co0.5`.
     pub name: String,
-    /// The model.
-    pub model: Model,
+    /// The model (shared by the cases of a sweep: one copy of its arrays, not one per case).
+    pub model: Arc<Model>,
     /// The scheme and its run settings, with the final time step.
     pub integrator: Integration,
     /// The time-step plan.

@@ -13,6 +13,7 @@ use super::schema::{RawCourantUnit, RawScene, RawTimeUnit};
 use super::scheme_keys::SchemeKey;
 use super::stepping::{Stepping, keep_step_plan};
 use courant_solver::{CriticalStep, Integration, OutputRequest};
+use std::sync::Arc;
 
 /// Samples kept by default for histories and energy logs: every step up to this many steps,
 /// then every `ceil(steps / MAX_SAMPLES)`-th step.
@@ -41,7 +42,7 @@ pub(super) fn build(
 
     let mut cases = Vec::new();
     for &elements in &geometry.element_counts {
-        let model = model_of(src, raw, geometry, elements)?;
+        let model = Arc::new(model_of(src, raw, geometry, elements)?);
         let reference = match &raw.reference.kind {
             None => None,
             Some(kind) => Reference::for_model(*kind.get_ref(), &model, &geometry.material)
@@ -167,7 +168,7 @@ pub(super) fn build(
                 let limit = integrator.limit(&model, &critical);
                 cases.push(Case {
                     name: case_name,
-                    model: model.clone(),
+                    model: Arc::clone(&model),
                     integrator,
                     plan,
                     request,
