@@ -12,7 +12,8 @@
 //! Proves: a listed parameter gives one case per value (cartesian product over listed keys, in
 //! file order), named by a token (`theta0.5`, or the word itself), only for the schemes that
 //! declare it; each case runs the scheme built with its value and records it; empty lists, lists
-//! of tables and duplicates are refused naming line and key; and on the Fig. 2 bar the theta = 0
+//! of tables and duplicates are refused naming line and key; a list counts against the case
+//! budget; and on the Fig. 2 bar the theta = 0
 //! case equals central difference to round-off (the built-in `fig2_theta` scene's expectation).
 
 use courant::pipeline::evaluate_scene;
@@ -129,6 +130,23 @@ fn bad_lists_are_refused_naming_line_and_key() {
         assert!(e.line > 0, "{integrator}: no line in {text}");
         assert!(text.contains(says), "{integrator}: {text}");
     }
+}
+
+#[test]
+fn a_long_list_counts_against_the_case_budget_before_any_case_is_built() {
+    // fig1 has three Courant numbers: 20 001 theta values would be 60 003 cases, over the
+    // 10 000 a scene may have (src/scene/budget.rs), refused before any bisection runs.
+    let values: Vec<String> = (0..=20_000)
+        .map(|i| format!("{}", i as f64 / 20_000.0))
+        .collect();
+    let e = scene(&format!(
+        "scheme = \"park-lts\"\ntheta = [{}]",
+        values.join(", ")
+    ))
+    .unwrap_err();
+    let text = e.to_string();
+    assert!(text.contains("60003 cases"), "{text}");
+    assert!(text.contains("10000"), "{text}");
 }
 
 #[test]

@@ -26,6 +26,7 @@ use super::error::{SceneError, Source};
 pub use super::limits::{LARGE_ELEMENTS, LARGE_OUTPUT_VALUES, Limits};
 use super::mass::parse_mass;
 use super::schema::RawScene;
+use super::scheme_keys::SchemeKey;
 use courant_solver::MassKind;
 use std::ops::Range;
 
@@ -99,11 +100,14 @@ pub fn element_count(
 }
 
 /// Before the cases of a time-stepping scene are built (each one a Sturm bisection over its
-/// mesh): at most [`MAX_CASES`] cases and [`MAX_VALIDATED_ELEMENTS`] weighted elements.
+/// mesh): at most [`MAX_CASES`] cases and [`MAX_VALIDATED_ELEMENTS`] weighted elements. A
+/// scheme parameter given as a list multiplies the cases by its length (counted for every
+/// scheme: an upper bound where only some schemes declare it).
 pub fn time_stepping_validation(
     src: &Source,
     raw: &RawScene,
     element_counts: &[usize],
+    scheme_keys: &[SchemeKey],
 ) -> Result<(), SceneError> {
     let Some(integrator) = &raw.integrator else {
         return Ok(());
@@ -125,8 +129,12 @@ pub fn time_stepping_validation(
             })
             .collect()
     });
-    let per_mesh = values.get_ref().values().len() * schemes;
-    let cases = element_counts.len() * per_mesh * weights.len();
+    let sweeps: usize = scheme_keys
+        .iter()
+        .filter(|k| k.listed)
+        .fold(1usize, |n, k| n.saturating_mul(k.values.len()));
+    let per_mesh = (values.get_ref().values().len() * schemes).saturating_mul(sweeps);
+    let cases = (element_counts.len() * weights.len()).saturating_mul(per_mesh);
     let weighted: f64 = element_counts.iter().map(|&n| n as f64).sum::<f64>()
         * per_mesh as f64
         * weights.iter().sum::<f64>();

@@ -194,7 +194,7 @@ fn build(
             },
         );
     }
-    budget::time_stepping_validation(src, &raw, &geometry.element_counts)?;
+    budget::time_stepping_validation(src, &raw, &geometry.element_counts, scheme_keys)?;
     let (cases, expectations) = time_stepping::build(src, &raw, &geometry, scheme_keys)?;
     let stepping = raw.integrator.as_ref().and_then(|i| {
         i.courant
