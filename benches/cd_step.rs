@@ -41,6 +41,15 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 /// Element counts.
 const SIZES: [usize; 3] = [1_000, 100_000, 1_000_000];
 
+/// Noh-Bathe's splitting parameter in the benches (the registry's default).
+const NB_P: f64 = 0.54;
+
+/// Noh-Bathe's critical step over central difference's on the same mass:
+/// `Omega_crit(p) / 2` (`NohBathe::critical_omega`; 1.8725 at p = 0.54).
+fn noh_bathe_step_ratio() -> f64 {
+    courant_solver::schemes::noh_bathe::NohBathe::critical_omega(NB_P) / 2.0
+}
+
 use courant_solver::fixtures::smooth_half_velocity;
 
 /// The graded, loaded, free-fixed bar of `n` elements and its kernel at Courant number 0.5.
@@ -284,7 +293,12 @@ fn noh_bathe_step(c: &mut Criterion) {
             &mut group,
             "noh-bathe-lmm",
             &model,
-            stepper::<NohBatheStepper>(&model, MassKind::Lumped, 1.8725 * lumped, &0.54),
+            stepper::<NohBatheStepper>(
+                &model,
+                MassKind::Lumped,
+                noh_bathe_step_ratio() * lumped,
+                &NB_P,
+            ),
         );
         bench(
             &mut group,
@@ -296,7 +310,12 @@ fn noh_bathe_step(c: &mut Criterion) {
             &mut group,
             "noh-bathe-cmm",
             &model,
-            stepper::<NohBatheStepper>(&model, MassKind::Consistent, 1.8725 * consistent, &0.54),
+            stepper::<NohBatheStepper>(
+                &model,
+                MassKind::Consistent,
+                noh_bathe_step_ratio() * consistent,
+                &NB_P,
+            ),
         );
     }
     group.finish();
@@ -375,8 +394,8 @@ fn run_loop(c: &mut Criterion) {
     .chain([(
         "noh-bathe",
         courant_solver::Integration::new(
-            0.5 * 1.8725 * element_dt,
-            std::sync::Arc::new(courant_solver::schemes::noh_bathe::NohBathe { p: 0.54 }),
+            0.5 * noh_bathe_step_ratio() * element_dt,
+            std::sync::Arc::new(courant_solver::schemes::noh_bathe::NohBathe { p: NB_P }),
         ),
     )]) {
         group.bench_function(BenchmarkId::new(name, n), |b| {

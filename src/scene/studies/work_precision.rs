@@ -48,21 +48,25 @@ pub struct CourantVariant {
 /// Error label of time-stepping studies.
 const STRESS_L1: &str = "L1 error / |sigma0|";
 
+/// A Fig. 1 scene (`fig1_masses`, `fig1_schemes`) on meshes of 50 to 1600 elements at 0.9 of
+/// each case's limit, one profile at t = 0.5 T, no histories.
+const FIG1_AT_0_9: &[(&str, &str)] = &[
+    (
+        "elements = 100",
+        "elements = [50, 100, 200, 400, 800, 1600]",
+    ),
+    ("courant = [1.0, 0.5]", "courant = 0.9"),
+    ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
+    ("history_points = [0.0, 0.5]", "history_points = []"),
+];
+
 /// The built-in work-precision studies.
 pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
     WorkPrecisionStudy {
         name: "fig1_masses",
         title: "Fig. 1 bar, t = 0.5 T: each mass kind at 0.875-0.9 of its critical Courant number",
         scene: "fig1_masses",
-        replacements: &[
-            (
-                "elements = 100",
-                "elements = [50, 100, 200, 400, 800, 1600]",
-            ),
-            ("courant = [1.0, 0.5]", "courant = 0.9"),
-            ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
-            ("history_points = [0.0, 0.5]", "history_points = []"),
-        ],
+        replacements: FIG1_AT_0_9,
         contact_meshes: &[],
         variants: &[],
         error: STRESS_L1,
@@ -83,15 +87,7 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
         name: "fig1_schemes",
         title: "Fig. 1 bar, t = 0.5 T: CD, Park (local stepping), Noh-Bathe at 0.9 of each one's limit",
         scene: "fig1_schemes",
-        replacements: &[
-            (
-                "elements = 100",
-                "elements = [50, 100, 200, 400, 800, 1600]",
-            ),
-            ("courant = [1.0, 0.5]", "courant = 0.9"),
-            ("profile_times = [0.5, 1.5]", "profile_times = [0.5]"),
-            ("history_points = [0.0, 0.5]", "history_points = []"),
-        ],
+        replacements: FIG1_AT_0_9,
         contact_meshes: &[],
         variants: &[],
         error: STRESS_L1,
