@@ -325,7 +325,9 @@ impl LumpedCentralDifference {
     }
 }
 
-fn has_avx2() -> bool {
+/// Whether the running CPU has AVX2 (the blocked sweeps' intrinsics and AVX2-compiled copies
+/// are taken only then; elsewhere the portable path, with the same bits).
+pub(crate) fn has_avx2() -> bool {
     #[cfg(target_arch = "x86_64")]
     {
         std::arch::is_x86_feature_detected!("avx2")

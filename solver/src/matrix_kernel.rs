@@ -20,7 +20,7 @@
 //! and, at sampled steps, `T*` from `M` itself ([`MatrixCentralDifference::staggered_kinetic_from_mass`]),
 //! which checks the mass operator against the update.
 
-use crate::kernel::{LANES, StepEnergy};
+use crate::kernel::{LANES, StepEnergy, has_avx2};
 use crate::mass::MassOperator;
 
 /// The state a run starts from, after the start procedure.
@@ -269,17 +269,6 @@ impl MatrixCentralDifference {
             .zip(&self.scratch)
             .map(|((v, a), mv)| (v - dt * a) * mv)
             .sum::<f64>()
-    }
-}
-
-fn has_avx2() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::arch::is_x86_feature_detected!("avx2")
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
     }
 }
 

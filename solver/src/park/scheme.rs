@@ -7,7 +7,7 @@
 use super::folded::FoldedStep;
 use super::options::{ParkOptions, ParkVariant};
 use crate::error::InputError;
-use crate::kernel::StepEnergy;
+use crate::kernel::{StepEnergy, has_avx2};
 use crate::model::Model;
 
 /// Per-element constants of the loads' correction (cold: used at loaded nodes only).
@@ -273,17 +273,6 @@ impl ParkScheme {
                 state.free[node] * self.options.theta * self.inverse_count[node] * change;
             state.load_next[index] = model.external_force_at(node, t + state.dt);
         }
-    }
-}
-
-fn has_avx2() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::arch::is_x86_feature_detected!("avx2")
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
     }
 }
 
