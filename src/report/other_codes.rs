@@ -24,23 +24,13 @@ pub fn checks_anchor(stem: &str) -> String {
 /// The verdicts of a set: the scene's expectations on its files and each case's decided
 /// diagnostics (an undecided diagnostic is no verdict).
 pub fn tally(scored: &ScoredSet) -> Tally {
-    let mut t = Tally::default();
-    for v in &scored.verdicts {
-        match (v.pass, v.finding) {
-            (true, true) => t.findings += 1,
-            (true, false) => t.passed += 1,
-            (false, _) => t.failed += 1,
-        }
-    }
-    for case in &scored.cases {
-        for (_, verdict, _, _) in case.diagnostics.verdicts() {
-            match verdict {
-                Some(true) => t.passed += 1,
-                Some(false) => t.failed += 1,
-                None => {}
-            }
-        }
-    }
+    let mut t = Tally::of_verdicts(&scored.verdicts);
+    t.add(Tally::of_decisions(scored.cases.iter().flat_map(|case| {
+        case.diagnostics
+            .verdicts()
+            .into_iter()
+            .map(|(_, verdict, _, _)| verdict)
+    })));
     t
 }
 

@@ -3,6 +3,7 @@
 
 use crate::compare::convergence::ConvergenceResult;
 use crate::compare::outcome::SceneOutcome;
+use crate::compare::verdict::Verdict;
 
 /// Verdicts counted.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -30,8 +31,13 @@ impl Tally {
 
     /// The verdicts of a scene.
     pub fn of_scene(outcome: &SceneOutcome) -> Self {
+        Tally::of_verdicts(&outcome.verdicts)
+    }
+
+    /// Expectation verdicts: a pass that is a stated finding counts as a finding.
+    pub fn of_verdicts(verdicts: &[Verdict]) -> Self {
         let mut t = Tally::default();
-        for v in &outcome.verdicts {
+        for v in verdicts {
             match (v.pass, v.finding) {
                 (true, true) => t.findings += 1,
                 (true, false) => t.passed += 1,
@@ -41,17 +47,22 @@ impl Tally {
         t
     }
 
-    /// The order verdicts of a convergence study (norms with a band).
-    pub fn of_study(study: &ConvergenceResult) -> Self {
+    /// Checks that may decide nothing (`None`: no verdict, not counted).
+    pub fn of_decisions(decisions: impl IntoIterator<Item = Option<bool>>) -> Self {
         let mut t = Tally::default();
-        for v in study.verdicts() {
-            match v.pass {
+        for pass in decisions {
+            match pass {
                 Some(true) => t.passed += 1,
                 Some(false) => t.failed += 1,
                 None => {}
             }
         }
         t
+    }
+
+    /// The order verdicts of a convergence study (norms with a band).
+    pub fn of_study(study: &ConvergenceResult) -> Self {
+        Tally::of_decisions(study.verdicts().into_iter().map(|v| v.pass))
     }
 }
 
