@@ -103,6 +103,49 @@ fn lumped_cd_step(c: &mut Criterion) {
     group.finish();
 }
 
+/// Temporal blocking: blocks of 1024 lumped steps (`advance_block`: tiles of 1024 nodes,
+/// sub-blocks of 64 steps) on one and on two threads, bare and with the energy sums, per
+/// node-step (throughput `1024 N`). Bit-identical to single steps whatever the thread count
+/// (unit tests of `kernel_pipeline`); issue 17 target 4: 0.54 ns at N = 1e6 on one core, 1.7x
+/// on two.
+fn lumped_cd_block(c: &mut Criterion) {
+    use courant_solver::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock};
+    let steps = MAX_BLOCK_STEPS;
+    let mut group = c.benchmark_group("lumped_cd_block");
+    group
+        .warm_up_time(Duration::from_secs(1))
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(4));
+    for n in SIZES {
+        group.throughput(Throughput::Elements((n * steps) as u64));
+        let mut block = StepBlock::new(&[0], &[], &[]);
+        block.forces.fill(1.0);
+        for threads in [1, 2] {
+            let mut kernel = graded_kernel(n);
+            kernel.set_threads(threads);
+            group.bench_with_input(
+                BenchmarkId::new(format!("step_t{threads}"), n),
+                &n,
+                |b, _| {
+                    b.iter(|| kernel.advance_block::<false>(black_box(&mut block), steps));
+                },
+            );
+            assert_finite(&kernel);
+            let mut kernel = graded_kernel(n);
+            kernel.set_threads(threads);
+            group.bench_with_input(
+                BenchmarkId::new(format!("step_with_energy_t{threads}"), n),
+                &n,
+                |b, _| {
+                    b.iter(|| kernel.advance_block::<true>(black_box(&mut block), steps));
+                },
+            );
+            assert_finite(&kernel);
+        }
+    }
+    group.finish();
+}
+
 /// One run step (with energies, as runs take it) per mass kind on the graded bar, N = 1e3, 1e5, 1e6, at half
 /// of each kind's critical Courant number. Targets (issue 3): RMM within 2x of LMM, CMM and AMM
 /// within 3x.
@@ -475,6 +518,7 @@ criterion_group!(
     run_loop,
     run_loop_large,
     lumped_cd_step,
+    lumped_cd_block,
     mass_kind_step,
     spectrum_dense,
     park_step,

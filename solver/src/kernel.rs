@@ -35,28 +35,60 @@ const BLOCK: usize = 512;
 
 /// Partial energy sums, one per lane.
 #[derive(Debug, Clone, Copy, Default)]
-struct Lanes {
-    strain: [f64; LANES],
-    staggered: [f64; LANES],
-    kinetic: [f64; LANES],
+pub(crate) struct Lanes {
+    pub(crate) strain: [f64; LANES],
+    pub(crate) staggered: [f64; LANES],
+    pub(crate) kinetic: [f64; LANES],
+}
+
+impl Lanes {
+    /// Lane `l` moves to place `(l + LANES - by) % LANES`: after `rotate_left(by)`, a sweep that
+    /// adds its first node to lane 0 adds it to what was lane `by`.
+    #[inline(always)]
+    pub(crate) fn rotate_left(&mut self, by: usize) {
+        self.strain.rotate_left(by);
+        self.staggered.rotate_left(by);
+        self.kinetic.rotate_left(by);
+    }
+
+    /// The inverse of [`Self::rotate_left`].
+    #[inline(always)]
+    pub(crate) fn rotate_right(&mut self, by: usize) {
+        self.strain.rotate_right(by);
+        self.staggered.rotate_right(by);
+        self.kinetic.rotate_right(by);
+    }
+
+    /// The step's energies: `1/2 sum(staggered)`, `1/8 sum(kinetic)`, `1/2 sum(strain)`, each
+    /// lane sum taken in lane order.
+    #[inline(always)]
+    pub(crate) fn energy(&self) -> StepEnergy {
+        StepEnergy {
+            kinetic_staggered: 0.5 * self.staggered.iter().sum::<f64>(),
+            kinetic: 0.125 * self.kinetic.iter().sum::<f64>(),
+            strain: 0.5 * self.strain.iter().sum::<f64>(),
+        }
+    }
 }
 
 /// Lumped-mass central difference on a ghost-padded node layout.
 #[derive(Debug, Clone)]
 pub struct LumpedCentralDifference {
-    dt: f64,
+    pub(crate) dt: f64,
     /// `k[j]`: stiffness between padded nodes j and j+1 (0 for the ghost links); length N+2.
-    k: Vec<f64>,
+    pub(crate) k: Vec<f64>,
     /// `dt / m_i` (0 at fixed and ghost nodes); length N+3.
-    dt_inverse_mass: Vec<f64>,
+    pub(crate) dt_inverse_mass: Vec<f64>,
     /// `m_i` (0 at ghosts); length N+3.
-    mass: Vec<f64>,
+    pub(crate) mass: Vec<f64>,
     /// Padded displacement `u^n`; length N+3.
-    u: Vec<f64>,
+    pub(crate) u: Vec<f64>,
     /// Padded half-step velocity `v^{n+1/2}`; length N+3.
-    v: Vec<f64>,
+    pub(crate) v: Vec<f64>,
     /// Whether the CPU has AVX2 (the step then runs its AVX2-compiled copy).
-    avx2: bool,
+    pub(crate) avx2: bool,
+    /// Threads of a block of steps (`advance_block`, `kernel_pipeline`); single steps use one.
+    pub(crate) threads: usize,
 }
 
 impl LumpedCentralDifference {
@@ -95,12 +127,24 @@ impl LumpedCentralDifference {
             u,
             v,
             avx2: has_avx2(),
+            threads: default_threads(n + 1),
         }
     }
 
     /// The time step.
     pub fn dt(&self) -> f64 {
         self.dt
+    }
+
+    /// The threads a block of steps runs on (`advance_block`): [`default_threads`] of the bar
+    /// unless set. The results do not depend on it.
+    pub fn threads(&self) -> usize {
+        self.threads
+    }
+
+    /// Run blocks of steps on `threads` threads (at least 1; at most one per tile is used).
+    pub fn set_threads(&mut self, threads: usize) {
+        self.threads = threads.max(1);
     }
 
     /// Displacements `u^n` of the real nodes.
@@ -169,11 +213,7 @@ impl LumpedCentralDifference {
             // Each node adds the strain energy of the link on its right: the real links 1..=N
             // of the padded layout are the right links of the real nodes 1..=N; the last real
             // node's right link is a ghost with k = 0.
-            StepEnergy {
-                kinetic_staggered: 0.5 * lanes.staggered.iter().sum::<f64>(),
-                kinetic: 0.125 * lanes.kinetic.iter().sum::<f64>(),
-                strain: 0.5 * lanes.strain.iter().sum::<f64>(),
-            }
+            lanes.energy()
         } else {
             StepEnergy::default()
         }
@@ -221,7 +261,7 @@ impl LumpedCentralDifference {
     /// Velocity update of padded nodes `from..to` (no external force), lanes counted from
     /// `from`.
     #[inline(always)]
-    fn sweep<const ENERGY: bool, const AVX2: bool>(
+    pub(crate) fn sweep<const ENERGY: bool, const AVX2: bool>(
         &mut self,
         from: usize,
         to: usize,
@@ -230,99 +270,174 @@ impl LumpedCentralDifference {
         if from >= to {
             return;
         }
-        let (u, k) = (&self.u[from - 1..=to], &self.k[from - 1..to]);
-        let (v, s) = (&mut self.v[from..to], &self.dt_inverse_mass[from..to]);
-        if ENERGY {
-            let m = &self.mass[from..to];
-            // Node i adds to lane i % LANES: independent partial sums the compiler can keep
-            // in vector registers; fixed order, so the result is deterministic.
-            let (mut strain, mut staggered, mut kinetic) =
-                (lanes.strain, lanes.staggered, lanes.kinetic);
-            #[cfg(target_arch = "x86_64")]
-            let avx2_done = if AVX2 {
-                // SAFETY: `AVX2` is true only in `advance_avx2`, run when the CPU has AVX2.
-                Some(unsafe {
-                    crate::kernel_avx2::sweep_with_energy(
-                        u,
-                        k,
-                        v,
-                        s,
-                        m,
-                        &mut strain,
-                        &mut staggered,
-                        &mut kinetic,
-                    )
-                })
-            } else {
-                None
-            };
-            #[cfg(not(target_arch = "x86_64"))]
-            let avx2_done: Option<usize> = None;
-            let whole = v.len() / LANES * LANES;
-            let portable_from = avx2_done.unwrap_or(0);
-            for base in (portable_from..whole).step_by(LANES) {
-                let uu: &[f64; LANES + 2] = u[base..base + LANES + 2]
-                    .try_into()
-                    .expect("fixed-size window");
-                let kk: &[f64; LANES + 1] = k[base..base + LANES + 1]
-                    .try_into()
-                    .expect("fixed-size window");
-                let ss: &[f64; LANES] =
-                    s[base..base + LANES].try_into().expect("fixed-size window");
-                let mm: &[f64; LANES] =
-                    m[base..base + LANES].try_into().expect("fixed-size window");
-                let vv: &mut [f64; LANES] = (&mut v[base..base + LANES])
-                    .try_into()
-                    .expect("fixed-size window");
-                for l in 0..LANES {
-                    let right = uu[l + 2] - uu[l + 1];
-                    let r = kk[l + 1] * right - kk[l] * (uu[l + 1] - uu[l]);
-                    let old = vv[l];
-                    let new = old + ss[l] * r;
-                    vv[l] = new;
-                    strain[l] += kk[l + 1] * right * right;
-                    staggered[l] += mm[l] * old * new;
-                    kinetic[l] += mm[l] * (old + new) * (old + new);
-                }
-            }
-            for i in whole..v.len() {
-                let (l, right) = (i % LANES, u[i + 2] - u[i + 1]);
-                let r = k[i + 1] * right - k[i] * (u[i + 1] - u[i]);
-                let old = v[i];
-                let new = old + s[i] * r;
-                v[i] = new;
-                strain[l] += k[i + 1] * right * right;
-                staggered[l] += m[i] * old * new;
-                kinetic[l] += m[i] * (old + new) * (old + new);
-            }
-            *lanes = Lanes {
-                strain,
-                staggered,
-                kinetic,
-            };
-        } else {
-            for i in 0..v.len() {
-                let r = k[i + 1] * (u[i + 2] - u[i + 1]) - k[i] * (u[i + 1] - u[i]);
-                v[i] += s[i] * r;
-            }
-        }
+        sweep_nodes::<ENERGY, AVX2>(
+            &self.u[from - 1..=to],
+            &self.k[from - 1..to],
+            &mut self.v[from..to],
+            &self.dt_inverse_mass[from..to],
+            &self.mass[from..to],
+            lanes,
+        );
     }
 
     /// Velocity update of one padded node `p` carrying an external force.
     #[inline(always)]
-    fn update_node<const ENERGY: bool>(&mut self, p: usize, force: f64, lanes: &mut Lanes) {
-        let (u, k) = (&self.u, &self.k);
-        let r = k[p] * (u[p + 1] - u[p]) - k[p - 1] * (u[p] - u[p - 1]) + force;
-        let old = self.v[p];
-        let new = old + self.dt_inverse_mass[p] * r;
-        self.v[p] = new;
-        if ENERGY {
-            let right = u[p + 1] - u[p];
-            lanes.strain[0] += k[p] * right * right;
-            lanes.staggered[0] += self.mass[p] * old * new;
-            lanes.kinetic[0] += self.mass[p] * (old + new) * (old + new);
+    pub(crate) fn update_node<const ENERGY: bool>(
+        &mut self,
+        p: usize,
+        force: f64,
+        lanes: &mut Lanes,
+    ) {
+        let u = [self.u[p - 1], self.u[p], self.u[p + 1]];
+        let (k, dt_over_m, m) = (
+            [self.k[p - 1], self.k[p]],
+            self.dt_inverse_mass[p],
+            self.mass[p],
+        );
+        update_one_node::<ENERGY>(u, k, Some(force), &mut self.v[p], [dt_over_m, m], lanes, 0);
+    }
+}
+
+/// The velocity update of one node from `u = [u_{j-1}, u_j, u_{j+1}]`, `k = [k_{j-1}, k_j]`,
+/// its external force `F_j` if loaded and `[dt/m_j, m_j]`, adding its energy terms to `lane`:
+///
+/// ```text
+///   r = k_j (u_{j+1} - u_j) - k_{j-1} (u_j - u_{j-1}) [+ F_j],   v' = v + dt/m_j r,
+///   strain += k_j (u_{j+1} - u_j)^2,  staggered += m_j v v',  kinetic += m_j (v + v')^2,
+/// ```
+///
+/// the operations of [`sweep_nodes`] for an unloaded node (no `+ 0.0`: it would turn a `-0.0`
+/// into `+0.0`).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn update_one_node<const ENERGY: bool>(
+    u: [f64; 3],
+    k: [f64; 2],
+    force: Option<f64>,
+    v: &mut f64,
+    [dt_over_m, m]: [f64; 2],
+    lanes: &mut Lanes,
+    lane: usize,
+) {
+    let right = u[2] - u[1];
+    let r = k[1] * right - k[0] * (u[1] - u[0]);
+    let r = match force {
+        Some(force) => r + force,
+        None => r,
+    };
+    let old = *v;
+    let new = old + dt_over_m * r;
+    *v = new;
+    if ENERGY {
+        lanes.strain[lane] += k[1] * right * right;
+        lanes.staggered[lane] += m * old * new;
+        lanes.kinetic[lane] += m * (old + new) * (old + new);
+    }
+}
+
+/// Velocity update of the nodes of `v` (no external force), node `i` of the slice adding to
+/// lane `i % LANES`: `u` and `k` start one node to the left (`u.len() = v.len() + 2`,
+/// `k.len() = v.len() + 1`), `s` = `dt/m`, `m` the masses.
+#[inline(always)]
+pub(crate) fn sweep_nodes<const ENERGY: bool, const AVX2: bool>(
+    u: &[f64],
+    k: &[f64],
+    v: &mut [f64],
+    s: &[f64],
+    m: &[f64],
+    lanes: &mut Lanes,
+) {
+    if ENERGY {
+        // Node i adds to lane i % LANES: independent partial sums the compiler can keep
+        // in vector registers; fixed order, so the result is deterministic.
+        let (mut strain, mut staggered, mut kinetic) =
+            (lanes.strain, lanes.staggered, lanes.kinetic);
+        #[cfg(target_arch = "x86_64")]
+        let avx2_done = if AVX2 {
+            // SAFETY: `AVX2` is true only in functions compiled with AVX2 and called only when
+            // the CPU has it (`advance_avx2`, the tiled kernel's AVX2 copies).
+            Some(unsafe {
+                crate::kernel_avx2::sweep_with_energy(
+                    u,
+                    k,
+                    v,
+                    s,
+                    m,
+                    &mut strain,
+                    &mut staggered,
+                    &mut kinetic,
+                )
+            })
+        } else {
+            None
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let avx2_done: Option<usize> = None;
+        let whole = v.len() / LANES * LANES;
+        let portable_from = avx2_done.unwrap_or(0);
+        for base in (portable_from..whole).step_by(LANES) {
+            let uu: &[f64; LANES + 2] = u[base..base + LANES + 2]
+                .try_into()
+                .expect("fixed-size window");
+            let kk: &[f64; LANES + 1] = k[base..base + LANES + 1]
+                .try_into()
+                .expect("fixed-size window");
+            let ss: &[f64; LANES] = s[base..base + LANES].try_into().expect("fixed-size window");
+            let mm: &[f64; LANES] = m[base..base + LANES].try_into().expect("fixed-size window");
+            let vv: &mut [f64; LANES] = (&mut v[base..base + LANES])
+                .try_into()
+                .expect("fixed-size window");
+            for l in 0..LANES {
+                let right = uu[l + 2] - uu[l + 1];
+                let r = kk[l + 1] * right - kk[l] * (uu[l + 1] - uu[l]);
+                let old = vv[l];
+                let new = old + ss[l] * r;
+                vv[l] = new;
+                strain[l] += kk[l + 1] * right * right;
+                staggered[l] += mm[l] * old * new;
+                kinetic[l] += mm[l] * (old + new) * (old + new);
+            }
+        }
+        for i in whole..v.len() {
+            let (l, right) = (i % LANES, u[i + 2] - u[i + 1]);
+            let r = k[i + 1] * right - k[i] * (u[i + 1] - u[i]);
+            let old = v[i];
+            let new = old + s[i] * r;
+            v[i] = new;
+            strain[l] += k[i + 1] * right * right;
+            staggered[l] += m[i] * old * new;
+            kinetic[l] += m[i] * (old + new) * (old + new);
+        }
+        *lanes = Lanes {
+            strain,
+            staggered,
+            kinetic,
+        };
+    } else {
+        for i in 0..v.len() {
+            let r = k[i + 1] * (u[i + 2] - u[i + 1]) - k[i] * (u[i + 1] - u[i]);
+            v[i] += s[i] * r;
         }
     }
+}
+
+/// Real nodes from which a kernel runs its blocks of steps on every core by default (below,
+/// one thread: each thread's region should hold many tiles for the pipeline to pay).
+pub const PARALLEL_FROM_NODES: usize = 100_000;
+
+/// The default thread count of a bar of `nodes` real nodes: from [`PARALLEL_FROM_NODES`] on,
+/// the `COURANT_THREADS` environment variable when it holds a positive integer, else every core
+/// the process may use (`std::thread::available_parallelism`); below, one. Results do not
+/// depend on it (bit-identical whatever the count).
+pub fn default_threads(nodes: usize) -> usize {
+    if nodes < PARALLEL_FROM_NODES {
+        return 1;
+    }
+    std::env::var("COURANT_THREADS")
+        .ok()
+        .and_then(|text| text.trim().parse::<usize>().ok())
+        .filter(|&threads| threads > 0)
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
 }
 
 /// Whether the running CPU has AVX2 (the blocked sweeps' intrinsics and AVX2-compiled copies

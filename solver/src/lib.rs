@@ -33,6 +33,8 @@ pub mod integrator;
 pub mod kernel;
 #[cfg(target_arch = "x86_64")]
 mod kernel_avx2;
+mod kernel_pipeline;
+pub mod kernel_tiled;
 pub mod load;
 pub mod mass;
 pub mod matrix_kernel;

@@ -271,14 +271,26 @@ impl Model {
     /// Net internal force on node `i`, `-(K u)_i = N_i - N_{i-1}` with element forces
     /// `N_e = k_e (u_{e+1} - u_e)`.
     pub fn internal_force_at(&self, u: &[f64], i: usize) -> f64 {
+        let left = if i > 0 { u[i - 1] } else { 0.0 };
+        let right = if i < self.stiffness.len() {
+            u[i + 1]
+        } else {
+            0.0
+        };
+        self.internal_force_from(i, [left, u[i], right])
+    }
+
+    /// [`Self::internal_force_at`] from the displacements `[u_{i-1}, u_i, u_{i+1}]` alone (a
+    /// missing neighbour of an end node is ignored): the same operations.
+    pub fn internal_force_from(&self, i: usize, [u_left, u_i, u_right]: [f64; 3]) -> f64 {
         let k = &self.stiffness;
         let right = if i < k.len() {
-            k[i] * (u[i + 1] - u[i])
+            k[i] * (u_right - u_i)
         } else {
             0.0
         };
         let left = if i > 0 {
-            k[i - 1] * (u[i] - u[i - 1])
+            k[i - 1] * (u_i - u_left)
         } else {
             0.0
         };
@@ -297,6 +309,11 @@ impl Model {
     /// Acceleration of node `i` under the lumped mass, `a_i = (F_i - (K u)_i)/m_i` (0 at fixed nodes).
     pub fn acceleration_at(&self, u: &[f64], i: usize, t: f64) -> f64 {
         self.inverse_mass[i] * (self.external_force_at(i, t) + self.internal_force_at(u, i))
+    }
+
+    /// [`Self::acceleration_at`] from `[u_{i-1}, u_i, u_{i+1}]` alone: the same operations.
+    pub fn acceleration_from(&self, i: usize, u: [f64; 3], t: f64) -> f64 {
+        self.inverse_mass[i] * (self.external_force_at(i, t) + self.internal_force_from(i, u))
     }
 
     /// Strain energy `U = 1/2 sum_e k_e (u_{e+1} - u_e)^2`.

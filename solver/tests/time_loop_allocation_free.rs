@@ -6,7 +6,8 @@
 //!   new(model, dt)  --allocates-->  [ step  step  step ... ]  --0 allocations-->
 //! ```
 //!
-//! Proves: one step of lumped CD, of CD with each non-diagonal mass (CMM, AMM: partitioned
+//! Proves: one step of lumped CD (and a block of its steps on one thread; on two threads a
+//! block allocates a fixed few buffers and its thread, never per step), of CD with each non-diagonal mass (CMM, AMM: partitioned
 //! tridiagonal solve; RMM: product with M^-1), of Park's scheme (global and local stepping,
 //! both variants), and of the Noh-Bathe stepper with every mass (stepped through the public
 //! `Integrator` interface, as the shared time loop steps it) performs exactly zero heap
@@ -18,6 +19,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use courant_solver::fixtures::graded_seed_bar;
 use courant_solver::integrator::{InitialState, Integrator};
 use courant_solver::kernel::LumpedCentralDifference;
+use courant_solver::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock, TILE};
 use courant_solver::matrix_kernel::{MatrixCentralDifference, StartState};
 use courant_solver::schemes::noh_bathe::NohBatheStepper;
 use courant_solver::{MassKind, MassOperator, ParkOptions, ParkScheme, ParkVariant, Start};
@@ -41,6 +43,10 @@ unsafe impl GlobalAlloc for Counting {
         unsafe { System.realloc(ptr, layout, new_size) }
     }
 }
+
+/// Most allocations a block of steps on two threads may make: the pipeline's three vectors and
+/// what `std::thread::scope` and one spawned thread allocate.
+const PIPELINE_ALLOCATIONS: usize = 16;
 
 #[global_allocator]
 static GLOBAL: Counting = Counting;
@@ -72,6 +78,29 @@ fn every_time_stepping_kernel_steps_without_allocating() {
         }),
         0,
         "lumped CD"
+    );
+
+    // Blocks of steps (temporal blocking): none on one thread; on two, only the pipeline's
+    // counters and the threads, a fixed few per block of up to 1024 steps (not per step).
+    let mut block = StepBlock::new(&[0], &[3, 4], &[4]);
+    block.forces.fill(-1.0);
+    assert_eq!(
+        allocations_during(5, || lumped
+            .advance_block::<true>(&mut block, MAX_BLOCK_STEPS)),
+        0,
+        "lumped CD, blocks of steps on one thread"
+    );
+    let wide = graded_seed_bar(6 * TILE).unwrap();
+    let zeros = vec![0.0; 6 * TILE + 1];
+    let mut lumped = LumpedCentralDifference::new(&wide, 0.5 * element_dt, &zeros, &zeros);
+    lumped.set_threads(2);
+    lumped.advance_block::<true>(&mut block, MAX_BLOCK_STEPS);
+    let per_block = allocations_during(5, || {
+        lumped.advance_block::<true>(&mut block, MAX_BLOCK_STEPS)
+    }) / 5;
+    assert!(
+        (1..=PIPELINE_ALLOCATIONS).contains(&per_block),
+        "{per_block} allocations per block on two threads"
     );
 
     for kind in [

@@ -4,6 +4,7 @@
 use super::settings::Start;
 use crate::error::InputError;
 use crate::kernel::StepEnergy;
+use crate::kernel_tiled::StepBlock;
 use crate::mass::MassOperator;
 use crate::model::Model;
 
@@ -90,5 +91,36 @@ pub trait Integrator: Sized {
     /// forward by increments (any mismatch counts as balance error); `None` otherwise.
     fn recomputed_balance_kinetic(&mut self) -> Option<f64> {
         None
+    }
+
+    /// Whether the stepper takes blocks of steps in one pass over the bar (temporal blocking,
+    /// [`crate::kernel_tiled`]): then the loop may call [`Integrator::step_block`] and
+    /// [`Integrator::probed_velocity_and_acceleration`] instead of single steps.
+    fn steps_in_blocks(&self) -> bool {
+        false
+    }
+
+    /// Advance `steps` steps with the loads of `block.forces`, filling the block's energies and
+    /// probes: bit-identical to `steps` calls of [`Integrator::step`]. Called only when
+    /// [`Integrator::steps_in_blocks`] is true.
+    fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
+        let _ = (block, steps);
+        unreachable!("step_block called on a stepper without blocks of steps");
+    }
+
+    /// `(v^n, a^n)` at node `i`, time `t = t^n`, from `[u_{i-1}, u_i, u_{i+1}]` and the
+    /// half-step velocity `v^{n+1/2}_i` recorded by a block: what
+    /// [`Integrator::velocity_and_acceleration_at`] gives at that level. Called only when
+    /// [`Integrator::steps_in_blocks`] is true.
+    fn probed_velocity_and_acceleration(
+        &self,
+        model: &Model,
+        i: usize,
+        t: f64,
+        u: [f64; 3],
+        half_step_velocity: f64,
+    ) -> (f64, f64) {
+        let _ = (model, i, t, u, half_step_velocity);
+        unreachable!("probed values asked of a stepper without blocks of steps");
     }
 }

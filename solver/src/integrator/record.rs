@@ -47,14 +47,7 @@ pub(super) fn record<'a, I: Integrator>(
     next_profile: &mut std::iter::Peekable<std::slice::Iter<'a, usize>>,
 ) {
     let u = kernel.displacement();
-    if next_profile.peek() == Some(&&step) {
-        next_profile.next();
-        output.profiles.push(StressProfile {
-            step,
-            time,
-            stress: model.element_stress(u),
-        });
-    }
+    record_profile(model, u, step, time, output, next_profile);
     if step.is_multiple_of(request.history_every) && !output.histories.is_empty() {
         for history in &mut output.histories {
             let i = history.node;
@@ -73,5 +66,24 @@ pub(super) fn record<'a, I: Integrator>(
                 acceleration,
             });
         }
+    }
+}
+
+/// Record the stress profile of displacements `u` at step `n` when `n` is the next profile step.
+pub(super) fn record_profile<'a>(
+    model: &Model,
+    u: &[f64],
+    step: usize,
+    time: f64,
+    output: &mut RunOutput,
+    next_profile: &mut std::iter::Peekable<std::slice::Iter<'a, usize>>,
+) {
+    if next_profile.peek() == Some(&&step) {
+        next_profile.next();
+        output.profiles.push(StressProfile {
+            step,
+            time,
+            stress: model.element_stress(u),
+        });
     }
 }

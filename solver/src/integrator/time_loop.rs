@@ -19,10 +19,14 @@
 
 use super::contract::{InitialState, Integrator};
 use super::guard::{BlowUpGuard, impulse_energy};
-use super::record::record;
+use super::record::{record, record_profile};
 use super::scheme::RunSetup;
+use super::settings::OutputRequest;
 use crate::error::{DivergenceError, RunError};
-use crate::output::{EnergyLog, EnergySample, NodeHistory, RunOutput};
+use crate::kernel::StepEnergy;
+use crate::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock};
+use crate::model::Model;
+use crate::output::{EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput};
 
 /// Run `setup.steps` steps of the scheme whose stepper is `I`, with its `parameters`. The caller
 /// ([`super::Integration::run`]) has validated the request and the step.
@@ -129,7 +133,6 @@ pub fn run<I: Integrator>(
     });
     output.energy.scale = kinetic0 + strain0;
     let mut guard = BlowUpGuard::new(stability.blowup_energy_ratio, kinetic0 + strain0);
-    let mut max_work = 0.0_f64;
     record(
         model,
         &integrator,
@@ -143,10 +146,77 @@ pub fn run<I: Integrator>(
 
     eval_forces(0.0, &mut forces);
     guard.admit(impulse_energy(model, dt, &forces));
-    let mut previous_forces = forces.clone();
-    let mut work = 0.0;
+    let mut ledger = Ledger {
+        previous_forces: forces.clone(),
+        work: 0.0,
+        max_work: 0.0,
+        invariant0,
+        guard,
+    };
     let mut displaced = vec![0.0; forces.len()];
-    for step in 1..=steps {
+    let mut after = vec![0.0; forces.len()];
+    // Temporal blocking where the stepper has it, for runs that must stay stable (an allowed
+    // unstable run steps singly, so a divergence names the node of its own step).
+    let mut blocks = (integrator.steps_in_blocks() && !stability.allow_unstable)
+        .then(|| BlockBuffers::new(model, &load_nodes, request));
+    let mut step = 0;
+    while step < steps {
+        let depth = match &blocks {
+            Some(_) => block_depth(step, steps, next_profile.peek().copied().copied()),
+            None => 1,
+        };
+        if let (Some(buffers), true) = (&mut blocks, depth >= 2) {
+            let loads = forces.len();
+            for (slot, f) in displaced.iter_mut().zip(&forces) {
+                *slot = integrator.displacement()[f.0];
+            }
+            for s in 0..depth {
+                eval_forces((step + s + 1) as f64 * dt, &mut forces);
+                for (cell, f) in buffers.block.forces[s * loads..].iter_mut().zip(&forces) {
+                    *cell = f.1;
+                }
+            }
+            integrator.step_block(&mut buffers.block, depth);
+            for s in 0..depth {
+                step += 1;
+                let t = step as f64 * dt;
+                eval_forces(t, &mut forces);
+                let probes =
+                    &buffers.block.u_values[s * buffers.u_width..(s + 1) * buffers.u_width];
+                for (value, &p) in after.iter_mut().zip(&buffers.load_probe) {
+                    *value = probes[p];
+                }
+                let sums = buffers.block.energies[s];
+                let tripped = ledger.after_step(
+                    model,
+                    dt,
+                    step,
+                    &mut forces,
+                    &displaced,
+                    &after,
+                    sums,
+                    &mut output,
+                );
+                if let Some(energy_ratio) = tripped {
+                    return Err(diverged(&integrator, step, t, energy_ratio, output));
+                }
+                sample_energy(&ledger, step, steps, t, sums, request, &mut output, || None);
+                if step.is_multiple_of(request.history_every) {
+                    buffers.record_histories(model, &integrator, s, step, t, &mut output);
+                }
+                std::mem::swap(&mut displaced, &mut after);
+            }
+            record_profile(
+                model,
+                integrator.displacement(),
+                step,
+                step as f64 * dt,
+                &mut output,
+                &mut next_profile,
+            );
+            continue;
+        }
+        step += 1;
         let t = step as f64 * dt;
         eval_forces(t, &mut forces);
         // Trapezoidal work: 1/2 (F^n + F^{n+1}) (u^{n+1} - u^n) at the loaded nodes.
@@ -154,63 +224,27 @@ pub fn run<I: Integrator>(
             *slot = integrator.displacement()[f.0];
         }
         let sums = integrator.step(model, t - dt, &forces);
-        let u = integrator.displacement();
-        work += forces
-            .iter()
-            .zip(&previous_forces)
-            .zip(&displaced)
-            .map(|((f, f0), u0)| 0.5 * (f.1 + f0.1) * (u[f.0] - u0))
-            .sum::<f64>();
-        guard.admit(work.abs());
-        guard.admit(impulse_energy(model, dt, &forces));
-        std::mem::swap(&mut forces, &mut previous_forces);
-
-        let balance_error = sums.kinetic_staggered + sums.strain - work - invariant0;
-        let mechanical = sums.kinetic + sums.strain;
-        max_work = max_work.max(work.abs());
-        let energy = &mut output.energy;
-        energy.max_balance_error = energy.max_balance_error.max(balance_error.abs());
-        energy.scale = energy.scale.max(max_work).max(mechanical);
-        output.steps = step;
-        if let Some(energy_ratio) = guard.tripped(mechanical) {
-            let u = integrator.displacement();
-            let node = (0..nodes).fold(0, |best, i| {
-                if u[i].abs() > u[best].abs() || u[i].is_nan() {
-                    i
-                } else {
-                    best
-                }
-            });
-            let error = DivergenceError {
-                step,
-                time: t,
-                node,
-                energy_ratio,
-                courant: output.courant,
-            };
-            return Err(RunError::Diverged {
-                error,
-                partial: Box::new(output),
-            });
+        for (slot, f) in after.iter_mut().zip(&forces) {
+            *slot = integrator.displacement()[f.0];
         }
-        if step.is_multiple_of(request.energy_every) || step == steps {
-            // A stepper that carries T* forward by increments recomputes it from M at each
-            // sample; any mismatch counts as balance error.
-            let balance_error = match integrator.recomputed_balance_kinetic() {
-                Some(from_mass) => balance_error + (from_mass - sums.kinetic_staggered),
-                None => balance_error,
-            };
-            energy.max_balance_error = energy.max_balance_error.max(balance_error.abs());
-            energy.samples.push(EnergySample {
-                step,
-                time: t,
-                kinetic: sums.kinetic,
-                kinetic_staggered: sums.kinetic_staggered,
-                strain: sums.strain,
-                work,
-                balance_error,
-            });
+        let tripped = ledger.after_step(
+            model,
+            dt,
+            step,
+            &mut forces,
+            &displaced,
+            &after,
+            sums,
+            &mut output,
+        );
+        if let Some(energy_ratio) = tripped {
+            return Err(diverged(&integrator, step, t, energy_ratio, output));
         }
+        // A stepper that carries T* forward by increments recomputes it from M at each sample;
+        // any mismatch counts as balance error.
+        sample_energy(&ledger, step, steps, t, sums, request, &mut output, || {
+            integrator.recomputed_balance_kinetic()
+        });
         record(
             model,
             &integrator,
@@ -223,4 +257,206 @@ pub fn run<I: Integrator>(
         );
     }
     Ok(output)
+}
+
+/// The steps of the next block: up to [`MAX_BLOCK_STEPS`], ending at the last step and at the
+/// next profile step (a profile needs the whole bar at its level).
+fn block_depth(step: usize, steps: usize, next_profile: Option<usize>) -> usize {
+    let mut end = (step + MAX_BLOCK_STEPS).min(steps);
+    if let Some(profile) = next_profile.filter(|&p| p > step) {
+        end = end.min(profile);
+    }
+    end - step
+}
+
+/// What the loop carries from step to step: the loads of the last level, the trapezoidal work
+/// and the energy reference of the guard.
+struct Ledger {
+    previous_forces: Vec<(usize, f64)>,
+    work: f64,
+    max_work: f64,
+    invariant0: f64,
+    guard: BlowUpGuard,
+}
+
+impl Ledger {
+    /// Account for step `step` (loads `forces` = `F^{n+1}`, displacements of the loaded nodes
+    /// `before` = `u^n` and `after` = `u^{n+1}`, energies `sums`): the work, the guard, the
+    /// balance error and the energy scale; `Some(ratio)` when the guard trips. `forces` is left
+    /// holding `F^n`'s buffer (swapped with the kept loads).
+    #[allow(clippy::too_many_arguments)]
+    fn after_step(
+        &mut self,
+        model: &Model,
+        dt: f64,
+        step: usize,
+        forces: &mut Vec<(usize, f64)>,
+        before: &[f64],
+        after: &[f64],
+        sums: StepEnergy,
+        output: &mut RunOutput,
+    ) -> Option<f64> {
+        self.work += forces
+            .iter()
+            .zip(&self.previous_forces)
+            .zip(before.iter().zip(after))
+            .map(|((f, f0), (u0, u))| 0.5 * (f.1 + f0.1) * (u - u0))
+            .sum::<f64>();
+        self.guard.admit(self.work.abs());
+        self.guard.admit(impulse_energy(model, dt, forces));
+        std::mem::swap(forces, &mut self.previous_forces);
+
+        let balance_error = sums.kinetic_staggered + sums.strain - self.work - self.invariant0;
+        let mechanical = sums.kinetic + sums.strain;
+        self.max_work = self.max_work.max(self.work.abs());
+        let energy = &mut output.energy;
+        energy.max_balance_error = energy.max_balance_error.max(balance_error.abs());
+        energy.scale = energy.scale.max(self.max_work).max(mechanical);
+        output.steps = step;
+        self.guard.tripped(mechanical)
+    }
+
+    /// `T* + U - W - E^0` after a step.
+    fn balance_error(&self, sums: StepEnergy) -> f64 {
+        sums.kinetic_staggered + sums.strain - self.work - self.invariant0
+    }
+}
+
+/// Log the energies of step `step` when it is a sample (every `energy_every` steps and the
+/// last); `recomputed` gives `T*` recomputed from the mass for steppers that carry it by
+/// increments.
+#[allow(clippy::too_many_arguments)]
+fn sample_energy(
+    ledger: &Ledger,
+    step: usize,
+    steps: usize,
+    time: f64,
+    sums: StepEnergy,
+    request: &OutputRequest,
+    output: &mut RunOutput,
+    recomputed: impl FnOnce() -> Option<f64>,
+) {
+    if !(step.is_multiple_of(request.energy_every) || step == steps) {
+        return;
+    }
+    let balance_error = ledger.balance_error(sums);
+    let balance_error = match recomputed() {
+        Some(from_mass) => balance_error + (from_mass - sums.kinetic_staggered),
+        None => balance_error,
+    };
+    let energy = &mut output.energy;
+    energy.max_balance_error = energy.max_balance_error.max(balance_error.abs());
+    energy.samples.push(EnergySample {
+        step,
+        time,
+        kinetic: sums.kinetic,
+        kinetic_staggered: sums.kinetic_staggered,
+        strain: sums.strain,
+        work: ledger.work,
+        balance_error,
+    });
+}
+
+/// The error of a diverged run: the step, its time, the node of largest `|u|` (or the first
+/// NaN) in the stepper's state, the energy ratio and the Courant number, with the output so far.
+fn diverged<I: Integrator>(
+    integrator: &I,
+    step: usize,
+    time: f64,
+    energy_ratio: f64,
+    output: RunOutput,
+) -> RunError {
+    let u = integrator.displacement();
+    let node = (0..u.len()).fold(0, |best, i| {
+        if u[i].abs() > u[best].abs() || u[i].is_nan() {
+            i
+        } else {
+            best
+        }
+    });
+    let error = DivergenceError {
+        step,
+        time,
+        node,
+        energy_ratio,
+        courant: output.courant,
+    };
+    RunError::Diverged {
+        error,
+        partial: Box::new(output),
+    }
+}
+
+/// The buffers of blocks of steps: the [`StepBlock`] with the loaded nodes, and every history
+/// node with its neighbours as displacement probes and itself as a velocity probe.
+struct BlockBuffers {
+    block: StepBlock,
+    /// Probe index of each loaded node (in the loop's load order).
+    load_probe: Vec<usize>,
+    /// Probe indices `[i-1, i, i+1]` and the velocity probe of each history.
+    history_probes: Vec<([usize; 3], usize)>,
+    u_width: usize,
+    v_width: usize,
+}
+
+impl BlockBuffers {
+    fn new(model: &Model, load_nodes: &[usize], request: &OutputRequest) -> Self {
+        let last = model.bar().node_count() - 1;
+        let neighbours = |i: usize| [i.saturating_sub(1), i, (i + 1).min(last)];
+        let mut u_probes: Vec<usize> = load_nodes.to_vec();
+        for &i in &request.history_nodes {
+            u_probes.extend(neighbours(i));
+        }
+        let block = StepBlock::new(load_nodes, &u_probes, &request.history_nodes);
+        let index = |probes: &[usize], node: usize| probes.binary_search(&node).unwrap_or(0);
+        let load_probe = load_nodes
+            .iter()
+            .map(|&n| index(block.u_probes(), n))
+            .collect();
+        let history_probes = request
+            .history_nodes
+            .iter()
+            .map(|&i| {
+                (
+                    neighbours(i).map(|n| index(block.u_probes(), n)),
+                    index(block.v_probes(), i),
+                )
+            })
+            .collect();
+        Self {
+            u_width: block.u_probes().len(),
+            v_width: block.v_probes().len(),
+            block,
+            load_probe,
+            history_probes,
+        }
+    }
+
+    /// The history samples of block row `s` (step `step`, time `t`), as
+    /// [`super::record::record`] takes them from the state.
+    fn record_histories<I: Integrator>(
+        &self,
+        model: &Model,
+        integrator: &I,
+        s: usize,
+        step: usize,
+        t: f64,
+        output: &mut RunOutput,
+    ) {
+        let u = &self.block.u_values[s * self.u_width..(s + 1) * self.u_width];
+        let v = &self.block.v_values[s * self.v_width..(s + 1) * self.v_width];
+        for (history, (around, at)) in output.histories.iter_mut().zip(&self.history_probes) {
+            let i = history.node;
+            let three = around.map(|p| u[p]);
+            let (velocity, acceleration) =
+                integrator.probed_velocity_and_acceleration(model, i, t, three, v[*at]);
+            history.samples.push(HistorySample {
+                step,
+                time: t,
+                displacement: three[1],
+                velocity,
+                acceleration,
+            });
+        }
+    }
 }

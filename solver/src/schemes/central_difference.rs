@@ -13,6 +13,7 @@ use crate::integrator::{
     InitialState, Integrator, RunSetup, Scheme, SchemeEntry, SchemeLimit, Start, time_loop,
 };
 use crate::kernel::{LumpedCentralDifference, StepEnergy};
+use crate::kernel_tiled::StepBlock;
 use crate::mass::{MassKind, MassOperator};
 use crate::matrix_kernel::{MatrixCentralDifference, StartState};
 use crate::model::Model;
@@ -109,6 +110,15 @@ pub trait CentralDifferenceKernel: Sized {
     fn staggered_from_mass(&mut self) -> Option<f64> {
         None
     }
+    /// Whether [`Self::step_block`] is available (the lumped kernel's temporal blocking).
+    fn steps_in_blocks(&self) -> bool {
+        false
+    }
+    /// `steps` steps with their energies in one pass ([`crate::kernel_tiled`]).
+    fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
+        let _ = (block, steps);
+        unreachable!("a matrix-mass kernel has no blocks of steps");
+    }
 }
 
 impl CentralDifferenceKernel for LumpedCentralDifference {
@@ -136,6 +146,12 @@ impl CentralDifferenceKernel for LumpedCentralDifference {
     #[inline]
     fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
         self.step_with_energy(forces)
+    }
+    fn steps_in_blocks(&self) -> bool {
+        true
+    }
+    fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
+        self.advance_block::<true>(block, steps);
     }
 }
 
@@ -237,5 +253,27 @@ impl<K: CentralDifferenceKernel> Integrator for CentralDifferenceStepper<K> {
 
     fn recomputed_balance_kinetic(&mut self) -> Option<f64> {
         self.kernel.staggered_from_mass()
+    }
+
+    fn steps_in_blocks(&self) -> bool {
+        self.kernel.steps_in_blocks()
+    }
+
+    fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
+        self.kernel.step_block(block, steps);
+    }
+
+    /// `a^n` of the lumped mass from the three displacements, `v^n = v^{n+1/2} - dt/2 a^n`: the
+    /// operations of [`Integrator::velocity_and_acceleration_at`].
+    fn probed_velocity_and_acceleration(
+        &self,
+        model: &Model,
+        i: usize,
+        t: f64,
+        u: [f64; 3],
+        half_step_velocity: f64,
+    ) -> (f64, f64) {
+        let a = model.acceleration_from(i, u, t);
+        (half_step_velocity - 0.5 * self.dt() * a, a)
     }
 }
