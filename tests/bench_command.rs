@@ -40,7 +40,9 @@ fn bench_writes_one_row_per_size_with_consistent_ratios() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "N,c_variant,c_ns,kernel_ns,kernel_over_c,kernel_energy_ns,loop_ns,loop_over_kernel,loop_over_c"
+        "N,threads,c_variant,c_ns,kernel_ns,kernel_over_c,kernel_energy_ns,blocked_ns,\
+         blocked_energy_ns,loop_1t_ns,loop_ns,loop_1t_over_kernel,loop_1t_over_blocked,\
+         loop_speedup,loop_over_c"
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 2);
@@ -70,18 +72,25 @@ fn bench_writes_one_row_per_size_with_consistent_ratios() {
     );
     for (row, n) in rows.iter().zip(["200", "1000"]) {
         assert_eq!(row[0], n);
+        // Below 1e5 nodes a run takes one thread.
+        assert_eq!(row[1], "1");
         // No C reference: its columns and ratios are empty.
-        assert!(row[1].is_empty() && row[2].is_empty() && row[4].is_empty() && row[8].is_empty());
+        assert!(row[2].is_empty() && row[3].is_empty() && row[5].is_empty() && row[14].is_empty());
         let value = |i: usize| row[i].parse::<f64>().unwrap();
-        assert!(value(3) > 0.0 && value(5) > 0.0, "{row:?}");
-        // The loop time is a difference of two runs: it may be noise-small, never the ratio's
-        // inconsistency. Each of the three is written to 4 significant digits (half a unit in
-        // the last place: 5e-4 relative), so the written ratio may differ by 1.5e-3.
-        let ratio = value(6) / value(3);
-        assert!(
-            (value(7) - ratio).abs() <= 1.5e-3 * ratio.abs() + 1e-12,
-            "{row:?}"
-        );
+        for column in [4, 6, 7, 8] {
+            assert!(value(column) > 0.0, "column {column}: {row:?}");
+        }
+        // The loop times are differences of two runs: they may be noise-small, never the
+        // ratios' inconsistency. Each is written to 4 significant digits (half a unit in the
+        // last place: 5e-4 relative), so a written ratio may differ by 1.5e-3 from the
+        // quotient of the written columns.
+        for (ratio, over, under) in [(11, 9, 4), (12, 9, 7), (13, 9, 10)] {
+            let quotient = value(over) / value(under);
+            assert!(
+                (value(ratio) - quotient).abs() <= 1.5e-3 * quotient.abs() + 1e-12,
+                "column {ratio}: {row:?}"
+            );
+        }
     }
 }
 

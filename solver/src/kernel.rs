@@ -425,13 +425,28 @@ pub(crate) fn sweep_nodes<const ENERGY: bool, const AVX2: bool>(
 /// one thread: each thread's region should hold many tiles for the pipeline to pay).
 pub const PARALLEL_FROM_NODES: usize = 100_000;
 
-/// The default thread count of a bar of `nodes` real nodes: from [`PARALLEL_FROM_NODES`] on,
-/// the `COURANT_THREADS` environment variable when it holds a positive integer, else every core
-/// the process may use (`std::thread::available_parallelism`); below, one. Results do not
-/// depend on it (bit-identical whatever the count).
+/// The thread count set by [`set_default_threads`] (0: none).
+static DEFAULT_THREADS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+
+/// Set (or with `None` clear) the thread count [`default_threads`] gives bars from
+/// [`PARALLEL_FROM_NODES`] on, for the whole process (`courant bench` times one and all).
+pub fn set_default_threads(threads: Option<usize>) {
+    let value = threads.map_or(0, |t| t.max(1));
+    DEFAULT_THREADS.store(value, std::sync::atomic::Ordering::Relaxed);
+}
+
+/// The default thread count of a bar of `nodes` real nodes: below [`PARALLEL_FROM_NODES`] one;
+/// from there on, the count of [`set_default_threads`] if set, else the `COURANT_THREADS`
+/// environment variable when it holds a positive integer, else every core the process may use
+/// (`std::thread::available_parallelism`). Results do not depend on it (bit-identical whatever
+/// the count).
 pub fn default_threads(nodes: usize) -> usize {
     if nodes < PARALLEL_FROM_NODES {
         return 1;
+    }
+    let set = DEFAULT_THREADS.load(std::sync::atomic::Ordering::Relaxed);
+    if set > 0 {
+        return set;
     }
     std::env::var("COURANT_THREADS")
         .ok()

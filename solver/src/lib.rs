@@ -18,7 +18,8 @@
 //!
 //! Layers, lowest first: `mesh`, `bar`, `load`, `model` (the problem); `tridiagonal`,
 //! `partitioned_ldl`, `banded`, `mass` (operators); `stability`, `spectrum`, `time_step`;
-//! `kernel`, `matrix_kernel`, `park` (step kernels); `integrator` (the public integrator
+//! `kernel`, `kernel_tiled` and `kernel_pipeline` (the lumped step, and blocks of it: temporal
+//! blocking on one or several threads), `matrix_kernel`, `park` (step kernels); `integrator` (the public integrator
 //! interface every scheme honours, the shared time loop); `schemes` (central difference, Park,
 //! Noh-Bathe, each written against the interface, and the registry scenes name them through);
 //! `contact` (contact runs, stepping the bulk with the `cd` stepper); `output`, `error`,

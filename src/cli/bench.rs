@@ -1,21 +1,29 @@
-//! `courant bench`: the C reference of the lumped central-difference step, courant's kernel and
+//! `courant bench`: the C reference of the lumped central-difference step, courant's kernels and
 //! courant's run loop, timed side by side in one session on the machine at hand, and their
-//! ratios (issue 17, target 5), so that a user sees on their own machine what the README's speed
-//! table claims.
+//! ratios (issue 17, targets 1, 4 and 5), so that a user sees on their own machine what the
+//! README's speed table claims.
 //!
 //! What is timed, per element count N (node-steps = steps x (N + 1)), each the median over
 //! `reps` repetitions of about `node_steps` node-steps:
 //! - `c_ns`: the fastest variant (`two_pass`, `fused`, `blocked`) of
 //!   `benches/c_reference/cd_step.c` (compiled into the binary as text, built here with `$CC`,
 //!   default `gcc`, and `$CFLAGS`, default `-O3 -march=native`: the flags of
-//!   `benches/c_reference/run.sh`), which prints its own medians;
-//! - `kernel_ns`: `LumpedCentralDifference::step` on the same graded bar and start state
-//!   (`fixtures::graded_seed_bar`, Co 0.5, `fixtures::smooth_half_velocity`, F = 1 on node 0);
-//!   `kernel_energy_ns`: `step_with_energy`, the step runs take;
-//! - `loop_ns`: the run loop per step, `Scheme::run` of lumped CD on that bar from rest under its
-//!   load (the energy balance and the blow-up guard every step, the work of the load), as the
-//!   difference of runs of `2 S` and `S` steps over `S (N + 1)` (the start and the mass assembly
-//!   drop out); `loop_over_kernel` is target 1's ratio.
+//!   `benches/c_reference/run.sh`), which prints its own medians: one step per sweep;
+//! - `kernel_ns`: `LumpedCentralDifference::step`, one step per sweep, on the same graded bar
+//!   and start state (`fixtures::graded_seed_bar`, Co 0.5, `fixtures::smooth_half_velocity`,
+//!   F = 1 on node 0); `kernel_energy_ns`: `step_with_energy`;
+//! - `blocked_ns`, `blocked_energy_ns`: `advance_block` (temporal blocking: blocks of 1024
+//!   steps, 64 per pass over a tile) on one thread, without and with the energy sums;
+//! - `loop_1t_ns`, `loop_ns`: the run loop per step, `Scheme::run` of lumped CD on that bar from
+//!   rest under its load (energy balance and blow-up guard every step, the work of the load), on
+//!   one thread and on `threads` (the default of a run: every core from 1e5 nodes on), as the
+//!   difference of runs of `2 S` and `S` steps over `S (N + 1)` (start and mass drop out).
+//!   From 1e5 nodes on, the blocked kernel and the loop run at least 1024 steps (one block) per
+//!   repetition whatever `node_steps` says.
+//!
+//! Ratios: `loop_1t_over_kernel` (target 1 as the issue set it: the run against the one-step
+//! kernel), `loop_1t_over_blocked` (against the fastest bare kernel), `loop_speedup` (one thread
+//! over all: target 4), `kernel_over_c` and `loop_over_c`.
 //!
 //! Timings are medians of wall time on a possibly shared machine: repeat when in doubt. Nothing
 //! here is a test; no test asserts a time.
@@ -24,7 +32,8 @@ use crate::io::atomic::write_file_atomically;
 use crate::results::table::{Precision, Table};
 use courant_solver::fixtures::{graded_seed_bar, smooth_half_velocity};
 use courant_solver::integrator::OutputRequest;
-use courant_solver::kernel::LumpedCentralDifference;
+use courant_solver::kernel::{LumpedCentralDifference, default_threads, set_default_threads};
+use courant_solver::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock};
 use courant_solver::{CentralDifference, MassOperator, Model};
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
@@ -35,17 +44,32 @@ use std::time::Instant;
 const C_SOURCE: &str = include_str!("../../benches/c_reference/cd_step.c");
 
 /// The columns of the CSV `courant bench` writes.
-const COLUMNS: [&str; 9] = [
+const COLUMNS: [&str; 15] = [
     "N",
+    "threads",
     "c_variant",
     "c_ns",
     "kernel_ns",
     "kernel_over_c",
     "kernel_energy_ns",
+    "blocked_ns",
+    "blocked_energy_ns",
+    "loop_1t_ns",
     "loop_ns",
-    "loop_over_kernel",
+    "loop_1t_over_kernel",
+    "loop_1t_over_blocked",
+    "loop_speedup",
     "loop_over_c",
 ];
+
+/// How the kernel is timed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum KernelMode {
+    Step,
+    StepWithEnergy,
+    Blocked,
+    BlockedWithEnergy,
+}
 
 /// What `courant bench` measures and where it writes.
 #[derive(Debug, Clone, PartialEq)]
@@ -106,12 +130,22 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
         let measured = graded_seed_bar(n)
             .map_err(|e| e.to_string())
             .and_then(|model| {
-                let kernel = time_kernel(&model, options, false)?;
-                let energy = time_kernel(&model, options, true)?;
-                let run_loop = time_run_loop(&model, options)?;
-                Ok((kernel, energy, run_loop))
+                let modes = [
+                    KernelMode::Step,
+                    KernelMode::StepWithEnergy,
+                    KernelMode::Blocked,
+                    KernelMode::BlockedWithEnergy,
+                ];
+                let mut kernel = [0.0; 4];
+                for (time, mode) in kernel.iter_mut().zip(modes) {
+                    *time = time_kernel(&model, options, mode)?;
+                }
+                set_default_threads(Some(1));
+                let one = time_run_loop(&model, options);
+                set_default_threads(None);
+                Ok((kernel, one?, time_run_loop(&model, options)?))
             });
-        let (kernel, energy, run_loop) = match measured {
+        let ([kernel, energy, blocked, blocked_energy], loop_one, run_loop) = match measured {
             Ok(m) => m,
             Err(e) => {
                 eprintln!("error: N = {n}: {e}");
@@ -125,13 +159,19 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
         let ratio = |x: f64| c_row.map(|r| x / r.2);
         table.push(vec![
             n.into(),
+            default_threads(n + 1).into(),
             c_row.map(|r| r.1.clone()).into(),
             c_row.map(|r| r.2).into(),
             kernel.into(),
             ratio(kernel).into(),
             energy.into(),
+            blocked.into(),
+            blocked_energy.into(),
+            loop_one.into(),
             run_loop.into(),
-            (run_loop / kernel).into(),
+            (loop_one / kernel).into(),
+            (loop_one / blocked).into(),
+            (loop_one / run_loop).into(),
             ratio(run_loop).into(),
         ]);
     }
@@ -185,7 +225,8 @@ fn check(options: &BenchOptions) -> Result<(), String> {
         let first = std::fs::read_to_string(out)
             .ok()
             .and_then(|text| text.lines().next().map(String::from));
-        if first.as_deref() != Some(COLUMNS.join(",").as_str()) {
+        // Any version's header: every one starts with these two columns.
+        if !first.is_some_and(|line| line.starts_with("N,") && line.contains(",c_variant,")) {
             return Err(format!(
                 "--out: {} exists and is not a file `courant bench` wrote (its first line is not the bench header); give another path or remove it",
                 out.display()
@@ -200,36 +241,62 @@ fn steps_for(n: usize, options: &BenchOptions) -> usize {
     ((options.node_steps / (n + 1) as f64).ceil() as usize).max(1)
 }
 
+/// Steps of one repetition of the blocked kernel and of the run loop: [`steps_for`], at least
+/// one whole block ([`MAX_BLOCK_STEPS`]) from 1e5 nodes on, so that the threads' pipeline runs
+/// as in a real run (with fewer steps it would mostly fill and drain).
+fn block_steps_for(n: usize, options: &BenchOptions) -> usize {
+    let steps = steps_for(n, options);
+    if n + 1 >= courant_solver::kernel::PARALLEL_FROM_NODES {
+        steps.max(MAX_BLOCK_STEPS)
+    } else {
+        steps
+    }
+}
+
 /// The median of `times` (the upper one for an even count, as the C reference takes it).
 fn median(mut times: Vec<f64>) -> f64 {
     times.sort_by(f64::total_cmp);
     times[times.len() / 2]
 }
 
-/// ns per node-step of the bare lumped kernel (`energy`: with its energy sums).
-fn time_kernel(model: &Model, options: &BenchOptions, energy: bool) -> Result<f64, String> {
+/// ns per node-step of the bare lumped kernel in `mode` (blocks on one thread).
+fn time_kernel(model: &Model, options: &BenchOptions, mode: KernelMode) -> Result<f64, String> {
     let n = model.bar().element_count();
     let dt = 0.5 * model.bar().stiffest_element().1;
     let mut kernel =
         LumpedCentralDifference::new(model, dt, &vec![0.0; n + 1], &smooth_half_velocity(n));
+    kernel.set_threads(1);
     let forces = [(0usize, 1.0f64)];
-    let steps = steps_for(n, options);
-    let step = |kernel: &mut LumpedCentralDifference| {
-        if energy {
+    let mut block = StepBlock::new(&[0], &[], &[]);
+    block.forces.fill(1.0);
+    let steps = match mode {
+        KernelMode::Step | KernelMode::StepWithEnergy => steps_for(n, options),
+        KernelMode::Blocked | KernelMode::BlockedWithEnergy => block_steps_for(n, options),
+    };
+    // Blocks of up to MAX_BLOCK_STEPS steps adding up to `steps`.
+    let mut run = |kernel: &mut LumpedCentralDifference, steps: usize| match mode {
+        KernelMode::Step => (0..steps).for_each(|_| kernel.step(black_box(&forces))),
+        KernelMode::StepWithEnergy => (0..steps).for_each(|_| {
             black_box(kernel.step_with_energy(black_box(&forces)));
-        } else {
-            kernel.step(black_box(&forces));
+        }),
+        KernelMode::Blocked | KernelMode::BlockedWithEnergy => {
+            let mut left = steps;
+            while left > 0 {
+                let size = left.min(MAX_BLOCK_STEPS);
+                if mode == KernelMode::Blocked {
+                    kernel.advance_block::<false>(black_box(&mut block), size);
+                } else {
+                    kernel.advance_block::<true>(black_box(&mut block), size);
+                }
+                left -= size;
+            }
         }
     };
-    for _ in 0..steps.min(10) {
-        step(&mut kernel);
-    }
+    run(&mut kernel, steps.min(10));
     let mut times = Vec::with_capacity(options.reps);
     for _ in 0..options.reps {
         let start = Instant::now();
-        for _ in 0..steps {
-            step(&mut kernel);
-        }
+        run(&mut kernel, steps);
         times.push(start.elapsed().as_secs_f64() * 1e9 / (steps * (n + 1)) as f64);
     }
     if kernel.displacement().iter().all(|x| x.is_finite()) {
@@ -243,7 +310,7 @@ fn time_kernel(model: &Model, options: &BenchOptions, energy: bool) -> Result<f6
 /// node-step, median over the repetitions.
 fn time_run_loop(model: &Model, options: &BenchOptions) -> Result<f64, String> {
     let n = model.bar().element_count();
-    let steps = steps_for(n, options);
+    let steps = block_steps_for(n, options);
     let integration = CentralDifference::new(0.5 * model.bar().stiffest_element().1).integration();
     let run = |steps: usize| -> Result<f64, String> {
         let request = OutputRequest {

@@ -40,7 +40,8 @@
 //!
 //! Files: `contract` ([`Integrator`], [`InitialState`]), `scheme` ([`Scheme`], [`Integration`]),
 //! `registry` ([`SchemeEntry`] and parameters), `limit` ([`SchemeLimit`]), `measure` (the
-//! measured critical step), `time_loop` (the loop), `guard` (blow-up detection), `record`
+//! measured critical step), `time_loop` (the loop, by single steps or by blocks of steps for a
+//! stepper with temporal blocking), `guard` (blow-up detection), `record`
 //! (profiles and histories), `settings` (start, stability policy, output request).
 
 mod contract;

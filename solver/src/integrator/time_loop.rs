@@ -16,6 +16,18 @@
 //!
 //! the trapezoidal work increment, exactly. So `E^n - W^n` is constant to round-off; for a
 //! dissipative scheme its drift is the energy the scheme removed.
+//!
+//! **Blocks of steps.** A stepper with temporal blocking ([`Integrator::steps_in_blocks`]:
+//! lumped central difference, [`crate::kernel_tiled`]) takes up to [`MAX_BLOCK_STEPS`] steps per
+//! call when the run must stay stable (`allow_unstable` off); a block ends at the last step and
+//! at every profile step. The stepper returns every step's energies and the displacements of the
+//! loaded nodes and of each history node and its neighbours (with its half-step velocity), so
+//! the loop does exactly the per-step work above on exactly the same numbers: the work, the
+//! balance, the guard, the energy samples and the histories of every step are bit-identical to
+//! single steps. One thing differs: if the guard trips inside a block (a run below its stability
+//! limit cannot diverge, so it would take a bug), the step, time and energy ratio are the
+//! step's, but the node of largest `|u|` is read from the state at the block's end. A run
+//! allowed to be unstable steps singly, so the stability table names the node of its own step.
 
 use super::contract::{InitialState, Integrator};
 use super::guard::{BlowUpGuard, impulse_energy};
