@@ -1,8 +1,9 @@
 //! Running every case of a scene.
 
 use crate::io::parallel::in_order;
+use crate::results::case::CaseRecord;
 use crate::results::scene::SceneRecords;
-use crate::scene::cases::Scene;
+use crate::scene::cases::{Case, Scene};
 use courant_solver::RunError;
 use rayon::prelude::*;
 
@@ -15,13 +16,7 @@ use rayon::prelude::*;
 /// The first case (in order) the solver refuses.
 pub fn run_scene(scene: &Scene) -> Result<SceneRecords, RunError> {
     Ok(SceneRecords {
-        cases: in_order(
-            scene
-                .cases
-                .par_iter()
-                .map(super::stepping::run_case)
-                .collect(),
-        )?,
+        cases: run_cases(&scene.cases)?,
         spectra: in_order(
             scene
                 .spectra
@@ -51,4 +46,22 @@ pub fn run_scene(scene: &Scene) -> Result<SceneRecords, RunError> {
                 .collect(),
         )?,
     })
+}
+
+/// Every case, in input order: those whose run uses several threads
+/// ([`courant_solver::Integration::threads`]: lumped runs from 1e5 nodes on) one at a time, the
+/// others in parallel (one case per core), so that the cores are never shared by two
+/// multi-threaded cases. The records do not depend on the order of running.
+fn run_cases(cases: &[Case]) -> Result<Vec<CaseRecord>, RunError> {
+    let threaded = |case: &Case| case.integrator.threads(&case.model) > 1;
+    let mut records: Vec<Option<Result<CaseRecord, RunError>>> = cases
+        .par_iter()
+        .map(|case| (!threaded(case)).then(|| super::stepping::run_case(case)))
+        .collect();
+    for (record, case) in records.iter_mut().zip(cases) {
+        if record.is_none() {
+            *record = Some(super::stepping::run_case(case));
+        }
+    }
+    in_order(records.into_iter().flatten().collect())
 }

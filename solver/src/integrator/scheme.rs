@@ -59,6 +59,15 @@ pub trait Scheme: std::fmt::Debug + Send + Sync {
     /// # Errors
     /// As [`Integration::run`].
     fn run(&self, setup: RunSetup<'_>) -> Result<RunOutput, RunError>;
+
+    /// Threads one run of this scheme with `mass` on `model` uses (1 unless its stepper runs
+    /// blocks of steps on several threads: lumped central difference from
+    /// [`crate::kernel::PARALLEL_FROM_NODES`] on). A caller running several cases at once runs
+    /// the multi-threaded ones one at a time.
+    fn threads(&self, model: &Model, mass: MassKind, allow_unstable: bool) -> usize {
+        let _ = (model, mass, allow_unstable);
+        1
+    }
 }
 
 /// Everything a run is told: the scheme (with its parameters), the mass, the step, the start and
@@ -87,6 +96,12 @@ impl Integration {
             stability: StabilityPolicy::default(),
             scheme,
         }
+    }
+
+    /// Threads a run with these settings uses on `model` ([`Scheme::threads`]).
+    pub fn threads(&self, model: &Model) -> usize {
+        self.scheme
+            .threads(model, self.mass, self.stability.allow_unstable)
     }
 
     /// The critical steps of the mass, after refusing `dt` above the scheme's limit

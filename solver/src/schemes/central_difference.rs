@@ -57,6 +57,16 @@ impl Scheme for CentralDifferenceScheme {
         SchemeLimit::central_difference(critical)
     }
 
+    /// Lumped runs that must stay stable take blocks of steps on
+    /// [`crate::kernel::default_threads`] threads; every other run one.
+    fn threads(&self, model: &Model, mass: MassKind, allow_unstable: bool) -> usize {
+        if mass == MassKind::Lumped && !allow_unstable {
+            crate::kernel::default_threads(model.bar().node_count())
+        } else {
+            1
+        }
+    }
+
     fn run(&self, setup: RunSetup<'_>) -> Result<RunOutput, RunError> {
         match setup.mass {
             MassOperator::Diagonal { .. } => time_loop::run::<LumpedStepper>(&(), setup),
