@@ -17,7 +17,7 @@
 //! pipeline keeps every thread busy but for `P - 1` sub-blocks: a speed-up of at most
 //! `P B / (B + P - 1)` (1.88 for two threads and 16 sub-blocks).
 
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Mutex, PoisonError};
 
 use crate::kernel::{Lanes, LumpedCentralDifference, StepEnergy};
@@ -39,12 +39,33 @@ struct Pipeline {
     /// `first[q]`: sub-blocks whose first tile region `q` has finished.
     first: Vec<AtomicUsize>,
     seams: Vec<Mutex<Seam>>,
+    /// Set when a region's thread panicked: the others stop waiting for it (and panic too, so
+    /// the block fails instead of hanging).
+    failed: AtomicBool,
+}
+
+/// Marks the pipeline failed if its thread unwinds.
+struct FailOnPanic<'a>(&'a AtomicBool);
+
+impl Drop for FailOnPanic<'_> {
+    fn drop(&mut self) {
+        if std::thread::panicking() {
+            self.0.store(true, Ordering::Release);
+        }
+    }
 }
 
 /// Wait until `counter >= value` (spin briefly, then yield: the machine may be shared).
-fn wait_for(counter: &AtomicUsize, value: usize) {
+///
+/// # Panics
+/// When another region's thread panicked (`failed`): the block cannot complete.
+fn wait_for(counter: &AtomicUsize, value: usize, failed: &AtomicBool) {
     let mut spins = 0u32;
     while counter.load(Ordering::Acquire) < value {
+        assert!(
+            !failed.load(Ordering::Acquire),
+            "another thread of the block of steps panicked"
+        );
         if spins < 1 << 12 {
             spins += 1;
             std::hint::spin_loop();
@@ -119,6 +140,7 @@ impl LumpedCentralDifference {
                         })
                     })
                     .collect(),
+                failed: AtomicBool::new(false),
             };
             let pipeline = &pipeline;
             let mut energies = Some(energies);
@@ -224,13 +246,14 @@ unsafe fn region<const ENERGY: bool, const AVX2: bool>(
     mut energies: Option<&mut [StepEnergy]>,
 ) {
     let (q, threads) = pipeline.map_or((0, 1), |(q, p)| (q, p.done.len()));
+    let _fail_on_panic = pipeline.map(|(_, p)| FailOnPanic(&p.failed));
     let last_tile = tile_count(bar.len) - 1;
     for b in 0..steps.div_ceil(DEPTH) {
         let row0 = b * DEPTH;
         let depth = DEPTH.min(steps - row0);
         match pipeline {
             Some((q, p)) if q > 0 => {
-                wait_for(&p.done[q - 1], b + 1);
+                wait_for(&p.done[q - 1], b + 1, &p.failed);
                 let seam = p.seams[q - 1]
                     .lock()
                     .unwrap_or_else(PoisonError::into_inner);
@@ -244,7 +267,7 @@ unsafe fn region<const ENERGY: bool, const AVX2: bool>(
             }
         }
         if let Some((_, p)) = pipeline.filter(|_| q + 1 < threads) {
-            wait_for(&p.first[q + 1], b);
+            wait_for(&p.first[q + 1], b, &p.failed);
         }
         for t in t0..t1 {
             let left = 1 + t * TILE;
