@@ -18,7 +18,7 @@
 //!
 //! Layers, lowest first: `mesh`, `bar`, `load`, `model` (the problem); `tridiagonal`,
 //! `partitioned_ldl`, `banded`, `mass` (operators); `stability`, `spectrum`, `time_step`;
-//! `kernel`, `matrix_kernel`, `park` (step kernels); `integrator` (the public integrator
+//! `kernel`, `matrix_kernel` (with `matrix_passes`, `matrix_avx2`), `park` (step kernels); `integrator` (the public integrator
 //! interface every scheme honours, the shared time loop); `schemes` (central difference, Park,
 //! Noh-Bathe, each written against the interface, and the registry scenes name them through);
 //! `contact` (contact runs, stepping the bulk with the `cd` stepper); `output`, `error`,
@@ -35,7 +35,10 @@ pub mod kernel;
 mod kernel_avx2;
 pub mod load;
 pub mod mass;
+#[cfg(target_arch = "x86_64")]
+mod matrix_avx2;
 pub mod matrix_kernel;
+mod matrix_passes;
 pub mod mesh;
 pub mod model;
 pub mod output;
