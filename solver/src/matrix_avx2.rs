@@ -20,13 +20,14 @@ use std::arch::x86_64::{
 const LANES: usize = 8;
 
 /// The velocity update of the whole chunks of [`LANES`] nodes of `v` (the slices start at a
-/// multiple of [`LANES`] of the whole arrays and are at least as long as `v`); returns the
-/// number of nodes done, the caller updates the rest.
+/// multiple of [`LANES`] of the whole arrays and are at least as long as `v`), the increment
+/// only with `INCREMENT` (`r_previous` unread without it); returns the number of nodes done,
+/// the caller updates the rest.
 ///
 /// # Safety
 /// The CPU must support AVX2.
 #[target_feature(enable = "avx2")]
-pub(crate) unsafe fn velocity_lanes(
+pub(crate) unsafe fn velocity_lanes<const INCREMENT: bool>(
     v: &mut [f64],
     a: &[f64],
     r_previous: &[f64],
@@ -53,8 +54,10 @@ pub(crate) unsafe fn velocity_lanes(
                 let vi = _mm256_loadu_pd(vp.add(o));
                 let ai = _mm256_loadu_pd(ap.add(o));
                 let ri = _mm256_loadu_pd(rp.add(o));
-                let pi = _mm256_loadu_pd(pp.add(o));
-                sum[h] = _mm256_add_pd(sum[h], _mm256_mul_pd(vi, _mm256_add_pd(pi, ri)));
+                if INCREMENT {
+                    let pi = _mm256_loadu_pd(pp.add(o));
+                    sum[h] = _mm256_add_pd(sum[h], _mm256_mul_pd(vi, _mm256_add_pd(pi, ri)));
+                }
                 product[h] = _mm256_add_pd(product[h], _mm256_mul_pd(ai, ri));
                 _mm256_storeu_pd(vp.add(o), _mm256_add_pd(vi, _mm256_mul_pd(step, ai)));
             }

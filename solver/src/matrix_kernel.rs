@@ -25,7 +25,8 @@ use crate::mass::MassOperator;
 #[cfg(test)]
 use crate::matrix_passes::lane_sums;
 use crate::matrix_passes::{
-    BLOCK, apply_rows, residual_rows, residual_rows_keeping, strain_lanes, velocity_lanes,
+    BLOCK, apply_rows, increment_lanes, residual_rows, residual_rows_keeping, strain_lanes,
+    velocity_lanes,
 };
 
 /// The state a run starts from, after the start procedure.
@@ -53,7 +54,7 @@ pub struct MatrixCentralDifference {
     u: Vec<f64>,
     v: Vec<f64>,
     a: Vec<f64>,
-    /// `r^{n+1}` while a CMM or AMM step forms it (empty for RMM, whose step overwrites
+    /// Scratch of the whole-pass reference step (tests only; the blocked step overwrites
     /// `r_previous` in place).
     r: Vec<f64>,
     /// `r^n`: the residual of the last step.
@@ -76,7 +77,6 @@ impl MatrixCentralDifference {
             kinetic_staggered: staggered0,
         } = *start;
         let n = u0.len();
-        let reciprocal = matches!(mass, MassOperator::Reciprocal { .. });
         let mut padded = vec![0.0; n + 1];
         padded[1..n].copy_from_slice(stiffness);
         Self {
@@ -86,7 +86,7 @@ impl MatrixCentralDifference {
             u: u0.to_vec(),
             v: v_half.to_vec(),
             a: a0.to_vec(),
-            r: if reciprocal { Vec::new() } else { vec![0.0; n] },
+            r: Vec::new(),
             r_previous: r0.to_vec(),
             scratch: vec![0.0; n],
             staggered: staggered0,
@@ -252,7 +252,7 @@ impl MatrixCentralDifference {
             r_done = r_to;
             let a_block = &mut a[v_done..v_to];
             apply_rows(diag, off, r, a_block, v_done, v_to);
-            velocity_lanes::<AVX2>(
+            velocity_lanes::<AVX2, true>(
                 &mut v[v_done..v_to],
                 a_block,
                 &previous,
@@ -265,13 +265,32 @@ impl MatrixCentralDifference {
         }
     }
 
-    /// The CMM and AMM step: `u` and the residual in blocks, the factored solve `a = M^-1 r` of
-    /// the whole residual, then `v` in one pass.
+    /// The CMM and AMM step: `u` and the residual in blocks (the residual overwriting `r^n` in
+    /// place, the energy increment `v^{n+1/2} (r^n + r^{n+1})` summed while both are in L1, and
+    /// the right-hand side of the solve copied out), the factored solve `a = M^-1 r`, then `v`
+    /// and the impulse `a r` in one pass.
     #[inline(always)]
     fn solved_step<const AVX2: bool>(&mut self, forces: &[(usize, f64)], lanes: &mut EnergyLanes) {
-        let (dt, n) = (self.dt, self.u.len());
-        let (u, v, r) = (&mut self.u, &mut self.v, &mut self.r);
-        let k = &self.stiffness;
+        let Self {
+            dt,
+            stiffness: k,
+            mass:
+                MassOperator::Tridiagonal {
+                    factor,
+                    fixed_nodes,
+                    ..
+                },
+            u,
+            v,
+            a,
+            r_previous: r,
+            ..
+        } = self
+        else {
+            return;
+        };
+        let (dt, n) = (*dt, u.len());
+        let mut previous = [0.0; BLOCK];
         let (mut u_done, mut e_done, mut r_done) = (0, 0, 0);
         let mut next_force = 0;
         while r_done < n {
@@ -279,23 +298,24 @@ impl MatrixCentralDifference {
             let e_to = r_to.div_ceil(LANES).saturating_mul(LANES).min(n - 1);
             let u_to = (e_to + 1).min(n);
             advance_and_strain(dt, k, u, v, (&mut u_done, &mut e_done), (u_to, e_to), lanes);
-            residual_rows(k, u, r, r_done, r_to);
+            residual_rows_keeping::<true>(k, u, r, &mut previous, r_done, r_to);
             while let Some(&(node, f)) = forces.get(next_force).filter(|f| f.0 < r_to) {
                 r[node] += f;
                 next_force += 1;
             }
+            increment_lanes(
+                &v[r_done..r_to],
+                &previous,
+                &r[r_done..r_to],
+                &mut a[r_done..r_to],
+                &mut lanes.increment,
+            );
             r_done = r_to;
         }
-        self.mass.apply_inverse(r, &mut self.a);
-        velocity_lanes::<AVX2>(
-            v,
-            &self.a,
-            &self.r_previous,
-            r,
-            dt,
-            [&mut lanes.increment, &mut lanes.impulse],
-        );
-        std::mem::swap(&mut self.r, &mut self.r_previous);
+        // a = M^-1 r as `MassOperator::apply_inverse` forms it: 0 at the fixed nodes.
+        fixed_nodes.iter().for_each(|&i| a[i] = 0.0);
+        factor.solve_in_place(a);
+        velocity_lanes::<AVX2, false>(v, a, &[], r, dt, [&mut lanes.increment, &mut lanes.impulse]);
     }
 
     /// `1/2 v^{n-1/2} . M v^{n+1/2}` computed with the mass operator itself (one product or

@@ -11,13 +11,12 @@ use crate::kernel::LANES;
 pub(crate) const BLOCK: usize = 512;
 
 /// `v^{n+3/2} = v^{n+1/2} + dt a^{n+1}` for the nodes of `v` (starting at a multiple of
-/// [`LANES`]), adding `v^{n+1/2} (r^n + r^{n+1})` and `a r` to the increment and impulse lanes;
-/// `a`, `r_previous` and `r` hold the same nodes as `v` (and may be longer). Written as chunks of
-/// [`LANES`] nodes so that the lanes stay in vector registers.
-/// `AVX2`: the whole chunks run [`crate::matrix_avx2::velocity_lanes`] (only an AVX2-compiled
-/// caller may ask for it).
+/// [`LANES`]), adding `a r` to the impulse lanes and, `INCREMENT`, `v^{n+1/2} (r^n + r^{n+1})`
+/// to the increment lanes; `a`, `r_previous` (unused without `INCREMENT`) and `r` hold the same
+/// nodes as `v` (and may be longer). `AVX2`: the whole chunks of [`LANES`] nodes run
+/// [`crate::matrix_avx2::velocity_lanes`] (only an AVX2-compiled caller may ask for it).
 #[inline(always)]
-pub(crate) fn velocity_lanes<const AVX2: bool>(
+pub(crate) fn velocity_lanes<const AVX2: bool, const INCREMENT: bool>(
     v: &mut [f64],
     a: &[f64],
     r_previous: &[f64],
@@ -26,36 +25,63 @@ pub(crate) fn velocity_lanes<const AVX2: bool>(
     [increment, impulse]: [&mut [f64; LANES]; 2],
 ) {
     let len = v.len();
-    let (a, r_previous, r) = (&a[..len], &r_previous[..len], &r[..len]);
+    let (a, r) = (&a[..len], &r[..len]);
+    let r_previous = if INCREMENT { &r_previous[..len] } else { r };
     #[cfg(target_arch = "x86_64")]
     let done = if AVX2 {
         // SAFETY: `AVX2` is true only in the step compiled for AVX2, run when the CPU has it.
-        unsafe { crate::matrix_avx2::velocity_lanes(v, a, r_previous, r, dt, increment, impulse) }
+        unsafe {
+            crate::matrix_avx2::velocity_lanes::<INCREMENT>(
+                v, a, r_previous, r, dt, increment, impulse,
+            )
+        }
     } else {
         0
     };
     #[cfg(not(target_arch = "x86_64"))]
     let done = 0;
     let (mut sum, mut product) = (*increment, *impulse);
-    let whole = if done > 0 { done } else { len / LANES * LANES };
-    for (((vc, ac), pc), rc) in v[done..whole]
-        .chunks_exact_mut(LANES)
-        .zip(a[done..].chunks_exact(LANES))
-        .zip(r_previous[done..].chunks_exact(LANES))
-        .zip(r[done..].chunks_exact(LANES))
-    {
-        for l in 0..LANES {
-            sum[l] += vc[l] * (pc[l] + rc[l]);
-            product[l] += ac[l] * rc[l];
-            vc[l] += dt * ac[l];
+    for i in done..len {
+        if INCREMENT {
+            sum[i % LANES] += v[i] * (r_previous[i] + r[i]);
         }
-    }
-    for i in whole..len {
-        sum[i % LANES] += v[i] * (r_previous[i] + r[i]);
         product[i % LANES] += a[i] * r[i];
         v[i] += dt * a[i];
     }
     (*increment, *impulse) = (sum, product);
+}
+
+/// For the nodes of `v` (starting at a multiple of [`LANES`]): add `v^{n+1/2} (r^n + r^{n+1})`
+/// to the increment lanes and copy `r^{n+1}` to `copy`; `r_previous`, `r` and `copy` hold the
+/// same nodes as `v` (`r_previous` may be longer).
+#[inline(always)]
+pub(crate) fn increment_lanes(
+    v: &[f64],
+    r_previous: &[f64],
+    r: &[f64],
+    copy: &mut [f64],
+    increment: &mut [f64; LANES],
+) {
+    let len = v.len();
+    let (r_previous, r, copy) = (&r_previous[..len], &r[..len], &mut copy[..len]);
+    let mut sum = *increment;
+    let whole = len / LANES * LANES;
+    for (((vc, pc), rc), cc) in v[..whole]
+        .chunks_exact(LANES)
+        .zip(r_previous.chunks_exact(LANES))
+        .zip(r.chunks_exact(LANES))
+        .zip(copy.chunks_exact_mut(LANES))
+    {
+        for l in 0..LANES {
+            sum[l] += vc[l] * (pc[l] + rc[l]);
+            cc[l] = rc[l];
+        }
+    }
+    for i in whole..len {
+        sum[i % LANES] += v[i] * (r_previous[i] + r[i]);
+        copy[i] = r[i];
+    }
+    *increment = sum;
 }
 
 /// Add `N_e du_e`, `N_e = k[e] du_e`, `du_e = u[e + 1] - u[e]`, of the elements of `k` to lane
