@@ -1,5 +1,6 @@
-//! The velocity update of the matrix-mass step with its two energy sums, written with AVX2
-//! intrinsics (used by [`crate::matrix_passes::velocity_lanes`] where the CPU has AVX2).
+//! The velocity update of the matrix-mass step with its two energy sums, and the energy
+//! increment of the CMM/AMM force pass, written with AVX2 intrinsics (used by
+//! [`crate::matrix_passes`] where the CPU has AVX2).
 //!
 //! ```text
 //!   increment[i % 8] += v_i (r^n_i + r^{n+1}_i),   impulse[i % 8] += a_i r^{n+1}_i,
@@ -67,6 +68,53 @@ pub(crate) unsafe fn velocity_lanes<const INCREMENT: bool>(
             _mm256_storeu_pd(increment.as_mut_ptr().add(4 * h), sum[h]);
             _mm256_storeu_pd(impulse.as_mut_ptr().add(4 * h), product[h]);
         }
+    }
+    whole
+}
+
+/// The energy increment of the whole chunks of [`LANES`] nodes of `v`,
+/// `increment[i % 8] += v_i (r^n_i + r^{n+1}_i)`, with `copy_i = r^{n+1}_i` (the slices start at
+/// a multiple of [`LANES`] of the whole arrays and are at least as long as `v`); returns the
+/// number of nodes done, the caller does the rest.
+///
+/// # Safety
+/// The CPU must support AVX2.
+#[target_feature(enable = "avx2")]
+pub(crate) unsafe fn increment_lanes(
+    v: &[f64],
+    r_previous: &[f64],
+    r: &[f64],
+    copy: &mut [f64],
+    increment: &mut [f64; LANES],
+) -> usize {
+    let whole = v.len() / LANES * LANES;
+    assert!(r_previous.len() >= whole && r.len() >= whole && copy.len() >= whole);
+    let (vp, pp, rp, cp) = (
+        v.as_ptr(),
+        r_previous.as_ptr(),
+        r.as_ptr(),
+        copy.as_mut_ptr(),
+    );
+    // SAFETY: every offset below is < whole, within all four slices (asserted above); loads and
+    // stores are unaligned; `increment` holds 8 values.
+    unsafe {
+        let mut sum = [
+            _mm256_loadu_pd(increment.as_ptr()),
+            _mm256_loadu_pd(increment.as_ptr().add(4)),
+        ];
+        let mut i = 0;
+        while i < whole {
+            for (h, lane) in sum.iter_mut().enumerate() {
+                let o = i + 4 * h;
+                let ri = _mm256_loadu_pd(rp.add(o));
+                let sum_r = _mm256_add_pd(_mm256_loadu_pd(pp.add(o)), ri);
+                *lane = _mm256_add_pd(*lane, _mm256_mul_pd(_mm256_loadu_pd(vp.add(o)), sum_r));
+                _mm256_storeu_pd(cp.add(o), ri);
+            }
+            i += LANES;
+        }
+        _mm256_storeu_pd(increment.as_mut_ptr(), sum[0]);
+        _mm256_storeu_pd(increment.as_mut_ptr().add(4), sum[1]);
     }
     whole
 }

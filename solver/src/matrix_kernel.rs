@@ -303,7 +303,7 @@ impl MatrixCentralDifference {
                 r[node] += f;
                 next_force += 1;
             }
-            increment_lanes(
+            increment_lanes::<AVX2>(
                 &v[r_done..r_to],
                 &previous,
                 &r[r_done..r_to],

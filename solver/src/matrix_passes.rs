@@ -54,8 +54,9 @@ pub(crate) fn velocity_lanes<const AVX2: bool, const INCREMENT: bool>(
 /// For the nodes of `v` (starting at a multiple of [`LANES`]): add `v^{n+1/2} (r^n + r^{n+1})`
 /// to the increment lanes and copy `r^{n+1}` to `copy`; `r_previous`, `r` and `copy` hold the
 /// same nodes as `v` (`r_previous` may be longer).
+/// `AVX2`: the whole chunks run [`crate::matrix_avx2::increment_lanes`].
 #[inline(always)]
-pub(crate) fn increment_lanes(
+pub(crate) fn increment_lanes<const AVX2: bool>(
     v: &[f64],
     r_previous: &[f64],
     r: &[f64],
@@ -64,20 +65,17 @@ pub(crate) fn increment_lanes(
 ) {
     let len = v.len();
     let (r_previous, r, copy) = (&r_previous[..len], &r[..len], &mut copy[..len]);
+    #[cfg(target_arch = "x86_64")]
+    let done = if AVX2 {
+        // SAFETY: `AVX2` is true only in the step compiled for AVX2, run when the CPU has it.
+        unsafe { crate::matrix_avx2::increment_lanes(v, r_previous, r, copy, increment) }
+    } else {
+        0
+    };
+    #[cfg(not(target_arch = "x86_64"))]
+    let done = 0;
     let mut sum = *increment;
-    let whole = len / LANES * LANES;
-    for (((vc, pc), rc), cc) in v[..whole]
-        .chunks_exact(LANES)
-        .zip(r_previous.chunks_exact(LANES))
-        .zip(r.chunks_exact(LANES))
-        .zip(copy.chunks_exact_mut(LANES))
-    {
-        for l in 0..LANES {
-            sum[l] += vc[l] * (pc[l] + rc[l]);
-            cc[l] = rc[l];
-        }
-    }
-    for i in whole..len {
+    for i in done..len {
         sum[i % LANES] += v[i] * (r_previous[i] + r[i]);
         copy[i] = r[i];
     }
