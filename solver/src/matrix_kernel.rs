@@ -25,8 +25,7 @@ use crate::mass::MassOperator;
 #[cfg(test)]
 use crate::matrix_passes::lane_sums;
 use crate::matrix_passes::{
-    BLOCK, apply_rows, increment_lanes, residual_rows, residual_rows_keeping, strain_lanes,
-    velocity_lanes,
+    BLOCK, apply_rows, increment_lanes, residual_rows, strain_lanes, velocity_lanes,
 };
 
 /// The state a run starts from, after the start procedure.
@@ -54,8 +53,9 @@ pub struct MatrixCentralDifference {
     u: Vec<f64>,
     v: Vec<f64>,
     a: Vec<f64>,
-    /// Scratch of the whole-pass reference step (tests only; the blocked step overwrites
-    /// `r_previous` in place).
+    /// Scratch of the whole-pass reference step (the blocked step overwrites `r_previous` in
+    /// place).
+    #[cfg(test)]
     r: Vec<f64>,
     /// `r^n`: the residual of the last step.
     r_previous: Vec<f64>,
@@ -86,6 +86,7 @@ impl MatrixCentralDifference {
             u: u0.to_vec(),
             v: v_half.to_vec(),
             a: a0.to_vec(),
+            #[cfg(test)]
             r: Vec::new(),
             r_previous: r0.to_vec(),
             scratch: vec![0.0; n],
@@ -244,7 +245,7 @@ impl MatrixCentralDifference {
             let u_to = (e_to + 1).min(n);
             advance_and_strain(dt, k, u, v, (&mut u_done, &mut e_done), (u_to, e_to), lanes);
             let kept = &mut previous[r_done - v_done..];
-            residual_rows_keeping::<true>(k, u, r, kept, r_done, r_to);
+            residual_rows(k, u, r, kept, r_done, r_to);
             while let Some(&(node, f)) = forces.get(next_force).filter(|f| f.0 < r_to) {
                 r[node] += f;
                 next_force += 1;
@@ -298,7 +299,7 @@ impl MatrixCentralDifference {
             let e_to = r_to.div_ceil(LANES).saturating_mul(LANES).min(n - 1);
             let u_to = (e_to + 1).min(n);
             advance_and_strain(dt, k, u, v, (&mut u_done, &mut e_done), (u_to, e_to), lanes);
-            residual_rows_keeping::<true>(k, u, r, &mut previous, r_done, r_to);
+            residual_rows(k, u, r, &mut previous, r_done, r_to);
             while let Some(&(node, f)) = forces.get(next_force).filter(|f| f.0 < r_to) {
                 r[node] += f;
                 next_force += 1;

@@ -77,8 +77,8 @@ pub(crate) fn increment_lanes<const AVX2: bool>(
     let mut sum = *increment;
     for i in done..len {
         sum[i % LANES] += v[i] * (r_previous[i] + r[i]);
-        copy[i] = r[i];
     }
+    copy[done..].copy_from_slice(&r[done..]);
     *increment = sum;
 }
 
@@ -106,19 +106,13 @@ pub(crate) fn strain_lanes(k: &[f64], u: &[f64], lanes: &mut [f64; LANES]) {
     *lanes = local;
 }
 
-/// `r[i] = N_i - N_{i-1}` for rows `from..to` (the loads are added by the caller), with the
-/// element forces `N` of padded index `i + 1` formed as `k[i + 1] (u[i + 1] - u[i])` (`k` the
-/// padded stiffness, length `n + 1`) and the ghost forces 0: the whole-pass step's
+/// `r[i] = N_i - N_{i-1}` for rows `from..to`, overwriting `r` in place after keeping the old
+/// value in `kept[i - from]` (the loads are added by the caller), with the element forces `N`
+/// of padded index `i + 1` formed as `k[i + 1] (u[i + 1] - u[i])` (`k` the padded stiffness,
+/// length `n + 1`) and the ghost forces 0: the whole-pass step's
 /// `element_force[i + 1] - element_force[i]`, operation for operation.
 #[inline(always)]
-pub(crate) fn residual_rows(k: &[f64], u: &[f64], r: &mut [f64], from: usize, to: usize) {
-    residual_rows_keeping::<false>(k, u, r, &mut [], from, to);
-}
-
-/// [`residual_rows`] overwriting `r` in place; `KEEP`: the values overwritten go to
-/// `kept[i - from]` first.
-#[inline(always)]
-pub(crate) fn residual_rows_keeping<const KEEP: bool>(
+pub(crate) fn residual_rows(
     k: &[f64],
     u: &[f64],
     r: &mut [f64],
@@ -130,11 +124,9 @@ pub(crate) fn residual_rows_keeping<const KEEP: bool>(
     if from >= to {
         return;
     }
-    let kept = if KEEP { &mut kept[..to - from] } else { kept };
+    let kept = &mut kept[..to - from];
     let set = |i: usize, value: f64, r: &mut [f64], kept: &mut [f64]| {
-        if KEEP {
-            kept[i - from] = r[i];
-        }
+        kept[i - from] = r[i];
         r[i] = value;
     };
     let force = |i: usize| k[i + 1] * (u[i + 1] - u[i]);
@@ -153,15 +145,9 @@ pub(crate) fn residual_rows_keeping<const KEEP: bool>(
             .zip(u[lo - 1..hi + 1].windows(3))
             .zip(k[lo..hi + 1].windows(2));
         let value = |us: &[f64], ks: &[f64]| ks[1] * (us[2] - us[1]) - ks[0] * (us[1] - us[0]);
-        if KEEP {
-            for (((ri, us), ks), old) in rows.zip(&mut kept[lo - from..hi - from]) {
-                *old = *ri;
-                *ri = value(us, ks);
-            }
-        } else {
-            for ((ri, us), ks) in rows {
-                *ri = value(us, ks);
-            }
+        for (((ri, us), ks), old) in rows.zip(&mut kept[lo - from..hi - from]) {
+            *old = *ri;
+            *ri = value(us, ks);
         }
     }
     if to == n {
