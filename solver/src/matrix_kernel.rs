@@ -67,7 +67,9 @@ pub struct MatrixCentralDifference {
 
 impl MatrixCentralDifference {
     /// Set up with element stiffnesses, the mass operator, `u^0`, `v^{1/2}`, `a^0`, the residual
-    /// `r^0 = F^0 - K u^0` and the staggered kinetic energy `1/2 v^{-1/2} M v^{1/2}`.
+    /// `r^0 = F^0 - K u^0` and the staggered kinetic energy `1/2 v^{-1/2} M v^{1/2}`. With the
+    /// reciprocal mass `a^0` is not kept: [`Self::acceleration_at`] forms `(M^-1 r^0)_i`, which
+    /// is the time loop's `a^0` (`MassOperator::apply_inverse` of `r^0`, the same products).
     pub fn new(dt: f64, stiffness: &[f64], mass: MassOperator, start: &StartState) -> Self {
         let StartState {
             displacement: u0,
@@ -77,6 +79,7 @@ impl MatrixCentralDifference {
             kinetic_staggered: staggered0,
         } = *start;
         let n = u0.len();
+        let reciprocal = matches!(mass, MassOperator::Reciprocal { .. });
         let mut padded = vec![0.0; n + 1];
         padded[1..n].copy_from_slice(stiffness);
         Self {
@@ -85,7 +88,7 @@ impl MatrixCentralDifference {
             mass,
             u: u0.to_vec(),
             v: v_half.to_vec(),
-            a: a0.to_vec(),
+            a: if reciprocal { Vec::new() } else { a0.to_vec() },
             #[cfg(test)]
             r: Vec::new(),
             r_previous: r0.to_vec(),
@@ -110,9 +113,32 @@ impl MatrixCentralDifference {
         &self.v
     }
 
-    /// `a^n`.
-    pub fn acceleration(&self) -> &[f64] {
-        &self.a
+    /// `a^n` at node `i`: the kept solve for CMM and AMM; for RMM, whose step does not store
+    /// `a` (one stream less per step), row `i` of `M^-1 r^n` from the kept residual, formed as
+    /// the step formed it (same products, same order), so bit-identical to the step's `a`.
+    pub fn acceleration_at(&self, i: usize) -> f64 {
+        match &self.mass {
+            MassOperator::Reciprocal { inverse, .. } => {
+                let (d, o, r) = (&inverse.diag, &inverse.off, &self.r_previous);
+                let n = d.len();
+                match i {
+                    _ if n == 1 => d[0] * r[0],
+                    0 => d[0] * r[0] + o[0] * r[1],
+                    _ if i == n - 1 => o[n - 2] * r[n - 2] + d[n - 1] * r[n - 1],
+                    _ => o[i - 1] * r[i - 1] + d[i] * r[i] + o[i] * r[i + 1],
+                }
+            }
+            _ => self.a[i],
+        }
+    }
+
+    /// `a^n`, node by node ([`Self::acceleration_at`]): `acceleration()[i]`. A view answers
+    /// for one node (asserted); prefer [`Self::acceleration_at`].
+    pub fn acceleration(&self) -> Accelerations<'_> {
+        Accelerations {
+            kernel: self,
+            node: std::cell::OnceCell::new(),
+        }
     }
 
     /// Advance one step; `forces` lists `(node, F^{n+1})`, sorted, each node once.
@@ -135,6 +161,7 @@ impl MatrixCentralDifference {
     fn whole_pass_step(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
         let dt = self.dt;
         self.r.resize(self.u.len(), 0.0);
+        self.a.resize(self.u.len(), 0.0);
         // Element forces padded with a zero at both ends (length N + 2).
         let mut element_force = vec![0.0; self.u.len() + 1];
         for (u, v) in self.u.iter_mut().zip(&self.v) {
@@ -226,7 +253,6 @@ impl MatrixCentralDifference {
             mass: MassOperator::Reciprocal { inverse, .. },
             u,
             v,
-            a,
             r_previous: r,
             ..
         } = self
@@ -236,6 +262,8 @@ impl MatrixCentralDifference {
         let (dt, n, diag, off) = (*dt, u.len(), &inverse.diag[..], &inverse.off[..]);
         // `previous[i - v_done]` = r^n_i for the nodes v_done..=v_to of the block.
         let mut previous = [0.0; BLOCK + 1];
+        // `a = M^-1 r` of the block, not stored (`Self::acceleration_at` forms it from `r`).
+        let mut a_block = [0.0; BLOCK];
         let (mut u_done, mut e_done, mut r_done, mut v_done) = (0, 0, 0, 0);
         let mut next_force = 0;
         while v_done < n {
@@ -251,7 +279,7 @@ impl MatrixCentralDifference {
                 next_force += 1;
             }
             r_done = r_to;
-            let a_block = &mut a[v_done..v_to];
+            let a_block = &mut a_block[..v_to - v_done];
             apply_rows(diag, off, r, a_block, v_done, v_to);
             velocity_lanes::<AVX2, true>(
                 &mut v[v_done..v_to],
@@ -324,13 +352,29 @@ impl MatrixCentralDifference {
     pub fn staggered_kinetic_from_mass(&mut self) -> f64 {
         let dt = self.dt;
         self.mass.apply(&self.v, &mut self.scratch);
-        0.5 * self
-            .v
-            .iter()
-            .zip(&self.a)
-            .zip(&self.scratch)
-            .map(|((v, a), mv)| (v - dt * a) * mv)
+        0.5 * (0..self.v.len())
+            .map(|i| (self.v[i] - dt * self.acceleration_at(i)) * self.scratch[i])
             .sum::<f64>()
+    }
+}
+
+/// `a^n` of a [`MatrixCentralDifference`] read as `acceleration()[i]`: computes node `i` on the
+/// first index and keeps it, so one view answers for one node (indexing another panics).
+#[derive(Debug)]
+pub struct Accelerations<'a> {
+    kernel: &'a MatrixCentralDifference,
+    node: std::cell::OnceCell<(usize, f64)>,
+}
+
+impl std::ops::Index<usize> for Accelerations<'_> {
+    type Output = f64;
+
+    fn index(&self, i: usize) -> &f64 {
+        let (node, a) = self
+            .node
+            .get_or_init(|| (i, self.kernel.acceleration_at(i)));
+        assert_eq!(*node, i, "an acceleration view answers for one node");
+        a
     }
 }
 
@@ -432,11 +476,21 @@ mod tests {
                     assert_eq!(a, b, "{kind:?}, n = {n}, free {free}");
                 }
                 assert_eq!((&blocked.u, &blocked.v), (&whole.u, &whole.v));
-                assert_eq!(
-                    (&blocked.a, &blocked.r_previous),
-                    (&whole.a, &whole.r_previous)
-                );
+                assert_eq!(&blocked.r_previous, &whole.r_previous);
+                for i in 0..=n {
+                    assert_eq!(blocked.acceleration_at(i), whole.a[i], "node {i}");
+                    assert_eq!(blocked.acceleration()[i], whole.a[i]);
+                }
             }
         }
+    }
+
+    #[test]
+    #[should_panic(expected = "an acceleration view answers for one node")]
+    fn an_acceleration_view_answers_for_one_node() {
+        let kernel = matrix_kernel(10, MassKind::Reciprocal { beta: 0.5 }, false);
+        let view = kernel.acceleration();
+        let _ = view[3];
+        let _ = view[4];
     }
 }
