@@ -19,6 +19,16 @@
 //!
 //! and, at sampled steps, `T*` from `M` itself ([`MatrixCentralDifference::staggered_kinetic_from_mass`]),
 //! which checks the mass operator against the update.
+//!
+//! What a step streams (8-byte words per node): RMM reads and writes `u`, `v` and the residual
+//! (overwritten in place: the block's `r^n` is kept in L1 for `T*`) and reads `k`, and the two
+//! diagonals of `M^-1`; `a` is not stored (a history reads `(M^-1 r^n)_i` at its node). That is
+//! 9 words against the lumped step's 7 (`u`, `v` read and written, `k`, `dt/m`, `m`): measured
+//! 1.30x / 1.42x the lumped step at N = 1e5 / 1e6 (benches/RESULTS.md, target 3). CMM and AMM
+//! also write the solve's right-hand side, run the solve's forward and backward sweeps over it
+//! and the factor, and a separate velocity pass: about 19 words, 2.3x / 2.7x measured. Their
+//! sweeps cannot be fused with the force and velocity passes without changing the order of the
+//! energy sums (the sweeps run in 8 interleaved partitions, the backward one downwards).
 
 use crate::kernel::{LANES, StepEnergy, has_avx2};
 use crate::mass::MassOperator;
