@@ -129,14 +129,16 @@ impl MatrixCentralDifference {
     pub fn acceleration_at(&self, i: usize) -> f64 {
         match &self.mass {
             MassOperator::Reciprocal { inverse, .. } => {
-                let (d, o, r) = (&inverse.diag, &inverse.off, &self.r_previous);
-                let n = d.len();
-                match i {
-                    _ if n == 1 => d[0] * r[0],
-                    0 => d[0] * r[0] + o[0] * r[1],
-                    _ if i == n - 1 => o[n - 2] * r[n - 2] + d[n - 1] * r[n - 1],
-                    _ => o[i - 1] * r[i - 1] + d[i] * r[i] + o[i] * r[i + 1],
-                }
+                let mut a = [0.0];
+                apply_rows(
+                    &inverse.diag,
+                    &inverse.off,
+                    &self.r_previous,
+                    &mut a,
+                    i,
+                    i + 1,
+                );
+                a[0]
             }
             _ => self.a[i],
         }
