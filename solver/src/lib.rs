@@ -19,7 +19,8 @@
 //! Layers, lowest first: `mesh`, `bar`, `load`, `model` (the problem); `tridiagonal`,
 //! `partitioned_ldl`, `banded`, `mass` (operators); `stability`, `spectrum`, `time_step`;
 //! `kernel`, `kernel_tiled` and `kernel_pipeline` (the lumped step, and blocks of it: temporal
-//! blocking on one or several threads), `matrix_kernel`, `park` (step kernels); `integrator` (the public integrator
+//! blocking on one or several threads), `matrix_kernel` (with `matrix_passes`, `matrix_avx2`),
+//! `park` (step kernels); `integrator` (the public integrator
 //! interface every scheme honours, the shared time loop); `schemes` (central difference, Park,
 //! Noh-Bathe, each written against the interface, and the registry scenes name them through);
 //! `contact` (contact runs, stepping the bulk with the `cd` stepper); `output`, `error`,
@@ -38,7 +39,10 @@ mod kernel_pipeline;
 pub mod kernel_tiled;
 pub mod load;
 pub mod mass;
+#[cfg(target_arch = "x86_64")]
+mod matrix_avx2;
 pub mod matrix_kernel;
+mod matrix_passes;
 pub mod mesh;
 pub mod model;
 pub mod output;

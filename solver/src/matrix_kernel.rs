@@ -19,9 +19,24 @@
 //!
 //! and, at sampled steps, `T*` from `M` itself ([`MatrixCentralDifference::staggered_kinetic_from_mass`]),
 //! which checks the mass operator against the update.
+//!
+//! What a step streams (8-byte words per node): RMM reads and writes `u`, `v` and the residual
+//! (overwritten in place: the block's `r^n` is kept in L1 for `T*`) and reads `k`, and the two
+//! diagonals of `M^-1`; `a` is not stored (a history reads `(M^-1 r^n)_i` at its node). That is
+//! 9 words against the lumped step's 7 (`u`, `v` read and written, `k`, `dt/m`, `m`): measured
+//! 1.30x / 1.42x the lumped step at N = 1e5 / 1e6 (benches/RESULTS.md, target 3). CMM and AMM
+//! also write the solve's right-hand side, run the solve's forward and backward sweeps over it
+//! and the factor, and a separate velocity pass: about 19 words, 2.3x / 2.7x measured. Their
+//! sweeps cannot be fused with the force and velocity passes without changing the order of the
+//! energy sums (the sweeps run in 8 interleaved partitions, the backward one downwards).
 
 use crate::kernel::{LANES, StepEnergy, has_avx2};
 use crate::mass::MassOperator;
+#[cfg(test)]
+use crate::matrix_passes::lane_sums;
+use crate::matrix_passes::{
+    BLOCK, apply_rows, increment_lanes, residual_rows, strain_lanes, velocity_lanes,
+};
 
 /// The state a run starts from, after the start procedure.
 #[derive(Debug, Clone, Copy)]
@@ -48,7 +63,11 @@ pub struct MatrixCentralDifference {
     u: Vec<f64>,
     v: Vec<f64>,
     a: Vec<f64>,
+    /// Scratch of the whole-pass reference step (the blocked step overwrites `r_previous` in
+    /// place).
+    #[cfg(test)]
     r: Vec<f64>,
+    /// `r^n`: the residual of the last step.
     r_previous: Vec<f64>,
     scratch: Vec<f64>,
     staggered: f64,
@@ -58,7 +77,9 @@ pub struct MatrixCentralDifference {
 
 impl MatrixCentralDifference {
     /// Set up with element stiffnesses, the mass operator, `u^0`, `v^{1/2}`, `a^0`, the residual
-    /// `r^0 = F^0 - K u^0` and the staggered kinetic energy `1/2 v^{-1/2} M v^{1/2}`.
+    /// `r^0 = F^0 - K u^0` and the staggered kinetic energy `1/2 v^{-1/2} M v^{1/2}`. With the
+    /// reciprocal mass `a^0` is not kept: [`Self::acceleration_at`] forms `(M^-1 r^0)_i`, which
+    /// is the time loop's `a^0` (`MassOperator::apply_inverse` of `r^0`, the same products).
     pub fn new(dt: f64, stiffness: &[f64], mass: MassOperator, start: &StartState) -> Self {
         let StartState {
             displacement: u0,
@@ -68,6 +89,7 @@ impl MatrixCentralDifference {
             kinetic_staggered: staggered0,
         } = *start;
         let n = u0.len();
+        let reciprocal = matches!(mass, MassOperator::Reciprocal { .. });
         let mut padded = vec![0.0; n + 1];
         padded[1..n].copy_from_slice(stiffness);
         Self {
@@ -76,8 +98,9 @@ impl MatrixCentralDifference {
             mass,
             u: u0.to_vec(),
             v: v_half.to_vec(),
-            a: a0.to_vec(),
-            r: vec![0.0; n],
+            a: if reciprocal { Vec::new() } else { a0.to_vec() },
+            #[cfg(test)]
+            r: Vec::new(),
             r_previous: r0.to_vec(),
             scratch: vec![0.0; n],
             staggered: staggered0,
@@ -100,9 +123,25 @@ impl MatrixCentralDifference {
         &self.v
     }
 
-    /// `a^n`.
-    pub fn acceleration(&self) -> &[f64] {
-        &self.a
+    /// `a^n` at node `i`: the kept solve for CMM and AMM; for RMM, whose step does not store
+    /// `a` (one stream less per step), row `i` of `M^-1 r^n` from the kept residual, formed as
+    /// the step formed it (same products, same order), so bit-identical to the step's `a`.
+    pub fn acceleration_at(&self, i: usize) -> f64 {
+        match &self.mass {
+            MassOperator::Reciprocal { inverse, .. } => {
+                let mut a = [0.0];
+                apply_rows(
+                    &inverse.diag,
+                    &inverse.off,
+                    &self.r_previous,
+                    &mut a,
+                    i,
+                    i + 1,
+                );
+                a[0]
+            }
+            _ => self.a[i],
+        }
     }
 
     /// Advance one step; `forces` lists `(node, F^{n+1})`, sorted, each node once.
@@ -116,7 +155,7 @@ impl MatrixCentralDifference {
             // SAFETY: `avx2` is set only when the running CPU reports AVX2 support.
             return unsafe { self.blocked_step_avx2(forces) };
         }
-        self.blocked_step(forces)
+        self.blocked_step::<false>(forces)
     }
 
     /// The step as whole passes over the arrays (any mass operator): the reference the blocked
@@ -124,6 +163,8 @@ impl MatrixCentralDifference {
     #[cfg(test)]
     fn whole_pass_step(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
         let dt = self.dt;
+        self.r.resize(self.u.len(), 0.0);
+        self.a.resize(self.u.len(), 0.0);
         // Element forces padded with a zero at both ends (length N + 2).
         let mut element_force = vec![0.0; self.u.len() + 1];
         for (u, v) in self.u.iter_mut().zip(&self.v) {
@@ -170,91 +211,143 @@ impl MatrixCentralDifference {
     /// as the next one reads (`u` one node ahead of the residual, whose element forces are
     /// formed in registers, not stored; for the reciprocal mass, whose `M^-1` is a tridiagonal
     /// product (a stencil), the residual one node ahead of `a = M^-1 r` and the velocity update
-    /// in the same block), so a block's data are still in L1 when the next pass reads them.
-    /// CMM and AMM solve with the whole residual after the blocks, then update `v` in one pass.
-    /// Every value is computed by the same operations as in whole passes, and each pass's
-    /// blocks start at multiples of [`LANES`], so every energy term goes to the same lane in the
-    /// same order: bit-identical to the whole-pass step (tested).
+    /// in the same block, the residual overwriting `r^n` in place), so a block's data are still
+    /// in L1 when the next pass reads them. CMM and AMM solve with the whole residual after the
+    /// blocks, then update `v` in one pass. Every value is computed by the same operations as
+    /// in whole passes, and each pass's blocks start at multiples of [`LANES`], so every energy
+    /// term goes to the same lane in the same order: bit-identical to the whole-pass step
+    /// (tested).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     fn blocked_step_avx2(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
-        self.blocked_step(forces)
+        self.blocked_step::<true>(forces)
     }
 
     #[inline(always)]
-    fn blocked_step(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
-        let mass = &self.mass;
-        let reciprocal = match mass {
-            MassOperator::Reciprocal { inverse, .. } => Some((&inverse.diag[..], &inverse.off[..])),
-            _ => None,
+    fn blocked_step<const AVX2: bool>(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
+        let mut lanes = EnergyLanes::default();
+        if matches!(self.mass, MassOperator::Reciprocal { .. }) {
+            self.reciprocal_blocks::<AVX2>(forces, &mut lanes);
+        } else {
+            self.solved_step::<AVX2>(forces, &mut lanes);
+        }
+        let total = |lanes: [f64; LANES]| lanes.iter().sum::<f64>();
+        let dt = self.dt;
+        self.staggered += 0.5 * dt * total(lanes.increment);
+        StepEnergy {
+            kinetic_staggered: self.staggered,
+            kinetic: self.staggered + 0.125 * dt * dt * total(lanes.impulse),
+            strain: 0.5 * total(lanes.strain),
+        }
+    }
+
+    /// The reciprocal-mass step in blocks: per block, `u` one node ahead of the residual, the
+    /// residual (overwriting `r^n` in place, after keeping the block's `r^n` in an L1 buffer for
+    /// the energy increment) one node ahead of `a = M^-1 r` (a stencil), and the velocity.
+    #[inline(always)]
+    fn reciprocal_blocks<const AVX2: bool>(
+        &mut self,
+        forces: &[(usize, f64)],
+        lanes: &mut EnergyLanes,
+    ) {
+        let Self {
+            dt,
+            stiffness: k,
+            mass: MassOperator::Reciprocal { inverse, .. },
+            u,
+            v,
+            r_previous: r,
+            ..
+        } = self
+        else {
+            return;
         };
-        let (dt, n) = (self.dt, self.u.len());
-        let (u, v, a, r) = (&mut self.u, &mut self.v, &mut self.a, &mut self.r);
-        let (k, r_previous) = (&self.stiffness, &self.r_previous);
-        let (mut strain, mut increment, mut impulse) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
+        let (dt, n, diag, off) = (*dt, u.len(), &inverse.diag[..], &inverse.off[..]);
+        // `previous[i - v_done]` = r^n_i for the nodes v_done..=v_to of the block.
+        let mut previous = [0.0; BLOCK + 1];
+        // `a = M^-1 r` of the block, not stored (`Self::acceleration_at` forms it from `r`).
+        let mut a_block = [0.0; BLOCK];
         let (mut u_done, mut e_done, mut r_done, mut v_done) = (0, 0, 0, 0);
         let mut next_force = 0;
-        while r_done < n {
+        while v_done < n {
             let v_to = (v_done + BLOCK).min(n);
             let r_to = (v_to + 1).min(n);
             let e_to = r_to.div_ceil(LANES).saturating_mul(LANES).min(n - 1);
             let u_to = (e_to + 1).min(n);
-            // u^{n+1} = u^n + dt v^{n+1/2}.
-            for (ui, vi) in u[u_done..u_to].iter_mut().zip(&v[u_done..u_to]) {
-                *ui += dt * vi;
-            }
-            u_done = u_to;
-            // Strain lanes of the elements: N_e du_e, N_e = k_e du_e.
-            if e_done < e_to {
-                strain_lanes(&k[e_done + 1..e_to + 1], &u[e_done..e_to + 1], &mut strain);
-            }
-            e_done = e_to.max(e_done);
-            // r_i = N_i - N_{i-1} + F_i, each N formed as the whole-pass step forms it (the
-            // ghost forces beyond the ends are 0).
-            residual_rows(k, u, r, r_done, r_to);
+            advance_and_strain(dt, k, u, v, (&mut u_done, &mut e_done), (u_to, e_to), lanes);
+            let kept = &mut previous[r_done - v_done..];
+            residual_rows(k, u, r, kept, r_done, r_to);
             while let Some(&(node, f)) = forces.get(next_force).filter(|f| f.0 < r_to) {
                 r[node] += f;
                 next_force += 1;
             }
             r_done = r_to;
-            // Reciprocal mass: a = M^-1 r, row by row as `Tridiagonal::apply` forms it, and v.
-            if let Some((diag, off)) = reciprocal {
-                apply_rows(diag, off, r, a, v_done, v_to);
-                velocity_lanes(
-                    v,
-                    a,
-                    r_previous,
-                    r,
-                    dt,
-                    v_done,
-                    v_to,
-                    [&mut increment, &mut impulse],
-                );
-            }
+            let a_block = &mut a_block[..v_to - v_done];
+            apply_rows(diag, off, r, a_block, v_done, v_to);
+            velocity_lanes::<AVX2, true>(
+                &mut v[v_done..v_to],
+                a_block,
+                &previous,
+                &r[v_done..v_to],
+                dt,
+                [&mut lanes.increment, &mut lanes.impulse],
+            );
+            previous[0] = previous[v_to - v_done];
             v_done = v_to;
         }
-        if reciprocal.is_none() {
-            // a = M^-1 r (CMM, AMM: the factored solve), then v in one pass.
-            mass.apply_inverse(r, a);
-            velocity_lanes(
-                v,
-                a,
-                r_previous,
-                r,
-                dt,
-                0,
-                n,
-                [&mut increment, &mut impulse],
+    }
+
+    /// The CMM and AMM step: `u` and the residual in blocks (the residual overwriting `r^n` in
+    /// place, the energy increment `v^{n+1/2} (r^n + r^{n+1})` summed while both are in L1, and
+    /// the right-hand side of the solve copied out), the factored solve `a = M^-1 r`, then `v`
+    /// and the impulse `a r` in one pass.
+    #[inline(always)]
+    fn solved_step<const AVX2: bool>(&mut self, forces: &[(usize, f64)], lanes: &mut EnergyLanes) {
+        let Self {
+            dt,
+            stiffness: k,
+            mass:
+                MassOperator::Tridiagonal {
+                    factor,
+                    fixed_nodes,
+                    ..
+                },
+            u,
+            v,
+            a,
+            r_previous: r,
+            ..
+        } = self
+        else {
+            return;
+        };
+        let (dt, n) = (*dt, u.len());
+        let mut previous = [0.0; BLOCK];
+        let (mut u_done, mut e_done, mut r_done) = (0, 0, 0);
+        let mut next_force = 0;
+        while r_done < n {
+            let r_to = (r_done + BLOCK).min(n);
+            let e_to = r_to.div_ceil(LANES).saturating_mul(LANES).min(n - 1);
+            let u_to = (e_to + 1).min(n);
+            advance_and_strain(dt, k, u, v, (&mut u_done, &mut e_done), (u_to, e_to), lanes);
+            residual_rows(k, u, r, &mut previous, r_done, r_to);
+            while let Some(&(node, f)) = forces.get(next_force).filter(|f| f.0 < r_to) {
+                r[node] += f;
+                next_force += 1;
+            }
+            increment_lanes::<AVX2>(
+                &v[r_done..r_to],
+                &previous,
+                &r[r_done..r_to],
+                &mut a[r_done..r_to],
+                &mut lanes.increment,
             );
+            r_done = r_to;
         }
-        let total = |lanes: [f64; LANES]| lanes.iter().sum::<f64>();
-        self.staggered += 0.5 * dt * total(increment);
-        std::mem::swap(&mut self.r, &mut self.r_previous);
-        StepEnergy {
-            kinetic_staggered: self.staggered,
-            kinetic: self.staggered + 0.125 * dt * dt * total(impulse),
-            strain: 0.5 * total(strain),
-        }
+        // a = M^-1 r as `MassOperator::apply_inverse` forms it: 0 at the fixed nodes.
+        fixed_nodes.iter().for_each(|&i| a[i] = 0.0);
+        factor.solve_in_place(a);
+        velocity_lanes::<AVX2, false>(v, a, &[], r, dt, [&mut lanes.increment, &mut lanes.impulse]);
     }
 
     /// `1/2 v^{n-1/2} . M v^{n+1/2}` computed with the mass operator itself (one product or
@@ -262,182 +355,45 @@ impl MatrixCentralDifference {
     pub fn staggered_kinetic_from_mass(&mut self) -> f64 {
         let dt = self.dt;
         self.mass.apply(&self.v, &mut self.scratch);
-        0.5 * self
-            .v
-            .iter()
-            .zip(&self.a)
-            .zip(&self.scratch)
-            .map(|((v, a), mv)| (v - dt * a) * mv)
+        0.5 * (0..self.v.len())
+            .map(|i| (self.v[i] - dt * self.acceleration_at(i)) * self.scratch[i])
             .sum::<f64>()
     }
 }
 
-/// Nodes per block of the blocked reciprocal-mass step (a multiple of [`LANES`]).
-const BLOCK: usize = 512;
+/// The energy lanes of one step: strain `N_e du_e`, increment `v^{n+1/2} (r^n + r^{n+1})`,
+/// impulse `a^{n+1} r^{n+1}`.
+#[derive(Debug, Default)]
+struct EnergyLanes {
+    strain: [f64; LANES],
+    increment: [f64; LANES],
+    impulse: [f64; LANES],
+}
 
-/// `v^{n+3/2} = v^{n+1/2} + dt a^{n+1}` for nodes `from..to` (`from` a multiple of [`LANES`]),
-/// adding `v^{n+1/2} (r^n + r^{n+1})` and `a r` to the increment and impulse lanes.
-#[allow(clippy::too_many_arguments)]
+/// `u^{n+1} = u^n + dt v^{n+1/2}` for nodes `*u_done..u_to`, then the strain lanes of elements
+/// `*e_done..e_to` (which read `u` up to `e_to`); both counters advance.
 #[inline(always)]
-fn velocity_lanes(
-    v: &mut [f64],
-    a: &[f64],
-    r_previous: &[f64],
-    r: &[f64],
+fn advance_and_strain(
     dt: f64,
-    from: usize,
-    to: usize,
-    lanes: [&mut [f64; LANES]; 2],
+    k: &[f64],
+    u: &mut [f64],
+    v: &[f64],
+    (u_done, e_done): (&mut usize, &mut usize),
+    (u_to, e_to): (usize, usize),
+    lanes: &mut EnergyLanes,
 ) {
-    lane_sums_into(
-        &mut v[from..to],
-        (&a[from..to], (&r_previous[from..to], &r[from..to])),
-        |i, v, (a, (r_previous, r))| {
-            let terms = [*v * (r_previous[i] + r[i]), a[i] * r[i]];
-            *v += dt * a[i];
-            terms
-        },
-        &mut { lanes },
-    );
-}
-
-/// Add `N_e du_e`, `N_e = k[e] du_e`, `du_e = u[e + 1] - u[e]`, of the elements of `k` to lane
-/// `e % LANES` (the slices start at a multiple of [`LANES`] of the whole element array).
-#[inline(always)]
-fn strain_lanes(k: &[f64], u: &[f64], lanes: &mut [f64; LANES]) {
-    let mut local = *lanes;
-    let whole = k.len() / LANES * LANES;
-    for (kk, uu) in k[..whole]
-        .chunks_exact(LANES)
-        .zip(u.windows(LANES + 1).step_by(LANES))
-    {
-        for l in 0..LANES {
-            let du = uu[l + 1] - uu[l];
-            let force = kk[l] * du;
-            local[l] += force * du;
-        }
+    for (ui, vi) in u[*u_done..u_to].iter_mut().zip(&v[*u_done..u_to]) {
+        *ui += dt * vi;
     }
-    for e in whole..k.len() {
-        let du = u[e + 1] - u[e];
-        let force = k[e] * du;
-        local[e % LANES] += force * du;
+    *u_done = u_to.max(*u_done);
+    if *e_done < e_to {
+        strain_lanes(
+            &k[*e_done + 1..e_to + 1],
+            &u[*e_done..e_to + 1],
+            &mut lanes.strain,
+        );
     }
-    *lanes = local;
-}
-
-/// `r[i] = N_i - N_{i-1}` for rows `from..to` (the loads are added by the caller), with the
-/// element forces `N` of padded index `i + 1` formed as `k[i + 1] (u[i + 1] - u[i])` (`k` the
-/// padded stiffness, length `n + 1`) and the ghost forces 0: the whole-pass step's
-/// `element_force[i + 1] - element_force[i]`, operation for operation.
-#[inline(always)]
-fn residual_rows(k: &[f64], u: &[f64], r: &mut [f64], from: usize, to: usize) {
-    let n = u.len();
-    if from >= to {
-        return;
-    }
-    let force = |i: usize| k[i + 1] * (u[i + 1] - u[i]);
-    if n == 1 {
-        // One node, no element: both ghost forces, `0 - 0 = +0`.
-        r[0] = 0.0;
-        return;
-    }
-    if from == 0 {
-        r[0] = force(0) - 0.0;
-    }
-    let (lo, hi) = (from.max(1), to.min(n - 1));
-    if lo < hi {
-        for ((ri, us), ks) in r[lo..hi]
-            .iter_mut()
-            .zip(u[lo - 1..hi + 1].windows(3))
-            .zip(k[lo..hi + 1].windows(2))
-        {
-            *ri = ks[1] * (us[2] - us[1]) - ks[0] * (us[1] - us[0]);
-        }
-    }
-    if to == n {
-        r[n - 1] = 0.0 - force(n - 2);
-    }
-}
-
-/// `a[i] = (M^-1 r)_i` for rows `from..to` of the symmetric tridiagonal `M^-1` (`diag`, `off`),
-/// each row formed as [`crate::tridiagonal::Tridiagonal::apply`] forms it (same operations, same
-/// order); interior rows as zipped windows, so the loop vectorises.
-#[inline(always)]
-fn apply_rows(diag: &[f64], off: &[f64], r: &[f64], a: &mut [f64], from: usize, to: usize) {
-    let n = diag.len();
-    if from >= to {
-        return;
-    }
-    if n == 1 {
-        a[0] = diag[0] * r[0];
-        return;
-    }
-    if from == 0 {
-        a[0] = diag[0] * r[0] + off[0] * r[1];
-    }
-    let (lo, hi) = (from.max(1), to.min(n - 1));
-    if lo < hi {
-        for (((ai, rs), di), os) in a[lo..hi]
-            .iter_mut()
-            .zip(r[lo - 1..hi + 1].windows(3))
-            .zip(&diag[lo..hi])
-            .zip(off[lo - 1..hi].windows(2))
-        {
-            *ai = os[0] * rs[0] + di * rs[1] + os[1] * rs[2];
-        }
-    }
-    if to == n {
-        a[n - 1] = off[n - 2] * r[n - 2] + diag[n - 1] * r[n - 1];
-    }
-}
-
-/// [`lane_sums`] adding into `lanes` (one per term) instead of returning the totals: `x` and
-/// the data start at a multiple of [`LANES`] of the whole array, so local index `i` adds to the
-/// lane of its global index.
-#[inline(always)]
-fn lane_sums_into<const K: usize, D: Copy>(
-    x: &mut [f64],
-    data: D,
-    f: impl Fn(usize, &mut f64, D) -> [f64; K],
-    lanes: &mut [&mut [f64; LANES]; K],
-) {
-    let mut local = [[0.0; LANES]; K];
-    for (l, lane) in local.iter_mut().zip(lanes.iter()) {
-        *l = **lane;
-    }
-    let whole = x.len() / LANES * LANES;
-    let (body, rest) = x.split_at_mut(whole);
-    for (c, chunk) in body.chunks_exact_mut(LANES).enumerate() {
-        for (l, xi) in chunk.iter_mut().enumerate() {
-            let terms = f(c * LANES + l, xi, data);
-            for (lane, term) in local.iter_mut().zip(terms) {
-                lane[l] += term;
-            }
-        }
-    }
-    for (l, xi) in rest.iter_mut().enumerate() {
-        let terms = f(whole + l, xi, data);
-        for (lane, term) in local.iter_mut().zip(terms) {
-            lane[l] += term;
-        }
-    }
-    for (lane, l) in lanes.iter_mut().zip(local) {
-        **lane = l;
-    }
-}
-
-#[cfg(test)]
-/// Update every `x[i]` with `f(i, &mut x[i], data)` and sum each of the `K` terms it returns in
-/// [`LANES`] partial sums, added up in a fixed order at the end.
-#[inline(always)]
-fn lane_sums<const K: usize, D: Copy>(
-    x: &mut [f64],
-    data: D,
-    f: impl Fn(usize, &mut f64, D) -> [f64; K],
-) -> [f64; K] {
-    let mut lanes = [[0.0; LANES]; K];
-    lane_sums_into(x, data, f, &mut lanes.each_mut());
-    lanes.map(|lane| lane.iter().sum())
+    *e_done = e_to.max(*e_done);
 }
 
 #[cfg(test)]
@@ -445,8 +401,14 @@ mod tests {
     use super::*;
     use crate::mass::MassKind;
 
-    fn matrix_kernel(n: usize, kind: MassKind) -> MatrixCentralDifference {
-        let model = crate::fixtures::graded_seed_bar(n).unwrap();
+    /// The graded seed bar (fixed right end) or, `free`, the same bar free at both ends.
+    fn matrix_kernel(n: usize, kind: MassKind, free: bool) -> MatrixCentralDifference {
+        let model = if free {
+            let bar = crate::fixtures::graded_bar(n).unwrap();
+            crate::Model::unloaded(bar, crate::Supports::default())
+        } else {
+            crate::fixtures::graded_seed_bar(n).unwrap()
+        };
         let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
         let v = crate::fixtures::smooth_half_velocity(n);
         let zeros = vec![0.0; n + 1];
@@ -476,28 +438,31 @@ mod tests {
                 ],
             ),
             (5, vec![(0, 1.0)]),
+            // n elements, n + 1 nodes: the last node alone in the last block.
+            (2 * BLOCK, vec![(0, 1.0)]),
         ] {
-            for (kind, avx2) in [
+            for (kind, avx2, free) in [
                 MassKind::Reciprocal { beta: 0.5 },
                 MassKind::Consistent,
                 MassKind::Averaged { beta: 0.5 },
             ]
             .into_iter()
             .flat_map(|kind| [(kind, false), (kind, has_avx2())])
+            .flat_map(|(kind, avx2)| [(kind, avx2, false), (kind, avx2, true)])
             {
-                let mut blocked = matrix_kernel(n, kind);
+                let mut blocked = matrix_kernel(n, kind, free);
                 blocked.avx2 = avx2;
-                let mut whole = matrix_kernel(n, kind);
+                let mut whole = matrix_kernel(n, kind, free);
                 for _ in 0..200 {
                     let a = blocked.step_with_energy(&forces);
                     let b = whole.whole_pass_step(&forces);
-                    assert_eq!(a, b, "{kind:?}");
+                    assert_eq!(a, b, "{kind:?}, n = {n}, free {free}");
                 }
                 assert_eq!((&blocked.u, &blocked.v), (&whole.u, &whole.v));
-                assert_eq!(
-                    (&blocked.a, &blocked.r_previous),
-                    (&whole.a, &whole.r_previous)
-                );
+                assert_eq!(&blocked.r_previous, &whole.r_previous);
+                for i in 0..=n {
+                    assert_eq!(blocked.acceleration_at(i), whole.a[i], "node {i}");
+                }
             }
         }
     }

@@ -185,9 +185,9 @@ impl CentralDifferenceKernel for MatrixCentralDifference {
     fn half_step_velocity(&self) -> &[f64] {
         self.half_step_velocity()
     }
-    /// The kept solve `a^n = M^-1 r^n`.
+    /// `a^n = M^-1 r^n` at node `i` (kept by CMM and AMM, one row of `M^-1` for RMM).
     fn acceleration_at(&self, _: &Model, i: usize, _: f64) -> f64 {
-        self.acceleration()[i]
+        self.acceleration_at(i)
     }
     #[inline]
     fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
