@@ -11,7 +11,6 @@
 //! column differs; and a failed expectation fails the command.
 
 use std::path::Path;
-use std::process::Command;
 
 #[path = "common/cli.rs"]
 mod cli;
@@ -52,11 +51,7 @@ fn run_writes_profiles_histories_energy_and_summary_identically_with_1_and_4_thr
         let mut args = vec!["run"];
         args.extend(scenes);
         args.extend(["--out", out.to_str().unwrap()]);
-        let status = Command::new(env!("CARGO_BIN_EXE_courant"))
-            .args(&args)
-            .env("RAYON_NUM_THREADS", threads)
-            .output()
-            .unwrap();
+        let status = cli::courant_with_env(&args, &[("RAYON_NUM_THREADS", threads)]);
         assert!(
             status.status.success(),
             "{}",

@@ -17,7 +17,6 @@
 mod cli;
 
 use std::path::Path;
-use std::process::Command;
 
 const SCENE: &str = r#"
 [scene]
@@ -97,16 +96,15 @@ fn a_1e5_element_run_writes_the_same_files_on_one_two_and_three_threads() {
     std::fs::write(&scene, SCENE).unwrap();
     let run = |threads: &str| {
         let out = dir.join(format!("t{threads}"));
-        let status = Command::new(env!("CARGO_BIN_EXE_courant"))
-            .args([
+        let status = cli::courant_with_env(
+            &[
                 "run",
                 scene.to_str().unwrap(),
                 "--out",
                 out.to_str().unwrap(),
-            ])
-            .env("COURANT_THREADS", threads)
-            .output()
-            .unwrap();
+            ],
+            &[("COURANT_THREADS", threads)],
+        );
         assert!(
             status.status.success(),
             "{}",

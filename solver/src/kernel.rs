@@ -468,17 +468,24 @@ pub(crate) fn has_avx2() -> bool {
     }
 }
 
+/// A kernel on the graded seed bar of `n` elements at half its critical step, from rest with a
+/// smooth half-step velocity (0 at the fixed end): the unit tests' bar.
+#[cfg(test)]
+pub(crate) fn graded_test_kernel(n: usize) -> LumpedCentralDifference {
+    let model = crate::fixtures::graded_seed_bar(n).unwrap();
+    let dt = 0.5 * model.bar().stiffest_element().1;
+    let v: Vec<f64> = (0..=n)
+        .map(|i| if i == n { 0.0 } else { (i as f64 * 0.37).sin() })
+        .collect();
+    LumpedCentralDifference::new(&model, dt, &vec![0.0; n + 1], &v)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn graded_kernel(n: usize) -> LumpedCentralDifference {
-        let model = crate::fixtures::graded_seed_bar(n).unwrap();
-        let dt = 0.5 * model.bar().stiffest_element().1;
-        let v: Vec<f64> = (0..=n)
-            .map(|i| if i == n { 0.0 } else { (i as f64 * 0.37).sin() })
-            .collect();
-        LumpedCentralDifference::new(&model, dt, &vec![0.0; n + 1], &v)
+        graded_test_kernel(n)
     }
 
     #[test]

@@ -305,14 +305,7 @@ unsafe fn region<const ENERGY: bool, const AVX2: bool>(
 mod tests {
     use super::*;
 
-    fn graded_kernel(n: usize) -> LumpedCentralDifference {
-        let model = crate::fixtures::graded_seed_bar(n).unwrap();
-        let dt = 0.5 * model.bar().stiffest_element().1;
-        let v: Vec<f64> = (0..=n)
-            .map(|i| if i == n { 0.0 } else { (i as f64 * 0.37).sin() })
-            .collect();
-        LumpedCentralDifference::new(&model, dt, &vec![0.0; n + 1], &v)
-    }
+    use crate::kernel::graded_test_kernel as graded_kernel;
 
     /// Blocks on 1, 2, 3 and 5 threads against single steps: loads at the first and last node,
     /// inside a tile, on a tile edge and where a region's first velocity update lands on a loaded

@@ -13,6 +13,15 @@ pub fn courant(args: &[&str]) -> Output {
         .unwrap()
 }
 
+/// [`courant`] with the environment variables `env` set (e.g. thread counts).
+pub fn courant_with_env(args: &[&str], env: &[(&str, &str)]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_courant"))
+        .args(args)
+        .envs(env.iter().copied())
+        .output()
+        .unwrap()
+}
+
 /// A fresh, empty directory `courant-<test file>-<name>-<pid>` under the system's temporary
 /// directory (whatever an earlier run left there removed first).
 pub fn scratch(name: &str) -> PathBuf {
