@@ -98,3 +98,16 @@ pub fn smooth_half_velocity(elements: usize) -> Vec<f64> {
         })
         .collect()
 }
+
+/// A lumped kernel on [`graded_seed_bar`] of `n` elements at half its stiffest element's step,
+/// from rest with the half-step velocity `sin(0.37 i)` (0 at the fixed end): the lumped kernels'
+/// unit-test bar.
+#[cfg(test)]
+pub(crate) fn graded_test_kernel(n: usize) -> crate::kernel::LumpedCentralDifference {
+    let model = graded_seed_bar(n).unwrap();
+    let dt = 0.5 * model.bar().stiffest_element().1;
+    let v: Vec<f64> = (0..=n)
+        .map(|i| if i == n { 0.0 } else { (i as f64 * 0.37).sin() })
+        .collect();
+    crate::kernel::LumpedCentralDifference::new(&model, dt, &vec![0.0; n + 1], &v)
+}

@@ -468,25 +468,11 @@ pub(crate) fn has_avx2() -> bool {
     }
 }
 
-/// A kernel on the graded seed bar of `n` elements at half its critical step, from rest with a
-/// smooth half-step velocity (0 at the fixed end): the unit tests' bar.
-#[cfg(test)]
-pub(crate) fn graded_test_kernel(n: usize) -> LumpedCentralDifference {
-    let model = crate::fixtures::graded_seed_bar(n).unwrap();
-    let dt = 0.5 * model.bar().stiffest_element().1;
-    let v: Vec<f64> = (0..=n)
-        .map(|i| if i == n { 0.0 } else { (i as f64 * 0.37).sin() })
-        .collect();
-    LumpedCentralDifference::new(&model, dt, &vec![0.0; n + 1], &v)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn graded_kernel(n: usize) -> LumpedCentralDifference {
-        graded_test_kernel(n)
-    }
+    use crate::fixtures::graded_test_kernel as graded_kernel;
 
     #[test]
     fn vector_and_portable_paths_and_energy_variant_are_bit_identical() {

@@ -305,7 +305,7 @@ unsafe fn region<const ENERGY: bool, const AVX2: bool>(
 mod tests {
     use super::*;
 
-    use crate::kernel::graded_test_kernel as graded_kernel;
+    use crate::fixtures::graded_test_kernel as graded_kernel;
 
     /// Blocks on 1, 2, 3 and 5 threads against single steps: loads at the first and last node,
     /// inside a tile, on a tile edge and where a region's first velocity update lands on a loaded
