@@ -131,7 +131,12 @@ enum Command {
 
 fn main() -> ExitCode {
     courant::cli::exit_quietly_on_closed_pipe();
-    match Cli::parse().command {
+    let command = Cli::parse().command;
+    if let Err(message) = courant::cli::check_thread_setting() {
+        eprintln!("error: {message}");
+        return ExitCode::from(2);
+    }
+    match command {
         Command::List { schemes } => courant::cli::list(schemes),
         Command::Run {
             scenes,

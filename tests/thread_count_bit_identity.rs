@@ -7,7 +7,8 @@
 //!   COURANT_THREADS=3  courant run bar.toml --out C ┘   (but the wall-time column)
 //! ```
 //!
-//! Proves: a lumped Fig. 1 bar of 10^5 elements (2 223 steps: three blocks of up to 1024 steps,
+//! Proves: a `COURANT_THREADS` that is not a positive integer is refused (exit 2, naming it);
+//! a lumped Fig. 1 bar of 10^5 elements (2 223 steps: three blocks of up to 1024 steps,
 //! each pipelined across the threads' regions; node histories at the loaded end, mid-bar and
 //! near a region edge; profiles between blocks) writes the same profiles, histories, energies
 //! and errors on one, two and three threads. The kernel-level proof (states, energies and
@@ -126,4 +127,19 @@ fn a_1e5_element_run_writes_the_same_files_on_one_two_and_three_threads() {
             assert!(a == b, "{name} differs between 1 and {threads} threads");
         }
     }
+}
+
+#[test]
+fn a_thread_count_that_is_not_a_positive_integer_is_refused_naming_the_variable() {
+    for bad in ["0", "two", "-1", ""] {
+        let out = cli::courant_with_env(&["list"], &[("COURANT_THREADS", bad)]);
+        assert_eq!(out.status.code(), Some(2), "COURANT_THREADS={bad:?}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            stderr.contains("COURANT_THREADS") && stderr.contains("positive integer"),
+            "{stderr}"
+        );
+    }
+    let fine = cli::courant_with_env(&["list"], &[("COURANT_THREADS", "3")]);
+    assert!(fine.status.success());
 }

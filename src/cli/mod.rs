@@ -11,6 +11,24 @@ pub mod run;
 pub mod schemes;
 pub mod score;
 
+/// Refuse a `COURANT_THREADS` that is set but not a positive integer, naming the variable, the
+/// value and the rule (the solver would otherwise fall back to every core without a word).
+///
+/// # Errors
+/// The message to print; the caller exits with status 2.
+pub fn check_thread_setting() -> Result<(), String> {
+    match std::env::var("COURANT_THREADS") {
+        Err(std::env::VarError::NotPresent) => Ok(()),
+        Ok(text) if text.trim().parse::<usize>().is_ok_and(|t| t > 0) => Ok(()),
+        Ok(text) => Err(format!(
+            "COURANT_THREADS: {text:?} must be a positive integer (the threads of a lumped run of 1e5 nodes or more; unset: every core)"
+        )),
+        Err(std::env::VarError::NotUnicode(_)) => {
+            Err("COURANT_THREADS: not valid Unicode; it must be a positive integer".to_string())
+        }
+    }
+}
+
 /// Let a closed pipe end the process quietly, as Unix tools do (`courant list | head`): Rust
 /// ignores SIGPIPE, so printing to a closed pipe would panic; the default action ends the
 /// process without a message.
