@@ -8,9 +8,11 @@
 //! ```
 //!
 //! Proves: a `COURANT_THREADS` that is not a positive integer is refused (exit 2, naming it);
-//! a lumped Fig. 1 bar of 10^5 elements (2 223 steps: three blocks of up to 1024 steps,
-//! each pipelined across the threads' regions; node histories at the loaded end, mid-bar and
-//! near a region edge; profiles between blocks) writes the same profiles, histories, energies
+//! a lumped Fig. 1 bar of 10^5 elements (2 223 steps: blocks of up to 1024 steps, each pipelined
+//! across the threads' regions; node histories at the loaded end, mid-bar, and 6-10 nodes left of
+//! the region seams of two threads (node 50 176) and three (32 768, 66 560), where a node's
+//! values pass from one thread to the next during a sub-block; profiles between blocks) writes
+//! the same profiles, histories, energies
 //! and errors on one, two and three threads. The kernel-level proof (states, energies and
 //! probes against single steps, loads on region edges) is `kernel_pipeline`'s unit test.
 
@@ -46,7 +48,7 @@ courant = 0.9
 [output]
 time_unit = "transit"
 profile_times = [0.005, 0.02]
-history_points = [0.0, 0.5, 0.33333]
+history_points = [0.0, 0.5, 0.33333, 0.3276, 0.5017, 0.6655]
 history_every = 7
 [reference]
 kind = "dalembert"

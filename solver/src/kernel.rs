@@ -127,7 +127,7 @@ impl LumpedCentralDifference {
             u,
             v,
             avx2: has_avx2(),
-            threads: default_threads(n + 1),
+            threads: default_threads(n),
         }
     }
 

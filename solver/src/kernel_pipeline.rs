@@ -82,7 +82,8 @@ impl LumpedCentralDifference {
     /// [`Self::step_with_energy`] whatever the thread count.
     ///
     /// # Panics
-    /// When `steps` is 0 or above [`MAX_BLOCK_STEPS`] (a caller's bug, not user input).
+    /// When `steps` is 0 or above [`MAX_BLOCK_STEPS`], or a load or probe of `block` is not a
+    /// node of the bar (a caller's bug, not user input).
     pub fn advance_block<const ENERGY: bool>(&mut self, block: &mut StepBlock, steps: usize) {
         assert!(
             (1..=MAX_BLOCK_STEPS).contains(&steps),
@@ -97,8 +98,16 @@ impl LumpedCentralDifference {
             len: self.u.len(),
             dt: self.dt,
         };
+        let nodes = bar.len - 2;
+        let in_range = |nodes_of: &[usize]| nodes_of.last().is_none_or(|&last| last < nodes);
+        assert!(
+            in_range(&block.load_nodes) && in_range(&block.u_probes) && in_range(&block.v_probes),
+            "a block's loads and probes must be nodes of the bar (0..{nodes})"
+        );
         let tiles = tile_count(bar.len);
-        let threads = self.threads.clamp(1, tiles);
+        // One thread per region of at least one tile, and no more threads than sub-blocks (a
+        // pipeline of one sub-block runs its regions one after the other).
+        let threads = self.threads.clamp(1, tiles.min(steps.div_ceil(DEPTH)));
         block.prepare_workers(threads, steps);
         let StepBlock {
             load_nodes,

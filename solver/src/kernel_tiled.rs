@@ -64,7 +64,8 @@ unsafe impl Sync for BarView {}
 
 /// What a block of steps takes and gives: the loads of each step, the nodes whose `u^s` and
 /// `v^{s+1/2}` the caller wants after every step, and the energies. All buffers are sized once
-/// ([`StepBlock::new`]); a block allocates nothing but its threads.
+/// ([`StepBlock::new`]); a block on one thread allocates nothing, a block on several allocates
+/// its threads and the pipeline's counters (a fixed few per block, none per step).
 #[derive(Debug, Clone)]
 pub struct StepBlock {
     /// Loaded real nodes, sorted, each once.

@@ -7,8 +7,9 @@
 //! ```
 //!
 //! Proves: one step of lumped CD (and a block of its steps on one thread; on two threads a
-//! block allocates a fixed few buffers and its thread, never per step), of CD with each non-diagonal mass (CMM, AMM: partitioned
-//! tridiagonal solve; RMM: product with M^-1), of Park's scheme (global and local stepping,
+//! block allocates a fixed few buffers and its thread, never per step), of CD with each
+//! non-diagonal mass (CMM, AMM: partitioned tridiagonal solve; RMM: product with M^-1), of
+//! Park's scheme (global and local stepping,
 //! both variants), and of the Noh-Bathe stepper with every mass (stepped through the public
 //! `Integrator` interface, as the shared time loop steps it) performs exactly zero heap
 //! allocations, counted by a global allocator wrapper.

@@ -50,8 +50,9 @@ pub fn run_scene(scene: &Scene) -> Result<SceneRecords, RunError> {
 
 /// Every case, in input order: those whose run uses several threads
 /// ([`courant_solver::Integration::threads`]: lumped runs from 1e5 nodes on) one at a time, the
-/// others in parallel (one case per core), so that the cores are never shared by two
-/// multi-threaded cases. The records do not depend on the order of running.
+/// others in parallel (one case per core), so that two multi-threaded cases of one scene never
+/// share the cores (scenes of a report and convergence studies still run in parallel with each
+/// other). The records do not depend on the order of running.
 fn run_cases(cases: &[Case]) -> Result<Vec<CaseRecord>, RunError> {
     let threaded = |case: &Case| case.integrator.threads(&case.model) > 1;
     let mut records: Vec<Option<Result<CaseRecord, RunError>>> = cases

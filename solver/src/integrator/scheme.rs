@@ -13,7 +13,7 @@ use crate::stability::CriticalStep;
 use std::sync::Arc;
 
 /// What the time loop is given besides the scheme's parameters.
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct RunSetup<'a> {
     /// The model.
     pub model: &'a Model,

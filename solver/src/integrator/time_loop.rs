@@ -24,10 +24,12 @@
 //! loaded nodes and of each history node and its neighbours (with its half-step velocity), so
 //! the loop does exactly the per-step work above on exactly the same numbers: the work, the
 //! balance, the guard, the energy samples and the histories of every step are bit-identical to
-//! single steps. One thing differs: if the guard trips inside a block (a run below its stability
-//! limit cannot diverge, so it would take a bug), the step, time and energy ratio are the
-//! step's, but the node of largest `|u|` is read from the state at the block's end. A run
-//! allowed to be unstable steps singly, so the stability table names the node of its own step.
+//! single steps. If the guard trips inside a block (a stable run can trip it: the guard's ratio
+//! is the scene's `blowup_energy_ratio`, any positive value), the step, time and energy ratio
+//! are the step's, but the state is past it; the run is then repeated by single steps (it is
+//! deterministic: the same trip, the same partial output), so the error names the node of
+//! largest `|u|` at its own step. That second run is the only cost, and only on failure. A run
+//! allowed to be unstable steps singly from the start.
 
 use super::contract::{InitialState, Integrator};
 use super::guard::{BlowUpGuard, impulse_energy};
@@ -37,6 +39,7 @@ use super::settings::OutputRequest;
 use crate::error::{DivergenceError, RunError};
 use crate::kernel::StepEnergy;
 use crate::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock};
+use crate::mass::MassOperator;
 use crate::model::Model;
 use crate::output::{EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput};
 
@@ -50,6 +53,52 @@ pub fn run<I: Integrator>(
     parameters: &I::Parameters,
     setup: RunSetup<'_>,
 ) -> Result<RunOutput, RunError> {
+    // Kept to repeat the run by single steps if the guard trips inside a block (only a lumped
+    // run that must stay stable takes blocks; its mass is shared, so the copy is cheap).
+    let single_steps = match &setup.mass {
+        MassOperator::Diagonal { .. } if !setup.stability.allow_unstable => Some(setup.clone()),
+        _ => None,
+    };
+    match run_steps::<I>(parameters, setup, true) {
+        Stop::Finished(result) => result,
+        Stop::TrippedInsideBlock(error) => match single_steps {
+            Some(setup) => match run_steps::<I>(parameters, setup, false) {
+                Stop::Finished(result) => result,
+                Stop::TrippedInsideBlock(error) => Err(error),
+            },
+            None => Err(error),
+        },
+    }
+}
+
+/// How [`run_steps`] ended: with the run's result, or with a guard trip inside a block of
+/// steps, whose state is then past the trip step (the divergence's node would be read from a
+/// later level).
+enum Stop {
+    Finished(Result<RunOutput, RunError>),
+    TrippedInsideBlock(RunError),
+}
+
+/// The loop of [`run`]; `blocks`: whether a stepper with temporal blocking may take blocks.
+fn run_steps<I: Integrator>(parameters: &I::Parameters, setup: RunSetup<'_>, blocks: bool) -> Stop {
+    match run_steps_result::<I>(parameters, setup, blocks) {
+        Ok(output) => Stop::Finished(Ok(output)),
+        Err(Tripped::InsideBlock(error)) => Stop::TrippedInsideBlock(error),
+        Err(Tripped::No(error)) => Stop::Finished(Err(error)),
+    }
+}
+
+/// An error of [`run_steps_result`]: a guard trip inside a block, or any other end.
+enum Tripped {
+    InsideBlock(RunError),
+    No(RunError),
+}
+
+fn run_steps_result<I: Integrator>(
+    parameters: &I::Parameters,
+    setup: RunSetup<'_>,
+    allow_blocks: bool,
+) -> Result<RunOutput, Tripped> {
     let RunSetup {
         model,
         dt,
@@ -106,7 +155,8 @@ pub fn run<I: Integrator>(
             allow_unstable: stability.allow_unstable,
             mass: operator,
         },
-    )?;
+    )
+    .map_err(|e| Tripped::No(e.into()))?;
     // The start's arrays are not needed by the steps: free them before the loop (16 bytes per
     // node that a long run would otherwise hold).
     drop((r0, a0));
@@ -169,7 +219,7 @@ pub fn run<I: Integrator>(
     let mut after = vec![0.0; forces.len()];
     // Temporal blocking where the stepper has it, for runs that must stay stable (an allowed
     // unstable run steps singly, so a divergence names the node of its own step).
-    let mut blocks = (integrator.steps_in_blocks() && !stability.allow_unstable)
+    let mut blocks = (allow_blocks && integrator.steps_in_blocks() && !stability.allow_unstable)
         .then(|| BlockBuffers::new(model, &load_nodes, request));
     let mut step = 0;
     while step < steps {
@@ -210,7 +260,13 @@ pub fn run<I: Integrator>(
                     &mut output,
                 );
                 if let Some(energy_ratio) = tripped {
-                    return Err(diverged(&integrator, step, t, energy_ratio, output));
+                    let error = diverged(&integrator, step, t, energy_ratio, output);
+                    // The state is at the block's end: at the trip step only if it is the last.
+                    return Err(if s + 1 == depth {
+                        Tripped::No(error)
+                    } else {
+                        Tripped::InsideBlock(error)
+                    });
                 }
                 sample_energy(&ledger, step, steps, t, sums, request, &mut output, || None);
                 if step.is_multiple_of(request.history_every) {
@@ -250,7 +306,13 @@ pub fn run<I: Integrator>(
             &mut output,
         );
         if let Some(energy_ratio) = tripped {
-            return Err(diverged(&integrator, step, t, energy_ratio, output));
+            return Err(Tripped::No(diverged(
+                &integrator,
+                step,
+                t,
+                energy_ratio,
+                output,
+            )));
         }
         // A stepper that carries T* forward by increments recomputes it from M at each sample;
         // any mismatch counts as balance error.
