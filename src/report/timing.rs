@@ -3,7 +3,7 @@
 //! against CPU time, and the criterion benchmark table (`timing.benchmarks.csv`), stamped with
 //! commit, date, CPU, threads and rustc.
 
-use super::bench_table::bench_table;
+use super::bench_table::{bench_table, empty_bench_table};
 use super::work_precision::cpu_chart;
 use crate::compare::work_precision::cpu_table;
 use crate::io::clock::date;
@@ -13,7 +13,7 @@ use crate::scene::cases::Scene;
 use crate::scene::studies::work_precision::WORK_PRECISION_STUDIES;
 
 /// The timing files: `timing.md` and what it links (`timing.csv`, `timing.work_precision.csv`,
-/// its SVGs, `timing.benchmarks.csv` when criterion results exist).
+/// its SVGs, `timing.benchmarks.csv`, with its header only when there are no criterion results).
 pub fn timing_files(scenes: &[Scene], runs: &ReportRuns) -> Vec<(String, String)> {
     let mut files = Vec::new();
     // Timings: everything that changes from run to run.
@@ -84,7 +84,13 @@ pub fn timing_files(scenes: &[Scene], runs: &ReportRuns) -> Vec<(String, String)
             ));
         }
         None => {
-            tmd += "No criterion results found in `target/criterion`: run `cargo bench` first.\n"
+            tmd += "No criterion results found in `target/criterion`: run `cargo bench` first.\n";
+            // Written with its header only: the report's files (and its manifest) do not
+            // depend on whether benchmarks were run.
+            files.push((
+                "timing.benchmarks.csv".into(),
+                empty_bench_table().to_csv(Precision::RoundTrip),
+            ));
         }
     }
     files.push(("timing.md".into(), tmd));
