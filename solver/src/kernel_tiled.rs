@@ -23,11 +23,12 @@
 //! order, node `j` of a segment starting at `a` (after a loaded node) adding to lane
 //! `(j - a) % 8` as in the one-step kernel (lanes rotated where a sweep starts mid-segment).
 //!
-//! **Threads** ([`crate::kernel_pipeline`]): the tiles are cut into one contiguous region per
-//! thread. Region `q` runs sub-block `b` once region `q - 1` has finished it (it continues that
-//! region's lanes and edge slots) and once region `q + 1` has finished the first tile of
-//! sub-block `b - 1` (whose nodes it overwrites): a pipeline, the same operations in the same
-//! order whatever the thread count, so the results are bit-identical to one thread.
+//! **Threads** (`kernel_pipeline.rs`,
+//! [`crate::kernel::LumpedCentralDifference::advance_block`]): the tiles are cut into one
+//! contiguous region per thread. Region `q` runs sub-block `b` once region `q - 1` has finished
+//! it (it continues that region's lanes and edge slots) and once region `q + 1` has finished the
+//! first tile of sub-block `b - 1` (whose nodes it overwrites): a pipeline, the same operations
+//! in the same order whatever the thread count, so the results are bit-identical to one thread.
 
 use crate::kernel::{LANES, Lanes, StepEnergy, sweep_nodes, update_one_node};
 

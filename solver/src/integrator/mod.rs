@@ -41,9 +41,10 @@
 //! Files: `contract` ([`Integrator`], [`InitialState`]), `scheme` ([`Scheme`], [`Integration`]),
 //! `registry` ([`SchemeEntry`] and parameters), `limit` ([`SchemeLimit`]), `measure` (the
 //! measured critical step), `time_loop` (the loop, by single steps or by blocks of steps for a
-//! stepper with temporal blocking), `guard` (blow-up detection), `record`
+//! stepper with temporal blocking), `blocks` (a block's end and buffers), `guard` (blow-up detection), `record`
 //! (profiles and histories), `settings` (start, stability policy, output request).
 
+mod blocks;
 mod contract;
 mod guard;
 mod limit;

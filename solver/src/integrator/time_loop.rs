@@ -18,7 +18,7 @@
 //! dissipative scheme its drift is the energy the scheme removed.
 //!
 //! **Blocks of steps.** A stepper with temporal blocking ([`Integrator::steps_in_blocks`]:
-//! lumped central difference, [`crate::kernel_tiled`]) takes up to [`MAX_BLOCK_STEPS`] steps per
+//! lumped central difference, [`crate::kernel_tiled`]) takes up to [`crate::kernel_tiled::MAX_BLOCK_STEPS`] steps per
 //! call when the run must stay stable (`allow_unstable` off); a block ends at the last step and
 //! at every profile step. The stepper returns every step's energies and the displacements of the
 //! loaded nodes and of each history node and its neighbours (with its half-step velocity), so
@@ -31,6 +31,7 @@
 //! largest `|u|` at its own step. That second run is the only cost, and only on failure. A run
 //! allowed to be unstable steps singly from the start.
 
+use super::blocks::{BlockBuffers, block_depth};
 use super::contract::{InitialState, Integrator};
 use super::guard::{BlowUpGuard, impulse_energy};
 use super::record::{record, record_profile};
@@ -38,10 +39,9 @@ use super::scheme::RunSetup;
 use super::settings::OutputRequest;
 use crate::error::{DivergenceError, RunError};
 use crate::kernel::StepEnergy;
-use crate::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock};
 use crate::mass::MassOperator;
 use crate::model::Model;
-use crate::output::{EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput};
+use crate::output::{EnergyLog, EnergySample, NodeHistory, RunOutput};
 
 /// Run `setup.steps` steps of the scheme whose stepper is `I`, with its `parameters`. The caller
 /// ([`super::Integration::run`]) has validated the request and the step.
@@ -333,16 +333,6 @@ fn run_steps_result<I: Integrator>(
     Ok(output)
 }
 
-/// The steps of the next block: up to [`MAX_BLOCK_STEPS`], ending at the last step and at the
-/// next profile step (a profile needs the whole bar at its level).
-fn block_depth(step: usize, steps: usize, next_profile: Option<usize>) -> usize {
-    let mut end = (step + MAX_BLOCK_STEPS).min(steps);
-    if let Some(profile) = next_profile.filter(|&p| p > step) {
-        end = end.min(profile);
-    }
-    end - step
-}
-
 /// What the loop carries from step to step: the loads of the last level, the trapezoidal work
 /// and the energy reference of the guard.
 struct Ledger {
@@ -458,79 +448,5 @@ fn diverged<I: Integrator>(
     RunError::Diverged {
         error,
         partial: Box::new(output),
-    }
-}
-
-/// The buffers of blocks of steps: the [`StepBlock`] with the loaded nodes, and every history
-/// node with its neighbours as displacement probes and itself as a velocity probe.
-struct BlockBuffers {
-    block: StepBlock,
-    /// Probe index of each loaded node (in the loop's load order).
-    load_probe: Vec<usize>,
-    /// Probe indices `[i-1, i, i+1]` and the velocity probe of each history.
-    history_probes: Vec<([usize; 3], usize)>,
-    u_width: usize,
-    v_width: usize,
-}
-
-impl BlockBuffers {
-    fn new(model: &Model, load_nodes: &[usize], request: &OutputRequest) -> Self {
-        let last = model.bar().node_count() - 1;
-        let neighbours = |i: usize| [i.saturating_sub(1), i, (i + 1).min(last)];
-        let mut u_probes: Vec<usize> = load_nodes.to_vec();
-        for &i in &request.history_nodes {
-            u_probes.extend(neighbours(i));
-        }
-        let block = StepBlock::new(load_nodes, &u_probes, &request.history_nodes);
-        let index = |probes: &[usize], node: usize| probes.binary_search(&node).unwrap_or(0);
-        let load_probe = load_nodes
-            .iter()
-            .map(|&n| index(block.u_probes(), n))
-            .collect();
-        let history_probes = request
-            .history_nodes
-            .iter()
-            .map(|&i| {
-                (
-                    neighbours(i).map(|n| index(block.u_probes(), n)),
-                    index(block.v_probes(), i),
-                )
-            })
-            .collect();
-        Self {
-            u_width: block.u_probes().len(),
-            v_width: block.v_probes().len(),
-            block,
-            load_probe,
-            history_probes,
-        }
-    }
-
-    /// The history samples of block row `s` (step `step`, time `t`), as
-    /// [`super::record::record`] takes them from the state.
-    fn record_histories<I: Integrator>(
-        &self,
-        model: &Model,
-        integrator: &I,
-        s: usize,
-        step: usize,
-        t: f64,
-        output: &mut RunOutput,
-    ) {
-        let u = &self.block.u_values[s * self.u_width..(s + 1) * self.u_width];
-        let v = &self.block.v_values[s * self.v_width..(s + 1) * self.v_width];
-        for (history, (around, at)) in output.histories.iter_mut().zip(&self.history_probes) {
-            let i = history.node;
-            let three = around.map(|p| u[p]);
-            let (velocity, acceleration) =
-                integrator.probed_velocity_and_acceleration(model, i, t, three, v[*at]);
-            history.samples.push(HistorySample {
-                step,
-                time: t,
-                displacement: three[1],
-                velocity,
-                acceleration,
-            });
-        }
     }
 }

@@ -104,7 +104,7 @@ pub(crate) fn half_step_start(state: &InitialState<'_>) -> (Vec<f64>, f64) {
 /// `u^n`, `v^{n+1/2}`): how it is built from the half-step start, its step, and `a^n` at a node.
 pub trait CentralDifferenceKernel: Sized {
     /// The kernel started with `v^{1/2}` (taken: a kernel may keep its buffer) and `T*^0` (from
-    /// [`half_step_start`]).
+    /// `half_step_start`).
     fn build(state: InitialState<'_>, half_step_velocity: Vec<f64>, staggered0: f64) -> Self;
     /// Time step.
     fn dt(&self) -> f64;

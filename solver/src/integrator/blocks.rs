@@ -1,0 +1,93 @@
+//! What the time loop needs to take blocks of steps (temporal blocking, [`crate::kernel_tiled`]):
+//! where the next block ends, and the buffers of a block with the probes that give the loop each
+//! step's loads' displacements and history samples.
+
+use super::contract::Integrator;
+use super::settings::OutputRequest;
+use crate::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock};
+use crate::model::Model;
+use crate::output::{HistorySample, RunOutput};
+
+/// The steps of the next block: up to [`MAX_BLOCK_STEPS`], ending at the last step and at the
+/// next profile step (a profile needs the whole bar at its level).
+pub(super) fn block_depth(step: usize, steps: usize, next_profile: Option<usize>) -> usize {
+    let mut end = (step + MAX_BLOCK_STEPS).min(steps);
+    if let Some(profile) = next_profile.filter(|&p| p > step) {
+        end = end.min(profile);
+    }
+    end - step
+}
+
+/// The buffers of blocks of steps: the [`StepBlock`] with the loaded nodes, and every history
+/// node with its neighbours as displacement probes and itself as a velocity probe.
+pub(super) struct BlockBuffers {
+    pub(super) block: StepBlock,
+    /// Probe index of each loaded node (in the loop's load order).
+    pub(super) load_probe: Vec<usize>,
+    /// Probe indices `[i-1, i, i+1]` and the velocity probe of each history.
+    history_probes: Vec<([usize; 3], usize)>,
+    pub(super) u_width: usize,
+    v_width: usize,
+}
+
+impl BlockBuffers {
+    pub(super) fn new(model: &Model, load_nodes: &[usize], request: &OutputRequest) -> Self {
+        let last = model.bar().node_count() - 1;
+        let neighbours = |i: usize| [i.saturating_sub(1), i, (i + 1).min(last)];
+        let mut u_probes: Vec<usize> = load_nodes.to_vec();
+        for &i in &request.history_nodes {
+            u_probes.extend(neighbours(i));
+        }
+        let block = StepBlock::new(load_nodes, &u_probes, &request.history_nodes);
+        let index = |probes: &[usize], node: usize| probes.binary_search(&node).unwrap_or(0);
+        let load_probe = load_nodes
+            .iter()
+            .map(|&n| index(block.u_probes(), n))
+            .collect();
+        let history_probes = request
+            .history_nodes
+            .iter()
+            .map(|&i| {
+                (
+                    neighbours(i).map(|n| index(block.u_probes(), n)),
+                    index(block.v_probes(), i),
+                )
+            })
+            .collect();
+        Self {
+            u_width: block.u_probes().len(),
+            v_width: block.v_probes().len(),
+            block,
+            load_probe,
+            history_probes,
+        }
+    }
+
+    /// The history samples of block row `s` (step `step`, time `t`), as
+    /// [`super::record::record`] takes them from the state.
+    pub(super) fn record_histories<I: Integrator>(
+        &self,
+        model: &Model,
+        integrator: &I,
+        s: usize,
+        step: usize,
+        t: f64,
+        output: &mut RunOutput,
+    ) {
+        let u = &self.block.u_values[s * self.u_width..(s + 1) * self.u_width];
+        let v = &self.block.v_values[s * self.v_width..(s + 1) * self.v_width];
+        for (history, (around, at)) in output.histories.iter_mut().zip(&self.history_probes) {
+            let i = history.node;
+            let three = around.map(|p| u[p]);
+            let (velocity, acceleration) =
+                integrator.probed_velocity_and_acceleration(model, i, t, three, v[*at]);
+            history.samples.push(HistorySample {
+                step,
+                time: t,
+                displacement: three[1],
+                velocity,
+                acceleration,
+            });
+        }
+    }
+}
