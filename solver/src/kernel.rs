@@ -29,6 +29,10 @@ pub struct StepEnergy {
 /// Number of independent partial sums per energy term (also used by the matrix-mass step).
 pub(crate) const LANES: usize = 8;
 
+// The AVX2 sweep's lane groups are these lanes.
+#[cfg(target_arch = "x86_64")]
+const _: () = assert!(LANES == crate::kernel_avx2::LANES);
+
 /// Nodes per block of the fused displacement and velocity sweep (a multiple of [`LANES`]; the
 /// five arrays of a block, 20 KB, stay in L1).
 const BLOCK: usize = 512;

@@ -12,8 +12,8 @@ use std::arch::x86_64::{
     __m256d, _mm256_add_pd, _mm256_loadu_pd, _mm256_mul_pd, _mm256_storeu_pd, _mm256_sub_pd,
 };
 
-/// Width of the lane groups (must equal `kernel::LANES`).
-const LANES: usize = 8;
+/// Width of the lane groups (`kernel::LANES`; checked at compile time there).
+pub(crate) const LANES: usize = 8;
 
 /// Partial sums of one lane group: `[lanes 0-3, lanes 4-7]`.
 type Pair = [__m256d; 2];

@@ -249,9 +249,22 @@ impl MassOperator {
     /// `a = M^-1 r` (0 at fixed nodes).
     pub fn apply_inverse(&self, r: &[f64], a: &mut [f64]) {
         match self {
+            MassOperator::Reciprocal { inverse, .. } => inverse.apply(r, a),
+            _ => {
+                a.copy_from_slice(r);
+                self.apply_inverse_in_place(a);
+            }
+        }
+    }
+
+    /// `a <- M^-1 a` in place (0 at fixed nodes), the operations of [`Self::apply_inverse`]:
+    /// a scaling for the diagonal mass, the factored solve for the tridiagonal ones; the
+    /// reciprocal mass's product needs a copy of `a` (allocated here: its step never calls this).
+    pub fn apply_inverse_in_place(&self, a: &mut [f64]) {
+        match self {
             MassOperator::Diagonal { inverse, .. } => {
-                for ((ai, ri), inv) in a.iter_mut().zip(r).zip(inverse.iter()) {
-                    *ai = inv * ri;
+                for (ai, inv) in a.iter_mut().zip(inverse.iter()) {
+                    *ai *= inv;
                 }
             }
             MassOperator::Tridiagonal {
@@ -259,11 +272,13 @@ impl MassOperator {
                 fixed_nodes,
                 ..
             } => {
-                a.copy_from_slice(r);
                 fixed_nodes.iter().for_each(|&i| a[i] = 0.0);
                 factor.solve_in_place(a);
             }
-            MassOperator::Reciprocal { inverse, .. } => inverse.apply(r, a),
+            MassOperator::Reciprocal { inverse, .. } => {
+                let r = a.to_vec();
+                inverse.apply(&r, a);
+            }
         }
     }
 

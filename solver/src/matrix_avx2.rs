@@ -17,8 +17,7 @@ use std::arch::x86_64::{
     __m256d, _mm256_add_pd, _mm256_loadu_pd, _mm256_mul_pd, _mm256_set1_pd, _mm256_storeu_pd,
 };
 
-/// Width of the lane groups (must equal `kernel::LANES`).
-const LANES: usize = 8;
+use crate::kernel::LANES;
 
 /// The velocity update of the whole chunks of [`LANES`] nodes of `v` (the slices start at a
 /// multiple of [`LANES`] of the whole arrays and are at least as long as `v`), the increment

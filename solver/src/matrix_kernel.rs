@@ -69,6 +69,11 @@ pub struct MatrixCentralDifference {
     r: Vec<f64>,
     /// `r^n`: the residual of the last step.
     r_previous: Vec<f64>,
+    /// The blocked step's buffer of one block's `r^n` (`BLOCK + 1` at most), kept between steps
+    /// so that a step fills no array it does not need.
+    kept: Vec<f64>,
+    /// RMM: one block's `a = M^-1 r` (`BLOCK` at most; empty for the other masses).
+    a_block: Vec<f64>,
     scratch: Vec<f64>,
     staggered: f64,
     /// Whether the CPU has AVX2 (the blocked step then runs its AVX2-compiled copy).
@@ -102,6 +107,12 @@ impl MatrixCentralDifference {
             #[cfg(test)]
             r: Vec::new(),
             r_previous: r0.to_vec(),
+            kept: vec![0.0; n.min(BLOCK) + 1],
+            a_block: if reciprocal {
+                vec![0.0; n.min(BLOCK)]
+            } else {
+                Vec::new()
+            },
             scratch: vec![0.0; n],
             staggered: staggered0,
             avx2: has_avx2(),
@@ -257,16 +268,17 @@ impl MatrixCentralDifference {
             u,
             v,
             r_previous: r,
+            kept: previous,
+            a_block,
             ..
         } = self
         else {
             return;
         };
         let (dt, n, diag, off) = (*dt, u.len(), &inverse.diag[..], &inverse.off[..]);
-        // `previous[i - v_done]` = r^n_i for the nodes v_done..=v_to of the block.
-        let mut previous = [0.0; BLOCK + 1];
-        // `a = M^-1 r` of the block, not stored (`Self::acceleration_at` forms it from `r`).
-        let mut a_block = [0.0; BLOCK];
+        // `previous[i - v_done]` = r^n_i for the nodes v_done..=v_to of the block (each slot
+        // written before it is read); `a_block`: `a = M^-1 r` of the block, not stored
+        // (`Self::acceleration_at` forms it from `r`).
         let (mut u_done, mut e_done, mut r_done, mut v_done) = (0, 0, 0, 0);
         let mut next_force = 0;
         while v_done < n {
@@ -287,7 +299,7 @@ impl MatrixCentralDifference {
             velocity_lanes::<AVX2, true>(
                 &mut v[v_done..v_to],
                 a_block,
-                &previous,
+                previous,
                 &r[v_done..v_to],
                 dt,
                 [&mut lanes.increment, &mut lanes.impulse],
@@ -306,23 +318,15 @@ impl MatrixCentralDifference {
         let Self {
             dt,
             stiffness: k,
-            mass:
-                MassOperator::Tridiagonal {
-                    factor,
-                    fixed_nodes,
-                    ..
-                },
+            mass,
             u,
             v,
             a,
             r_previous: r,
+            kept: previous,
             ..
-        } = self
-        else {
-            return;
-        };
+        } = self;
         let (dt, n) = (*dt, u.len());
-        let mut previous = [0.0; BLOCK];
         let (mut u_done, mut e_done, mut r_done) = (0, 0, 0);
         let mut next_force = 0;
         while r_done < n {
@@ -330,14 +334,14 @@ impl MatrixCentralDifference {
             let e_to = r_to.div_ceil(LANES).saturating_mul(LANES).min(n - 1);
             let u_to = (e_to + 1).min(n);
             advance_and_strain(dt, k, u, v, (&mut u_done, &mut e_done), (u_to, e_to), lanes);
-            residual_rows(k, u, r, &mut previous, r_done, r_to);
+            residual_rows(k, u, r, previous, r_done, r_to);
             while let Some(&(node, f)) = forces.get(next_force).filter(|f| f.0 < r_to) {
                 r[node] += f;
                 next_force += 1;
             }
             increment_lanes::<AVX2>(
                 &v[r_done..r_to],
-                &previous,
+                previous,
                 &r[r_done..r_to],
                 &mut a[r_done..r_to],
                 &mut lanes.increment,
@@ -345,8 +349,7 @@ impl MatrixCentralDifference {
             r_done = r_to;
         }
         // a = M^-1 r as `MassOperator::apply_inverse` forms it: 0 at the fixed nodes.
-        fixed_nodes.iter().for_each(|&i| a[i] = 0.0);
-        factor.solve_in_place(a);
+        mass.apply_inverse_in_place(a);
         velocity_lanes::<AVX2, false>(v, a, &[], r, dt, [&mut lanes.increment, &mut lanes.impulse]);
     }
 
@@ -426,7 +429,8 @@ mod tests {
     #[test]
     fn blocked_step_is_bit_identical_to_whole_passes_for_every_matrix_mass() {
         // Several blocks, loads inside a block, at a block edge and at the last node; and a
-        // mesh shorter than a block.
+        // mesh shorter than a block. The lumped (diagonal) operator too: the kernel accepts any
+        // mass (a step with it once did nothing at all).
         for (n, forces) in [
             (
                 3 * BLOCK + 37,
@@ -445,6 +449,7 @@ mod tests {
                 MassKind::Reciprocal { beta: 0.5 },
                 MassKind::Consistent,
                 MassKind::Averaged { beta: 0.5 },
+                MassKind::Lumped,
             ]
             .into_iter()
             .flat_map(|kind| [(kind, false), (kind, has_avx2())])
@@ -459,6 +464,10 @@ mod tests {
                     assert_eq!(a, b, "{kind:?}, n = {n}, free {free}");
                 }
                 assert_eq!((&blocked.u, &blocked.v), (&whole.u, &whole.v));
+                assert!(
+                    blocked.u.iter().any(|&u| u != 0.0),
+                    "{kind:?}: the bar moved"
+                );
                 assert_eq!(&blocked.r_previous, &whole.r_previous);
                 for i in 0..=n {
                     assert_eq!(blocked.acceleration_at(i), whole.a[i], "node {i}");
