@@ -16,21 +16,21 @@
 mod cli;
 use cli::{courant, scratch};
 
+/// `courant bench ARGS --no-c --out OUT` (no C compiler needed: courant's columns only).
+fn bench(out: &std::path::Path, args: &[&str]) -> std::process::Output {
+    let mut all = vec!["bench"];
+    all.extend(args);
+    all.extend(["--no-c", "--out", out.to_str().unwrap()]);
+    courant(&all)
+}
+
 #[test]
 fn bench_writes_one_row_per_size_with_consistent_ratios() {
     let out = scratch("rows").join("bench.csv");
-    let run = courant(&[
-        "bench",
-        "--sizes",
-        "200,1000",
-        "--node-steps",
-        "2e4",
-        "--reps",
-        "3",
-        "--no-c",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let run = bench(
+        &out,
+        &["--sizes", "200,1000", "--node-steps", "2e4", "--reps", "3"],
+    );
     assert!(
         run.status.success(),
         "{}",
@@ -47,18 +47,10 @@ fn bench_writes_one_row_per_size_with_consistent_ratios() {
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 2);
     // A second run replaces the file it wrote.
-    let again = courant(&[
-        "bench",
-        "--sizes",
-        "200",
-        "--node-steps",
-        "1e3",
-        "--reps",
-        "1",
-        "--no-c",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let again = bench(
+        &out,
+        &["--sizes", "200", "--node-steps", "1e3", "--reps", "1"],
+    );
     assert!(
         again.status.success(),
         "{}",
@@ -97,14 +89,7 @@ fn bench_writes_one_row_per_size_with_consistent_ratios() {
 #[test]
 fn bad_bench_options_are_refused_naming_the_option() {
     let out = scratch("bad").join("bench.csv");
-    let run = courant(&[
-        "bench",
-        "--sizes",
-        "1",
-        "--no-c",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let run = bench(&out, &["--sizes", "1"]);
     assert_eq!(run.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&run.stderr).contains("--sizes: 1 must lie in"));
     assert!(!out.exists());
@@ -114,18 +99,10 @@ fn bad_bench_options_are_refused_naming_the_option() {
 fn a_file_bench_did_not_write_is_not_replaced() {
     let out = scratch("foreign").join("bench.csv");
     std::fs::write(&out, "my own notes\n").unwrap();
-    let run = courant(&[
-        "bench",
-        "--sizes",
-        "200",
-        "--node-steps",
-        "1e3",
-        "--reps",
-        "1",
-        "--no-c",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let run = bench(
+        &out,
+        &["--sizes", "200", "--node-steps", "1e3", "--reps", "1"],
+    );
     assert_eq!(run.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&run.stderr).contains("is not a file `courant bench` wrote"));
     assert_eq!(std::fs::read_to_string(&out).unwrap(), "my own notes\n");

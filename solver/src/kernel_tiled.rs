@@ -155,6 +155,31 @@ impl StepBlock {
         &self.v_probes
     }
 
+    /// Row `s` of [`Self::forces`]: the loads of step `s + 1` of the block.
+    pub fn forces_row_mut(&mut self, s: usize) -> &mut [f64] {
+        let loads = self.load_nodes.len();
+        &mut self.forces[s * loads..(s + 1) * loads]
+    }
+
+    /// Row `s` of [`Self::forces`].
+    pub fn forces_row(&self, s: usize) -> &[f64] {
+        let loads = self.load_nodes.len();
+        &self.forces[s * loads..(s + 1) * loads]
+    }
+
+    /// Row `s` of [`Self::u_values`]: `u` at the displacement probes after step `s + 1`.
+    pub fn u_row(&self, s: usize) -> &[f64] {
+        let width = self.u_probes.len();
+        &self.u_values[s * width..(s + 1) * width]
+    }
+
+    /// Row `s` of [`Self::v_values`]: the half-step velocity at the velocity probes after step
+    /// `s + 1`.
+    pub fn v_row(&self, s: usize) -> &[f64] {
+        let width = self.v_probes.len();
+        &self.v_values[s * width..(s + 1) * width]
+    }
+
     /// Workers for `threads` threads, their marks cleared for `steps` rows.
     pub(crate) fn prepare_workers(&mut self, threads: usize, steps: usize) {
         let (nu, nv) = (self.u_probes.len(), self.v_probes.len());

@@ -10,12 +10,12 @@ use std::path::Path;
 
 /// Bytes each node-step reads or writes in the model (8-byte values, every array touched once
 /// per pass): the lumped step reads and writes u and v and reads k and dt/m (48 B); with
-/// energies it also reads m (56 B); the matrix-mass step adds r, r_prev, a and the factor or
-/// M^-1 entries (~120 B); Park reads u, v, a, dt_e, q_e, A_i, k_e, 1/m and m and writes u, v, a
-/// (12 arrays, 96 B; its u^{n+1} block stays in cache); a contact step is two lumped steps with
-/// energies plus O(1) contact work (56 B per node); a block of lumped steps
-/// (`lumped_cd_block`) passes over the arrays once per sub-block of
-/// [`courant_solver::kernel_tiled::DEPTH`] = 64 steps (48 / 64 and 56 / 64 B).
+/// energies it also reads m (56 B); the matrix-mass steps as `courant_solver::matrix_kernel`'s
+/// docs count them: RMM 9 words (72 B), CMM and AMM about 19 (152 B); Park reads u, v, a, dt_e,
+/// q_e, A_i, k_e, 1/m and m and writes u, v, a (12 arrays, 96 B; its u^{n+1} block stays in
+/// cache); a contact step is two lumped steps with energies plus O(1) contact work (56 B per
+/// node); a block of lumped steps (`lumped_cd_block`) passes over the arrays once per sub-block
+/// of [`courant_solver::kernel_tiled::DEPTH`] = 64 steps (48 / 64 and 56 / 64 B).
 fn bytes_per_node_step(group: &str, function: &str) -> Option<f64> {
     let depth = courant_solver::kernel_tiled::DEPTH as f64;
     match (group, function) {
@@ -24,7 +24,8 @@ fn bytes_per_node_step(group: &str, function: &str) -> Option<f64> {
         | ("mass_kind_step", "lmm")
         | ("park_step", "cd")
         | ("contact_step", _) => Some(56.0),
-        ("mass_kind_step", _) => Some(120.0),
+        ("mass_kind_step", f) if f.starts_with("rmm") => Some(72.0),
+        ("mass_kind_step", _) => Some(152.0),
         ("park_step", _) => Some(96.0),
         ("lumped_cd_block", f) if f.starts_with("step_with_energy") => Some(56.0 / depth),
         ("lumped_cd_block", _) => Some(48.0 / depth),

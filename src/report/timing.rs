@@ -73,7 +73,9 @@ pub fn timing_files(scenes: &[Scene], runs: &ReportRuns) -> Vec<(String, String)
                     bandwidth model: the bytes of arrays each node-step touches and the rate that implies, and the \
                     machine's reach at the same N, the STREAM triad `a = b + s c` (McCalpin 1995; `memory_triad`, \
                     24 B per element): `fraction_of_triad` is how close to this machine's limit each step runs. Up to \
-                    N = 1e5 the arrays stay in cache; at 1e6 and beyond (triad at 4e6) the rate is the memory bandwidth's.\n\n";
+                    N = 1e5 the arrays stay in cache; at 1e6 and beyond (triad at 4e6) a one-step kernel runs at the \
+                    memory bandwidth's rate, while a block of steps (`lumped_cd_block`, one pass over memory per 64 \
+                    steps) runs at the in-cache rate.\n\n";
             tmd += &bench.to_markdown(Precision::Significant {
                 digits: 3,
                 floor: 0.0,

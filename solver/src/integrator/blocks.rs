@@ -23,11 +23,9 @@ pub(super) fn block_depth(step: usize, steps: usize, next_profile: Option<usize>
 pub(super) struct BlockBuffers {
     pub(super) block: StepBlock,
     /// Probe index of each loaded node (in the loop's load order).
-    pub(super) load_probe: Vec<usize>,
+    load_probe: Vec<usize>,
     /// Probe indices `[i-1, i, i+1]` and the velocity probe of each history.
     history_probes: Vec<([usize; 3], usize)>,
-    pub(super) u_width: usize,
-    v_width: usize,
 }
 
 impl BlockBuffers {
@@ -39,6 +37,8 @@ impl BlockBuffers {
             u_probes.extend(neighbours(i));
         }
         let block = StepBlock::new(load_nodes, &u_probes, &request.history_nodes);
+        // The loop's loads are sorted and unique too: the block's force rows are in its order.
+        debug_assert_eq!(block.load_nodes(), load_nodes);
         let index = |probes: &[usize], node: usize| probes.binary_search(&node).unwrap_or(0);
         let load_probe = load_nodes
             .iter()
@@ -55,11 +55,17 @@ impl BlockBuffers {
             })
             .collect();
         Self {
-            u_width: block.u_probes().len(),
-            v_width: block.v_probes().len(),
             block,
             load_probe,
             history_probes,
+        }
+    }
+
+    /// The displacements of the loaded nodes after block row `s` (in the loop's load order).
+    pub(super) fn load_displacements(&self, s: usize, out: &mut [f64]) {
+        let u = self.block.u_row(s);
+        for (value, &p) in out.iter_mut().zip(&self.load_probe) {
+            *value = u[p];
         }
     }
 
@@ -74,8 +80,7 @@ impl BlockBuffers {
         t: f64,
         output: &mut RunOutput,
     ) {
-        let u = &self.block.u_values[s * self.u_width..(s + 1) * self.u_width];
-        let v = &self.block.v_values[s * self.v_width..(s + 1) * self.v_width];
+        let (u, v) = (self.block.u_row(s), self.block.v_row(s));
         for (history, (around, at)) in output.histories.iter_mut().zip(&self.history_probes) {
             let i = history.node;
             let three = around.map(|p| u[p]);

@@ -209,6 +209,8 @@ fn run_steps_result<I: Integrator>(
     eval_forces(0.0, &mut forces);
     guard.admit(impulse_energy(model, dt, &forces));
     let mut ledger = Ledger {
+        model,
+        dt,
         previous_forces: forces.clone(),
         work: 0.0,
         max_work: 0.0,
@@ -228,13 +230,14 @@ fn run_steps_result<I: Integrator>(
             None => 1,
         };
         if let (Some(buffers), true) = (&mut blocks, depth >= 2) {
-            let loads = forces.len();
             for (slot, f) in displaced.iter_mut().zip(&forces) {
                 *slot = integrator.displacement()[f.0];
             }
+            // The loads of every step of the block, evaluated once: the stepper reads them and
+            // the accounting below takes them back.
             for s in 0..depth {
                 eval_forces((step + s + 1) as f64 * dt, &mut forces);
-                for (cell, f) in buffers.block.forces[s * loads..].iter_mut().zip(&forces) {
+                for (cell, f) in buffers.block.forces_row_mut(s).iter_mut().zip(&forces) {
                     *cell = f.1;
                 }
             }
@@ -242,23 +245,13 @@ fn run_steps_result<I: Integrator>(
             for s in 0..depth {
                 step += 1;
                 let t = step as f64 * dt;
-                eval_forces(t, &mut forces);
-                let probes =
-                    &buffers.block.u_values[s * buffers.u_width..(s + 1) * buffers.u_width];
-                for (value, &p) in after.iter_mut().zip(&buffers.load_probe) {
-                    *value = probes[p];
+                for (f, &value) in forces.iter_mut().zip(buffers.block.forces_row(s)) {
+                    f.1 = value;
                 }
+                buffers.load_displacements(s, &mut after);
                 let sums = buffers.block.energies[s];
-                let tripped = ledger.after_step(
-                    model,
-                    dt,
-                    step,
-                    &mut forces,
-                    &displaced,
-                    &after,
-                    sums,
-                    &mut output,
-                );
+                let tripped =
+                    ledger.after_step(step, &mut forces, &displaced, &after, sums, &mut output);
                 if let Some(energy_ratio) = tripped {
                     let error = diverged(&integrator, step, t, energy_ratio, output);
                     // The state is at the block's end: at the trip step only if it is the last.
@@ -295,16 +288,7 @@ fn run_steps_result<I: Integrator>(
         for (slot, f) in after.iter_mut().zip(&forces) {
             *slot = integrator.displacement()[f.0];
         }
-        let tripped = ledger.after_step(
-            model,
-            dt,
-            step,
-            &mut forces,
-            &displaced,
-            &after,
-            sums,
-            &mut output,
-        );
+        let tripped = ledger.after_step(step, &mut forces, &displaced, &after, sums, &mut output);
         if let Some(energy_ratio) = tripped {
             return Err(Tripped::No(diverged(
                 &integrator,
@@ -334,8 +318,10 @@ fn run_steps_result<I: Integrator>(
 }
 
 /// What the loop carries from step to step: the loads of the last level, the trapezoidal work
-/// and the energy reference of the guard.
-struct Ledger {
+/// and the energy reference of the guard (with the model and step the impulse energy needs).
+struct Ledger<'a> {
+    model: &'a Model,
+    dt: f64,
     previous_forces: Vec<(usize, f64)>,
     work: f64,
     max_work: f64,
@@ -343,16 +329,13 @@ struct Ledger {
     guard: BlowUpGuard,
 }
 
-impl Ledger {
+impl Ledger<'_> {
     /// Account for step `step` (loads `forces` = `F^{n+1}`, displacements of the loaded nodes
     /// `before` = `u^n` and `after` = `u^{n+1}`, energies `sums`): the work, the guard, the
     /// balance error and the energy scale; `Some(ratio)` when the guard trips. `forces` is left
     /// holding `F^n`'s buffer (swapped with the kept loads).
-    #[allow(clippy::too_many_arguments)]
     fn after_step(
         &mut self,
-        model: &Model,
-        dt: f64,
         step: usize,
         forces: &mut Vec<(usize, f64)>,
         before: &[f64],
@@ -367,7 +350,8 @@ impl Ledger {
             .map(|((f, f0), (u0, u))| 0.5 * (f.1 + f0.1) * (u - u0))
             .sum::<f64>();
         self.guard.admit(self.work.abs());
-        self.guard.admit(impulse_energy(model, dt, forces));
+        self.guard
+            .admit(impulse_energy(self.model, self.dt, forces));
         std::mem::swap(forces, &mut self.previous_forces);
 
         let balance_error = sums.kinetic_staggered + sums.strain - self.work - self.invariant0;

@@ -129,6 +129,12 @@ pub trait CentralDifferenceKernel: Sized {
         let _ = (block, steps);
         unreachable!("a matrix-mass kernel has no blocks of steps");
     }
+    /// `a^n` at node `i` from `[u_{i-1}, u_i, u_{i+1}]` recorded by a block (only a kernel with
+    /// blocks of steps is asked).
+    fn probed_acceleration(&self, model: &Model, i: usize, t: f64, u: [f64; 3]) -> f64 {
+        let _ = (model, i, t, u);
+        unreachable!("a matrix-mass kernel has no blocks of steps");
+    }
 }
 
 impl CentralDifferenceKernel for LumpedCentralDifference {
@@ -162,6 +168,10 @@ impl CentralDifferenceKernel for LumpedCentralDifference {
     }
     fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
         self.advance_block::<true>(block, steps);
+    }
+    /// The lumped acceleration, as [`Self::acceleration_at`] forms it from the state.
+    fn probed_acceleration(&self, model: &Model, i: usize, t: f64, u: [f64; 3]) -> f64 {
+        model.acceleration_from(i, u, t)
     }
 }
 
@@ -273,7 +283,7 @@ impl<K: CentralDifferenceKernel> Integrator for CentralDifferenceStepper<K> {
         self.kernel.step_block(block, steps);
     }
 
-    /// `a^n` of the lumped mass from the three displacements, `v^n = v^{n+1/2} - dt/2 a^n`: the
+    /// The kernel's `a^n` from the three displacements, `v^n = v^{n+1/2} - dt/2 a^n`: the
     /// operations of [`Integrator::velocity_and_acceleration_at`].
     fn probed_velocity_and_acceleration(
         &self,
@@ -283,7 +293,7 @@ impl<K: CentralDifferenceKernel> Integrator for CentralDifferenceStepper<K> {
         u: [f64; 3],
         half_step_velocity: f64,
     ) -> (f64, f64) {
-        let a = model.acceleration_from(i, u, t);
+        let a = self.kernel.probed_acceleration(model, i, t, u);
         (half_step_velocity - 0.5 * self.dt() * a, a)
     }
 }
