@@ -31,6 +31,9 @@ pub mod bar;
 pub mod contact;
 pub mod error;
 pub mod fixtures;
+#[cfg(target_arch = "x86_64")]
+mod halo_avx2;
+pub mod halo_tiles;
 pub mod integrator;
 pub mod kernel;
 #[cfg(target_arch = "x86_64")]

@@ -17,6 +17,7 @@
 
 use crate::banded::{PartitionedLdl, SymmetricBanded, Tridiagonal};
 use crate::error::InputError;
+use crate::halo_tiles::{HaloTiles, halo_rows, scaled_spectral_ratio};
 use crate::model::Model;
 use std::sync::Arc;
 
@@ -123,12 +124,12 @@ pub enum MassOperator {
         /// `m_i` (the model's own array, shared).
         mass: Arc<[f64]>,
     },
-    /// `M` tridiagonal (CMM, AMM): solve with its factor, multiply with the matrix.
+    /// `M` tridiagonal (CMM, AMM): solve with its factor or windows, multiply with the matrix.
     Tridiagonal {
         /// `M` with fixed nodes decoupled.
         matrix: Tridiagonal,
-        /// Its partitioned `L D L^T` factor.
-        factor: PartitionedLdl,
+        /// How `M a = r` is solved.
+        solve: TridiagonalSolve,
         /// Fixed-node flags.
         fixed: Vec<bool>,
         /// Indices of the fixed nodes.
@@ -145,6 +146,17 @@ pub enum MassOperator {
         /// Fixed-node flags.
         fixed: Vec<bool>,
     },
+}
+
+/// The solve of a tridiagonal mass.
+#[derive(Debug, Clone)]
+pub enum TridiagonalSolve {
+    /// The partitioned `L D L^T` factor of the whole matrix.
+    Global(PartitionedLdl),
+    /// Overlapping windows ([`HaloTiles`]), which the step solves tile by tile: from a group of
+    /// windows on, when the inverse decays fast enough (CMM, AMM with `beta` not near -1/2);
+    /// the solution to round-off, as the global factor's.
+    Windows(HaloTiles),
 }
 
 /// Element mass of `(1 - beta) CMM + beta LMM`: (diagonal, off-diagonal) entries.
@@ -205,11 +217,18 @@ impl MassOperator {
                     .enumerate()
                     .filter(|(_, f)| **f)
                     .for_each(|(i, _)| matrix.decouple(i));
+                // The global factor also checks that the whole matrix is positive definite.
                 let factor = matrix.factor_spd().ok_or_else(not_spd)?;
-                let fixed_nodes = (0..n).filter(|&i| fixed[i]).collect();
+                let fixed_nodes: Vec<usize> = (0..n).filter(|&i| fixed[i]).collect();
+                let solve = match halo_rows(scaled_spectral_ratio(beta))
+                    .and_then(|halo| HaloTiles::new(&matrix, halo, &fixed_nodes))
+                {
+                    Some(tiles) => TridiagonalSolve::Windows(tiles),
+                    None => TridiagonalSolve::Global(factor),
+                };
                 MassOperator::Tridiagonal {
                     matrix,
-                    factor,
+                    solve,
                     fixed,
                     fixed_nodes,
                 }
@@ -258,7 +277,8 @@ impl MassOperator {
     }
 
     /// `a <- M^-1 a` in place (0 at fixed nodes), the operations of [`Self::apply_inverse`]:
-    /// a scaling for the diagonal mass, the factored solve for the tridiagonal ones; the
+    /// a scaling for the diagonal mass, the factored or windowed solve for the tridiagonal ones
+    /// (the windows' the step's own arithmetic); the
     /// reciprocal mass's product needs a copy of `a` (allocated here: its step never calls this).
     pub fn apply_inverse_in_place(&self, a: &mut [f64]) {
         match self {
@@ -268,7 +288,11 @@ impl MassOperator {
                 }
             }
             MassOperator::Tridiagonal {
-                factor,
+                solve: TridiagonalSolve::Windows(tiles),
+                ..
+            } => tiles.solve_in_place(a),
+            MassOperator::Tridiagonal {
+                solve: TridiagonalSolve::Global(factor),
                 fixed_nodes,
                 ..
             } => {
@@ -279,6 +303,17 @@ impl MassOperator {
                 let r = a.to_vec();
                 inverse.apply(&r, a);
             }
+        }
+    }
+
+    /// The windowed solve of a tridiagonal mass, if it has one.
+    pub fn windows(&self) -> Option<&HaloTiles> {
+        match self {
+            MassOperator::Tridiagonal {
+                solve: TridiagonalSolve::Windows(tiles),
+                ..
+            } => Some(tiles),
+            _ => None,
         }
     }
 

@@ -72,14 +72,14 @@ pub(crate) unsafe fn velocity_lanes<const INCREMENT: bool>(
 }
 
 /// The energy increment of the whole chunks of [`LANES`] nodes of `v`,
-/// `increment[i % 8] += v_i (r^n_i + r^{n+1}_i)`, with `copy_i = r^{n+1}_i` (the slices start at
-/// a multiple of [`LANES`] of the whole arrays and are at least as long as `v`); returns the
-/// number of nodes done, the caller does the rest.
+/// `increment[i % 8] += v_i (r^n_i + r^{n+1}_i)`, with `copy_i = r^{n+1}_i` when `COPY` (the
+/// slices start at a multiple of [`LANES`] of the whole arrays and are at least as long as `v`;
+/// `copy` unused without `COPY`); returns the number of nodes done, the caller does the rest.
 ///
 /// # Safety
 /// The CPU must support AVX2.
 #[target_feature(enable = "avx2")]
-pub(crate) unsafe fn increment_lanes(
+pub(crate) unsafe fn increment_lanes<const COPY: bool>(
     v: &[f64],
     r_previous: &[f64],
     r: &[f64],
@@ -87,15 +87,15 @@ pub(crate) unsafe fn increment_lanes(
     increment: &mut [f64; LANES],
 ) -> usize {
     let whole = v.len() / LANES * LANES;
-    assert!(r_previous.len() >= whole && r.len() >= whole && copy.len() >= whole);
+    assert!(r_previous.len() >= whole && r.len() >= whole && (!COPY || copy.len() >= whole));
     let (vp, pp, rp, cp) = (
         v.as_ptr(),
         r_previous.as_ptr(),
         r.as_ptr(),
         copy.as_mut_ptr(),
     );
-    // SAFETY: every offset below is < whole, within all four slices (asserted above); loads and
-    // stores are unaligned; `increment` holds 8 values.
+    // SAFETY: every offset below is < whole, within all four slices (asserted above; `copy` is
+    // written only with `COPY`); loads and stores are unaligned; `increment` holds 8 values.
     unsafe {
         let mut sum = [
             _mm256_loadu_pd(increment.as_ptr()),
@@ -108,7 +108,9 @@ pub(crate) unsafe fn increment_lanes(
                 let ri = _mm256_loadu_pd(rp.add(o));
                 let sum_r = _mm256_add_pd(_mm256_loadu_pd(pp.add(o)), ri);
                 *lane = _mm256_add_pd(*lane, _mm256_mul_pd(_mm256_loadu_pd(vp.add(o)), sum_r));
-                _mm256_storeu_pd(cp.add(o), ri);
+                if COPY {
+                    _mm256_storeu_pd(cp.add(o), ri);
+                }
             }
             i += LANES;
         }

@@ -30,12 +30,14 @@
 //! sweeps cannot be fused with the force and velocity passes without changing the order of the
 //! energy sums (the sweeps run in 8 interleaved partitions, the backward one downwards).
 
+use crate::halo_tiles::GroupBuffers;
 use crate::kernel::{LANES, StepEnergy, has_avx2};
 use crate::mass::MassOperator;
 #[cfg(test)]
 use crate::matrix_passes::lane_sums;
 use crate::matrix_passes::{
-    BLOCK, apply_rows, increment_lanes, residual_rows, strain_lanes, velocity_lanes,
+    BLOCK, EnergyLanes, ResidualFront, advance_and_strain, apply_rows, residual_rows,
+    velocity_lanes,
 };
 
 /// The state a run starts from, after the start procedure.
@@ -74,6 +76,8 @@ pub struct MatrixCentralDifference {
     kept: Vec<f64>,
     /// RMM: one block's `a = M^-1 r` (`BLOCK` at most; empty for the other masses).
     a_block: Vec<f64>,
+    /// CMM/AMM with windows: one group's work arrays (empty otherwise).
+    group: GroupBuffers,
     scratch: Vec<f64>,
     staggered: f64,
     /// Whether the CPU has AVX2 (the blocked step then runs its AVX2-compiled copy).
@@ -83,8 +87,9 @@ pub struct MatrixCentralDifference {
 impl MatrixCentralDifference {
     /// Set up with element stiffnesses, the mass operator, `u^0`, `v^{1/2}`, `a^0`, the residual
     /// `r^0 = F^0 - K u^0` and the staggered kinetic energy `1/2 v^{-1/2} M v^{1/2}`. With the
-    /// reciprocal mass `a^0` is not kept: [`Self::acceleration_at`] forms `(M^-1 r^0)_i`, which
-    /// is the time loop's `a^0` (`MassOperator::apply_inverse` of `r^0`, the same products).
+    /// reciprocal mass or a windowed solve `a^0` is not kept: [`Self::acceleration_at`] forms
+    /// `(M^-1 r^0)_i`, which is the time loop's `a^0` (`MassOperator::apply_inverse` of `r^0`,
+    /// the same operations).
     pub fn new(dt: f64, stiffness: &[f64], mass: MassOperator, start: &StartState) -> Self {
         let StartState {
             displacement: u0,
@@ -95,15 +100,23 @@ impl MatrixCentralDifference {
         } = *start;
         let n = u0.len();
         let reciprocal = matches!(mass, MassOperator::Reciprocal { .. });
+        let windows = mass.windows().is_some();
         let mut padded = vec![0.0; n + 1];
         padded[1..n].copy_from_slice(stiffness);
+        let group = mass
+            .windows()
+            .map_or_else(GroupBuffers::default, |t| t.buffers());
         Self {
             dt,
             stiffness: padded,
             mass,
             u: u0.to_vec(),
             v: v_half.to_vec(),
-            a: if reciprocal { Vec::new() } else { a0.to_vec() },
+            a: if reciprocal || windows {
+                Vec::new()
+            } else {
+                a0.to_vec()
+            },
             #[cfg(test)]
             r: Vec::new(),
             r_previous: r0.to_vec(),
@@ -113,6 +126,7 @@ impl MatrixCentralDifference {
             } else {
                 Vec::new()
             },
+            group,
             scratch: vec![0.0; n],
             staggered: staggered0,
             avx2: has_avx2(),
@@ -134,9 +148,11 @@ impl MatrixCentralDifference {
         &self.v
     }
 
-    /// `a^n` at node `i`: the kept solve for CMM and AMM; for RMM, whose step does not store
-    /// `a` (one stream less per step), row `i` of `M^-1 r^n` from the kept residual, formed as
-    /// the step formed it (same products, same order), so bit-identical to the step's `a`.
+    /// `a^n` at node `i`: the kept solve for CMM and AMM; with windows, whose step does not
+    /// store `a` (one stream less), the solve of node `i`'s window
+    /// ([`crate::halo_tiles::HaloTiles::solution_at`]); for RMM row `i` of `M^-1 r^n` from the
+    /// kept residual. Each formed as the step formed it (same operations, same order), so
+    /// bit-identical to the step's `a`.
     pub fn acceleration_at(&self, i: usize) -> f64 {
         match &self.mass {
             MassOperator::Reciprocal { inverse, .. } => {
@@ -151,7 +167,10 @@ impl MatrixCentralDifference {
                 );
                 a[0]
             }
-            _ => self.a[i],
+            mass => match mass.windows() {
+                Some(tiles) => tiles.solution_at(i, &self.r_previous),
+                None => self.a[i],
+            },
         }
     }
 
@@ -310,9 +329,12 @@ impl MatrixCentralDifference {
     }
 
     /// The CMM and AMM step: `u` and the residual in blocks (the residual overwriting `r^n` in
-    /// place, the energy increment `v^{n+1/2} (r^n + r^{n+1})` summed while both are in L1, and
-    /// the right-hand side of the solve copied out), the factored solve `a = M^-1 r`, then `v`
-    /// and the impulse `a r` in one pass.
+    /// place, the energy increment `v^{n+1/2} (r^n + r^{n+1})` summed while both are in L1),
+    /// then `a = M^-1 r` and `v` with the impulse `a r`. With windows
+    /// ([`crate::halo_tiles::HaloTiles`]) the
+    /// residual runs just ahead of each group of windows, which is solved while its rows are
+    /// in cache, and `v` follows tile by tile; otherwise the right-hand side is copied out, the
+    /// global factor solves it, and `v` is one more pass.
     #[inline(always)]
     fn solved_step<const AVX2: bool>(&mut self, forces: &[(usize, f64)], lanes: &mut EnergyLanes) {
         let Self {
@@ -324,30 +346,31 @@ impl MatrixCentralDifference {
             a,
             r_previous: r,
             kept: previous,
+            group,
             ..
         } = self;
-        let (dt, n) = (*dt, u.len());
-        let (mut u_done, mut e_done, mut r_done) = (0, 0, 0);
-        let mut next_force = 0;
-        while r_done < n {
-            let r_to = (r_done + BLOCK).min(n);
-            let e_to = r_to.div_ceil(LANES).saturating_mul(LANES).min(n - 1);
-            let u_to = (e_to + 1).min(n);
-            advance_and_strain(dt, k, u, v, (&mut u_done, &mut e_done), (u_to, e_to), lanes);
-            residual_rows(k, u, r, previous, r_done, r_to);
-            while let Some(&(node, f)) = forces.get(next_force).filter(|f| f.0 < r_to) {
-                r[node] += f;
-                next_force += 1;
+        let dt = *dt;
+        let mut front = ResidualFront::default();
+        if let Some(tiles) = mass.windows() {
+            for g in 0..tiles.groups() {
+                let to = tiles.rows_read(g);
+                front.advance::<AVX2, false>(to, dt, k, u, v, r, previous, a, forces, lanes);
+                tiles.solve_group::<AVX2>(g, r, group);
+                for (c, rows) in tiles.group_tiles(g) {
+                    let solution = tiles.tile_solution(g, c, &rows, group);
+                    velocity_lanes::<AVX2, false>(
+                        &mut v[rows.clone()],
+                        solution,
+                        &[],
+                        &r[rows.clone()],
+                        dt,
+                        [&mut lanes.increment, &mut lanes.impulse],
+                    );
+                }
             }
-            increment_lanes::<AVX2>(
-                &v[r_done..r_to],
-                previous,
-                &r[r_done..r_to],
-                &mut a[r_done..r_to],
-                &mut lanes.increment,
-            );
-            r_done = r_to;
+            return;
         }
+        front.advance::<AVX2, true>(u.len(), dt, k, u, v, r, previous, a, forces, lanes);
         // a = M^-1 r as `MassOperator::apply_inverse` forms it: 0 at the fixed nodes.
         mass.apply_inverse_in_place(a);
         velocity_lanes::<AVX2, false>(v, a, &[], r, dt, [&mut lanes.increment, &mut lanes.impulse]);
@@ -358,50 +381,27 @@ impl MatrixCentralDifference {
     pub fn staggered_kinetic_from_mass(&mut self) -> f64 {
         let dt = self.dt;
         self.mass.apply(&self.v, &mut self.scratch);
-        0.5 * (0..self.v.len())
-            .map(|i| (self.v[i] - dt * self.acceleration_at(i)) * self.scratch[i])
+        let (v, my) = (&self.v, &self.scratch);
+        if let Some(tiles) = self.mass.windows() {
+            // a = M^-1 r^n window by window, in increasing rows (the sum's order below).
+            let mut sum = 0.0;
+            tiles.for_each_tile(&self.r_previous, &mut self.group, |rows, a| {
+                for (i, ai) in rows.zip(a) {
+                    sum += (v[i] - dt * ai) * my[i];
+                }
+            });
+            return 0.5 * sum;
+        }
+        0.5 * (0..v.len())
+            .map(|i| (v[i] - dt * self.acceleration_at(i)) * my[i])
             .sum::<f64>()
     }
-}
-
-/// The energy lanes of one step: strain `N_e du_e`, increment `v^{n+1/2} (r^n + r^{n+1})`,
-/// impulse `a^{n+1} r^{n+1}`.
-#[derive(Debug, Default)]
-struct EnergyLanes {
-    strain: [f64; LANES],
-    increment: [f64; LANES],
-    impulse: [f64; LANES],
-}
-
-/// `u^{n+1} = u^n + dt v^{n+1/2}` for nodes `*u_done..u_to`, then the strain lanes of elements
-/// `*e_done..e_to` (which read `u` up to `e_to`); both counters advance.
-#[inline(always)]
-fn advance_and_strain(
-    dt: f64,
-    k: &[f64],
-    u: &mut [f64],
-    v: &[f64],
-    (u_done, e_done): (&mut usize, &mut usize),
-    (u_to, e_to): (usize, usize),
-    lanes: &mut EnergyLanes,
-) {
-    for (ui, vi) in u[*u_done..u_to].iter_mut().zip(&v[*u_done..u_to]) {
-        *ui += dt * vi;
-    }
-    *u_done = u_to.max(*u_done);
-    if *e_done < e_to {
-        strain_lanes(
-            &k[*e_done + 1..e_to + 1],
-            &u[*e_done..e_to + 1],
-            &mut lanes.strain,
-        );
-    }
-    *e_done = e_to.max(*e_done);
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::halo_tiles::{CHAINS, TILE};
     use crate::mass::MassKind;
 
     /// The graded seed bar (fixed right end) or, `free`, the same bar free at both ends.
@@ -444,7 +444,19 @@ mod tests {
             (5, vec![(0, 1.0)]),
             // n elements, n + 1 nodes: the last node alone in the last block.
             (2 * BLOCK, vec![(0, 1.0)]),
+            // CMM and AMM solve in windows ([`crate::halo_tiles`]): two groups and a short
+            // one, loads on a tile edge, a group edge and inside the short last tile.
+            (
+                2 * CHAINS * TILE + 333,
+                vec![
+                    (0, 1.0),
+                    (TILE, 0.5),
+                    (CHAINS * TILE, -1.0),
+                    (2 * CHAINS * TILE + 300, 2.0),
+                ],
+            ),
         ] {
+            let steps = if n > CHAINS * TILE { 40 } else { 200 };
             for (kind, avx2, free) in [
                 MassKind::Reciprocal { beta: 0.5 },
                 MassKind::Consistent,
@@ -458,7 +470,7 @@ mod tests {
                 let mut blocked = matrix_kernel(n, kind, free);
                 blocked.avx2 = avx2;
                 let mut whole = matrix_kernel(n, kind, free);
-                for _ in 0..200 {
+                for _ in 0..steps {
                     let a = blocked.step_with_energy(&forces);
                     let b = whole.whole_pass_step(&forces);
                     assert_eq!(a, b, "{kind:?}, n = {n}, free {free}");
@@ -469,7 +481,9 @@ mod tests {
                     "{kind:?}: the bar moved"
                 );
                 assert_eq!(&blocked.r_previous, &whole.r_previous);
-                for i in 0..=n {
+                // Every node; with windows (each node's own solve) every 7th and the tile edges.
+                let check = |i: usize| n < CHAINS * TILE || i % 7 == 0 || i % TILE < 2;
+                for i in (0..=n).filter(|&i| check(i)) {
                     assert_eq!(blocked.acceleration_at(i), whole.a[i], "node {i}");
                 }
             }

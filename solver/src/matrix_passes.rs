@@ -52,11 +52,11 @@ pub(crate) fn velocity_lanes<const AVX2: bool, const INCREMENT: bool>(
 }
 
 /// For the nodes of `v` (starting at a multiple of [`LANES`]): add `v^{n+1/2} (r^n + r^{n+1})`
-/// to the increment lanes and copy `r^{n+1}` to `copy`; `r_previous`, `r` and `copy` hold the
-/// same nodes as `v` (`r_previous` may be longer).
+/// to the increment lanes and, `COPY`, copy `r^{n+1}` to `copy` (unused without it);
+/// `r_previous`, `r` and `copy` hold the same nodes as `v` (`r_previous` may be longer).
 /// `AVX2`: the whole chunks run [`crate::matrix_avx2::increment_lanes`].
 #[inline(always)]
-pub(crate) fn increment_lanes<const AVX2: bool>(
+pub(crate) fn increment_lanes<const AVX2: bool, const COPY: bool>(
     v: &[f64],
     r_previous: &[f64],
     r: &[f64],
@@ -64,11 +64,11 @@ pub(crate) fn increment_lanes<const AVX2: bool>(
     increment: &mut [f64; LANES],
 ) {
     let len = v.len();
-    let (r_previous, r, copy) = (&r_previous[..len], &r[..len], &mut copy[..len]);
+    let (r_previous, r) = (&r_previous[..len], &r[..len]);
     #[cfg(target_arch = "x86_64")]
     let done = if AVX2 {
         // SAFETY: `AVX2` is true only in the step compiled for AVX2, run when the CPU has it.
-        unsafe { crate::matrix_avx2::increment_lanes(v, r_previous, r, copy, increment) }
+        unsafe { crate::matrix_avx2::increment_lanes::<COPY>(v, r_previous, r, copy, increment) }
     } else {
         0
     };
@@ -78,7 +78,9 @@ pub(crate) fn increment_lanes<const AVX2: bool>(
     for i in done..len {
         sum[i % LANES] += v[i] * (r_previous[i] + r[i]);
     }
-    copy[done..].copy_from_slice(&r[done..]);
+    if COPY {
+        copy[done..len].copy_from_slice(&r[done..]);
+    }
     *increment = sum;
 }
 
@@ -192,6 +194,97 @@ pub(crate) fn apply_rows(
     if to == n {
         a[n - 1 - from] = off[n - 2] * r[n - 2] + diag[n - 1] * r[n - 1];
     }
+}
+
+/// The energy lanes of one step: strain `N_e du_e`, increment `v^{n+1/2} (r^n + r^{n+1})`,
+/// impulse `a^{n+1} r^{n+1}`.
+#[derive(Debug, Default)]
+pub(crate) struct EnergyLanes {
+    pub(crate) strain: [f64; LANES],
+    pub(crate) increment: [f64; LANES],
+    pub(crate) impulse: [f64; LANES],
+}
+
+/// How far the CMM/AMM step's first passes have got: `u` advanced to `u_done`, the strain lanes
+/// to element `e_done`, the residual (with the loads up to `next_force` and the increment
+/// lanes) to row `r_done`.
+#[derive(Debug, Default)]
+pub(crate) struct ResidualFront {
+    u_done: usize,
+    e_done: usize,
+    r_done: usize,
+    next_force: usize,
+}
+
+impl ResidualFront {
+    /// Advance in blocks of [`BLOCK`] rows (from 0, whatever `to`: the lanes' order is the
+    /// whole-pass step's) until the residual reaches row `to` or the end: `u` one node ahead
+    /// of the residual, whose element forces are formed in registers; with `COPY` the residual
+    /// also copied to `copy` (the right-hand side of the global solve).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub(crate) fn advance<const AVX2: bool, const COPY: bool>(
+        &mut self,
+        to: usize,
+        dt: f64,
+        k: &[f64],
+        u: &mut [f64],
+        v: &[f64],
+        r: &mut [f64],
+        previous: &mut [f64],
+        copy: &mut [f64],
+        forces: &[(usize, f64)],
+        lanes: &mut EnergyLanes,
+    ) {
+        let n = u.len();
+        while self.r_done < to.min(n) {
+            let (from, r_to) = (self.r_done, (self.r_done + BLOCK).min(n));
+            let e_to = r_to.div_ceil(LANES).saturating_mul(LANES).min(n - 1);
+            let u_to = (e_to + 1).min(n);
+            let counters = (&mut self.u_done, &mut self.e_done);
+            advance_and_strain(dt, k, u, v, counters, (u_to, e_to), lanes);
+            residual_rows(k, u, r, previous, from, r_to);
+            while let Some(&(node, f)) = forces.get(self.next_force).filter(|f| f.0 < r_to) {
+                r[node] += f;
+                self.next_force += 1;
+            }
+            let copy: &mut [f64] = if COPY { &mut copy[from..r_to] } else { &mut [] };
+            increment_lanes::<AVX2, COPY>(
+                &v[from..r_to],
+                previous,
+                &r[from..r_to],
+                copy,
+                &mut lanes.increment,
+            );
+            self.r_done = r_to;
+        }
+    }
+}
+
+/// `u^{n+1} = u^n + dt v^{n+1/2}` for nodes `*u_done..u_to`, then the strain lanes of elements
+/// `*e_done..e_to` (which read `u` up to `e_to`); both counters advance.
+#[inline(always)]
+pub(crate) fn advance_and_strain(
+    dt: f64,
+    k: &[f64],
+    u: &mut [f64],
+    v: &[f64],
+    (u_done, e_done): (&mut usize, &mut usize),
+    (u_to, e_to): (usize, usize),
+    lanes: &mut EnergyLanes,
+) {
+    for (ui, vi) in u[*u_done..u_to].iter_mut().zip(&v[*u_done..u_to]) {
+        *ui += dt * vi;
+    }
+    *u_done = u_to.max(*u_done);
+    if *e_done < e_to {
+        strain_lanes(
+            &k[*e_done + 1..e_to + 1],
+            &u[*e_done..e_to + 1],
+            &mut lanes.strain,
+        );
+    }
+    *e_done = e_to.max(*e_done);
 }
 
 /// Update every `x[i]` with `f(i, &mut x[i], data)` and sum each of the `K` terms it returns in

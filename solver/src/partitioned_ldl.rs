@@ -271,7 +271,7 @@ fn solve_block(lower: &[f64], inverse_pivot: &[f64], x: &mut [f64]) {
 /// `L D L^T` factor of the rows `rows` of `a` on their own (the coupling to the rows outside is
 /// left out): `lower[i] = l_i` (0 at the last row), `inverse_pivot[i] = 1/d_i`; false when a
 /// pivot is not positive (the rows are not positive definite).
-fn factor_rows(
+pub(crate) fn factor_rows(
     a: &Tridiagonal,
     rows: std::ops::Range<usize>,
     lower: &mut [f64],

@@ -1,0 +1,382 @@
+//! Tiled solves of an SPD tridiagonal mass (CMM, AMM) on overlapping windows: `M^-1 r` as
+//! independent local solves, so the step can solve each stretch of the bar while its residual is
+//! still in cache, and sixteen recurrences run side by side in four AVX2 registers.
+//!
+//! Why a window suffices. The inverse of a banded SPD matrix decays geometrically away from its
+//! diagonal (Demko, Moss and Smith, Math. Comp. 43 (1984) 491-499, Theorem 2.4): for a
+//! tridiagonal `S` with spectrum in `[a, b]`, `kappa = b/a`,
+//!
+//! ```text
+//!   |(S^-1)_ij| <= C q^|i-j|,   q = (sqrt(kappa) - 1)/(sqrt(kappa) + 1),
+//!   C = max(1/a, (1 + sqrt(kappa))^2/(2b))
+//! ```
+//!
+//! Scaled by the lumped mass `A` (`S = A^-1/2 M A^-1/2`), the element masses
+//! `(1 - beta) CMM + beta LMM` have Rayleigh quotients `v.M_e v / v.A_e v` between their two
+//! eigenvalue ratios, 1 (the rigid mode) and `(1 + 2 beta)/3` (the antisymmetric one), so the
+//! assembled `S` has its spectrum in `[min, max]` of those whatever the mesh grading:
+//! `kappa = 3` for CMM (`q = 2 - sqrt(3) = 0.268`, the uniform mesh's exact decay), 1.5 for
+//! AMM(1/2) (`q = 0.101`). Fixed nodes are decoupled rows; they only cut the matrix into
+//! blocks, each with the same bound.
+//!
+//! A tile of [`TILE`] rows is solved on a window of `TILE + 2H` rows, `H` (the halo) more on each
+//! side, shifted inward at the bar's ends. The window's solution differs from the whole solution
+//! by the response to the two couplings it cuts, at least `H` rows from any row of the tile:
+//! `|x_i - x~_i| <= C q^H sqrt(m_cut/m_i) |x_cut| / 3` (the coupling is at most a third of the
+//! scaled diagonal). `H` is the least multiple of 4 with `C q^H <= 2^-66`: the truncation stays
+//! below 2^-13 of the unit round-off for mass ratios up to 6.7e7 across a halo, i.e. the tiles
+//! give the solution to round-off, like the global factor (`crate::partitioned_ldl`), not
+//! bit-identical to it. CMM: `H = 36`; AMM(1/2): `H = 24`.
+//!
+//! Each window is factored once (`L D L^T`, no pivoting: its rows are a principal submatrix of
+//! an SPD matrix); a step runs, per window, the forward recurrence `z_k = r_k - l_{k-1} z_{k-1}`
+//! and the backward one `x_k = z_k / d_k - l_k x_{k+1}`, each a fused multiply-add (one
+//! rounding) per row on a chain of latencies. [`CHAINS`] (16) windows form a group and run interleaved:
+//! the factors are stored row-major by group (row `k` of the 16 windows side by side), the
+//! residual rows are transposed in 4 x 4 blocks into that layout and the solution back into
+//! window-major order ([`crate::halo_avx2`]). The portable loops do the same arithmetic: the
+//! same bits with or without AVX2.
+
+use crate::tridiagonal::Tridiagonal;
+
+/// Rows whose solution a window gives (a multiple of 4 and of [`crate::kernel::LANES`]).
+pub(crate) const TILE: usize = 512;
+
+/// Windows solved side by side (four AVX2 registers of four).
+pub(crate) const CHAINS: usize = 16;
+
+// The intrinsics' registers hold these windows.
+#[cfg(target_arch = "x86_64")]
+const _: () = assert!(CHAINS == crate::halo_avx2::CHAINS);
+
+/// The largest halo worth the overlap (half a tile on each side); masses whose inverse decays
+/// more slowly (AMM or RMM-like `beta` near `-1/2`) keep the global factor.
+const MAX_HALO: usize = TILE / 2;
+
+/// The truncation bound `C q^H` a halo must reach (see the module docs).
+const TRUNCATION: f64 = 1.0 / (1u128 << 66) as f64;
+
+/// The spectral ratio `kappa` of the lumped-scaled mass `A^-1/2 M A^-1/2` for element masses
+/// `(1 - beta) CMM + beta LMM` (see the module docs): `max(3/(1 + 2 beta), (1 + 2 beta)/3)`.
+pub(crate) fn scaled_spectral_ratio(beta: f64) -> f64 {
+    let antisymmetric = (1.0 + 2.0 * beta) / 3.0;
+    antisymmetric.max(1.0 / antisymmetric)
+}
+
+/// The least multiple of 4 with `C q^H <= 2^-66` for a scaled spectrum `[a, b]` that contains
+/// 1 with `kappa = b/a` (module docs), `None` above [`MAX_HALO`].
+pub(crate) fn halo_rows(kappa: f64) -> Option<usize> {
+    if !(kappa.is_finite() && kappa >= 1.0) {
+        return None;
+    }
+    let root = kappa.sqrt();
+    let q = (root - 1.0) / (root + 1.0);
+    // Spectrum [a, b] with a <= 1 <= b and b/a = kappa: the largest C over such spectra.
+    let constant = kappa.max((1.0 + root).powi(2) / 2.0);
+    if q == 0.0 {
+        return Some(4);
+    }
+    let rows = ((TRUNCATION / constant).ln() / q.ln()).ceil().max(1.0) as usize;
+    let rows = rows.div_ceil(4) * 4;
+    (rows <= MAX_HALO).then_some(rows)
+}
+
+/// The windows and their factors (see the module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct HaloTiles {
+    /// Order of the matrix.
+    n: usize,
+    /// Rows of a window, `TILE + 2 H`.
+    window: usize,
+    /// Number of tiles, `ceil(n / TILE)`.
+    tiles: usize,
+    /// First row of each window, [`CHAINS`] per group (the last group padded with copies of the
+    /// last window).
+    starts: Vec<usize>,
+    /// Per group, per window row `k`: `l_k` of the 16 windows, then their `1/d_k` (`l` is 0 at a
+    /// window's last row).
+    factors: Vec<f64>,
+    /// Per group, the lowest window row whose solution a tile of the group uses (a multiple of
+    /// 4): the backward sweep stops there.
+    lowest: Vec<usize>,
+    /// Fixed (decoupled) rows, ascending: their solution is `+0`.
+    fixed: Vec<usize>,
+    /// Whether the CPU has FMA (the intrinsics need it beside AVX2).
+    fma: bool,
+}
+
+/// The work arrays of one group's solve: the rows in group layout and the solution by window.
+#[derive(Debug, Clone, Default)]
+pub struct GroupBuffers {
+    /// `window x CHAINS`: row `k` of window `c` at `k * CHAINS + c`.
+    rows: Vec<f64>,
+    /// `CHAINS x window`: row `k` of window `c` at `c * window + k`.
+    solution: Vec<f64>,
+}
+
+impl HaloTiles {
+    /// Tiles for `m` (fixed rows decoupled: unit diagonal, zero couplings, listed in `fixed`)
+    /// with halo `halo` (a multiple of 4, from [`halo_rows`]); `None` when the matrix is
+    /// shorter than a group of windows (the global factor is as fast there) or a window's
+    /// factor has a non-positive pivot.
+    pub fn new(m: &Tridiagonal, halo: usize, fixed: &[usize]) -> Option<Self> {
+        let n = m.diag.len();
+        let window = TILE + 2 * halo;
+        if !halo.is_multiple_of(4) || n < CHAINS * TILE || n < window {
+            return None;
+        }
+        let tiles = n.div_ceil(TILE);
+        let groups = tiles.div_ceil(CHAINS);
+        let start_of = |tile: usize| (tile * TILE).saturating_sub(halo).min(n - window);
+        let mut starts = Vec::with_capacity(groups * CHAINS);
+        let mut factors = vec![0.0; groups * window * 2 * CHAINS];
+        let mut lowest = Vec::with_capacity(groups);
+        let (mut lower, mut pivot) = (vec![0.0; n], vec![0.0; n]);
+        for g in 0..groups {
+            let mut low = window;
+            for c in 0..CHAINS {
+                let tile = (g * CHAINS + c).min(tiles - 1);
+                let start = start_of(tile);
+                starts.push(start);
+                low = low.min(tile * TILE - start);
+                let rows = start..start + window;
+                if !crate::partitioned_ldl::factor_rows(m, rows.clone(), &mut lower, &mut pivot) {
+                    return None;
+                }
+                let group = &mut factors[g * window * 2 * CHAINS..];
+                for k in 0..window {
+                    group[2 * k * CHAINS + c] = lower[start + k];
+                    group[(2 * k + 1) * CHAINS + c] = pivot[start + k];
+                }
+            }
+            lowest.push(low / 4 * 4);
+        }
+        Some(Self {
+            n,
+            window,
+            tiles,
+            starts,
+            factors,
+            lowest,
+            fixed: fixed.to_vec(),
+            fma: has_fma(),
+        })
+    }
+
+    /// Number of groups of [`CHAINS`] windows.
+    pub fn groups(&self) -> usize {
+        self.lowest.len()
+    }
+
+    /// Rows of a window (`TILE + 2 H`).
+    pub fn window(&self) -> usize {
+        self.window
+    }
+
+    /// One past the last row of the right-hand side that group `g` reads.
+    pub fn rows_read(&self, g: usize) -> usize {
+        let starts = &self.starts[g * CHAINS..(g + 1) * CHAINS];
+        starts.iter().max().map_or(0, |s| s + self.window)
+    }
+
+    /// The tiles of group `g`: `(window index c, tile rows)`.
+    pub fn group_tiles(&self, g: usize) -> impl Iterator<Item = (usize, std::ops::Range<usize>)> {
+        let (n, first) = (self.n, g * CHAINS);
+        (first..self.tiles.min(first + CHAINS))
+            .map(move |tile| (tile - first, tile * TILE..((tile + 1) * TILE).min(n)))
+    }
+
+    /// Work arrays for [`Self::solve_group`].
+    pub fn buffers(&self) -> GroupBuffers {
+        GroupBuffers {
+            rows: vec![0.0; self.window * CHAINS],
+            solution: vec![0.0; CHAINS * self.window],
+        }
+    }
+
+    /// Solve the windows of group `g` for the right-hand side `r` (the whole vector; rows up
+    /// to [`Self::rows_read`] are read), `AVX2` with the intrinsics where the CPU also has FMA
+    /// (only an AVX2-compiled caller may ask for them). Afterwards [`Self::tile_solution`] gives each tile's rows.
+    #[inline(always)]
+    pub fn solve_group<const AVX2: bool>(&self, g: usize, r: &[f64], buffers: &mut GroupBuffers) {
+        let window = self.window;
+        let starts: &[usize; CHAINS] = self.starts[g * CHAINS..(g + 1) * CHAINS]
+            .try_into()
+            .expect("CHAINS starts per group");
+        let factors = &self.factors[g * window * 2 * CHAINS..(g + 1) * window * 2 * CHAINS];
+        let lowest = self.lowest[g];
+        assert!(r.len() >= self.rows_read(g) && buffers.rows.len() == window * CHAINS);
+        assert!(buffers.solution.len() == CHAINS * window && window.is_multiple_of(4));
+        #[cfg(target_arch = "x86_64")]
+        if AVX2 && self.fma {
+            // SAFETY: `AVX2` is true only in code compiled for AVX2, run when the CPU has it,
+            // and `fma` only when it has FMA; the lengths are asserted above.
+            unsafe {
+                crate::halo_avx2::solve_windows(
+                    factors,
+                    starts,
+                    r,
+                    window,
+                    lowest,
+                    &mut buffers.rows,
+                    &mut buffers.solution,
+                )
+            };
+            self.zero_fixed(g, buffers);
+            return;
+        }
+        solve_windows_portable(
+            factors,
+            starts,
+            r,
+            window,
+            lowest,
+            &mut buffers.rows,
+            &mut buffers.solution,
+        );
+        self.zero_fixed(g, buffers);
+    }
+
+    /// The solution at the rows of the tile in window `c` of the last solved group (`rows` from
+    /// [`Self::group_tiles`]).
+    pub fn tile_solution<'b>(
+        &self,
+        g: usize,
+        c: usize,
+        rows: &std::ops::Range<usize>,
+        buffers: &'b mut GroupBuffers,
+    ) -> &'b mut [f64] {
+        let offset = rows.start - self.starts[g * CHAINS + c];
+        let at = c * self.window + offset;
+        &mut buffers.solution[at..at + rows.len()]
+    }
+
+    /// `x <- M^-1 x` (`+0` at the fixed rows): every group solved from a copy of `x`, the same
+    /// arithmetic as the step's (`AVX2` where the CPU has it, the same bits either way).
+    pub fn solve_in_place(&self, x: &mut [f64]) {
+        assert_eq!(x.len(), self.n, "right-hand side of the wrong length");
+        let r = x.to_vec();
+        self.for_each_tile(&r, &mut self.buffers(), |rows, solution| {
+            x[rows].copy_from_slice(solution)
+        });
+    }
+
+    /// Solve `M x = r` group by group and hand each tile's rows and solution to `f`, in
+    /// increasing rows.
+    pub fn for_each_tile(
+        &self,
+        r: &[f64],
+        buffers: &mut GroupBuffers,
+        mut f: impl FnMut(std::ops::Range<usize>, &[f64]),
+    ) {
+        let avx2 = crate::kernel::has_avx2();
+        for g in 0..self.groups() {
+            self.solve_group_dispatched(g, r, buffers, avx2);
+            for (c, rows) in self.group_tiles(g) {
+                let solution = self.tile_solution(g, c, &rows, buffers);
+                f(rows, solution);
+            }
+        }
+    }
+
+    /// `(M^-1 r)_i` alone: the one window of row `i`'s tile, solved as [`Self::solve_group`]
+    /// solves it (the same operations, so the same bits), the backward sweep stopping at row
+    /// `i`: O(window) work and no allocation.
+    pub fn solution_at(&self, i: usize, r: &[f64]) -> f64 {
+        assert!(i < self.n && r.len() == self.n, "row {i} of {}", self.n);
+        if self.fixed.binary_search(&i).is_ok() {
+            return 0.0;
+        }
+        let (tile, window) = (i / TILE, self.window);
+        let (g, c) = (tile / CHAINS, tile % CHAINS);
+        let start = self.starts[g * CHAINS + c];
+        let factors = &self.factors[g * window * 2 * CHAINS..];
+        let lower = |k: usize| factors[2 * k * CHAINS + c];
+        let pivot = |k: usize| factors[(2 * k + 1) * CHAINS + c];
+        let mut z = [0.0; TILE + 2 * MAX_HALO];
+        z[0] = r[start];
+        for k in 1..window {
+            z[k] = (-lower(k - 1)).mul_add(z[k - 1], r[start + k]);
+        }
+        let mut x = 0.0;
+        for k in (i - start..window).rev() {
+            x = (-lower(k)).mul_add(x, z[k] * pivot(k));
+        }
+        x
+    }
+
+    /// [`Self::solve_group`] with the intrinsics when `avx2` (the CPU has AVX2).
+    fn solve_group_dispatched(&self, g: usize, r: &[f64], buffers: &mut GroupBuffers, avx2: bool) {
+        #[cfg(target_arch = "x86_64")]
+        if avx2 {
+            // SAFETY: `avx2` is set only when the CPU reports AVX2.
+            return unsafe { self.solve_group_avx2(g, r, buffers) };
+        }
+        let _ = avx2;
+        self.solve_group::<false>(g, r, buffers);
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn solve_group_avx2(&self, g: usize, r: &[f64], buffers: &mut GroupBuffers) {
+        self.solve_group::<true>(g, r, buffers);
+    }
+
+    /// `+0` at the fixed rows of group `g`'s tiles (a decoupled row's window value is its
+    /// right-hand side, not 0).
+    fn zero_fixed(&self, g: usize, buffers: &mut GroupBuffers) {
+        let rows = g * CHAINS * TILE..((g + 1) * CHAINS * TILE).min(self.n);
+        let from = self.fixed.partition_point(|&i| i < rows.start);
+        for &i in self.fixed[from..].iter().take_while(|&&i| i < rows.end) {
+            let c = i / TILE - g * CHAINS;
+            let offset = i - self.starts[g * CHAINS + c];
+            buffers.solution[c * self.window + offset] = 0.0;
+        }
+    }
+}
+
+/// Whether the CPU has fused multiply-add instructions.
+fn has_fma() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::arch::is_x86_feature_detected!("fma")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
+/// The group solve without intrinsics: for each window `c` (rows `starts[c]..starts[c] +
+/// window` of `r`), the forward recurrence into `rows` (group layout), then the backward one
+/// down to row `lowest` into `solution` (window layout), each `a - l b` one fused multiply-add
+/// (one rounding); the operations of
+/// [`crate::halo_avx2::solve_windows`], one lane at a time.
+fn solve_windows_portable(
+    factors: &[f64],
+    starts: &[usize; CHAINS],
+    r: &[f64],
+    window: usize,
+    lowest: usize,
+    rows: &mut [f64],
+    solution: &mut [f64],
+) {
+    let lower = |k: usize, c: usize| factors[2 * k * CHAINS + c];
+    let pivot = |k: usize, c: usize| factors[(2 * k + 1) * CHAINS + c];
+    for (c, &start) in starts.iter().enumerate() {
+        let mut z = r[start];
+        rows[c] = z;
+        for k in 1..window {
+            z = (-lower(k - 1, c)).mul_add(z, r[start + k]);
+            rows[k * CHAINS + c] = z;
+        }
+        let mut x = 0.0;
+        for k in (lowest..window).rev() {
+            x = (-lower(k, c)).mul_add(x, rows[k * CHAINS + c] * pivot(k, c));
+            solution[c * window + k] = x;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

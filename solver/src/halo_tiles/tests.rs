@@ -1,0 +1,164 @@
+//! Tests of the windowed solve: the halo's closed form, the solution against the global factor
+//! to round-off (graded, layered and fixed rows, every `beta` with a halo), and the intrinsics
+//! against the portable loops bit for bit.
+
+use super::*;
+
+/// The assembled mass of element masses `m` with lumped weight `beta`
+/// (`(1 - beta) CMM + beta LMM`), rows in `fixed` decoupled.
+fn mass(m: &[f64], beta: f64, fixed: &[usize]) -> Tridiagonal {
+    let mut t = Tridiagonal {
+        diag: vec![0.0; m.len() + 1],
+        off: vec![0.0; m.len()],
+    };
+    for (e, &me) in m.iter().enumerate() {
+        let d = (1.0 - beta) * me / 3.0 + beta * me / 2.0;
+        t.diag[e] += d;
+        t.diag[e + 1] += d;
+        t.off[e] = (1.0 - beta) * me / 6.0;
+    }
+    fixed.iter().for_each(|&i| t.decouple(i));
+    t
+}
+
+/// Element masses: smoothly graded over three decades, with a hundredfold jump at a third of
+/// the bar (a layered bar).
+fn graded_masses(elements: usize) -> Vec<f64> {
+    (0..elements)
+        .map(|e| {
+            let x = e as f64 / elements as f64;
+            let jump = if 3 * e < elements { 100.0 } else { 1.0 };
+            jump * 10f64.powf(3.0 * x) * (1.0 + 0.3 * (40.0 * x).sin())
+        })
+        .collect()
+}
+
+/// A right-hand side with content at every scale: smooth, oscillating node to node, and spikes.
+fn right_hand_side(n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| {
+            let x = i as f64 / n as f64;
+            (7.0 * x).sin() + 0.5 * (-1f64).powi(i as i32) + if i % 997 == 3 { 40.0 } else { 0.0 }
+        })
+        .collect()
+}
+
+#[test]
+fn halo_is_the_least_multiple_of_four_meeting_the_decay_bound() {
+    // CMM: kappa 3, q = 2 - sqrt(3), C = (1 + sqrt 3)^2 / 2: C q^H <= 2^-66 from H = 35.7.
+    assert_eq!(halo_rows(scaled_spectral_ratio(0.0)), Some(36));
+    // AMM(1/2): kappa 3/2, q = 0.101: H = 20.4.
+    assert_eq!(halo_rows(scaled_spectral_ratio(0.5)), Some(24));
+    // LMM: kappa 1, the inverse is diagonal.
+    assert_eq!(halo_rows(scaled_spectral_ratio(1.0)), Some(4));
+    // beta = -0.49: kappa 150, q = 0.849, H = 307 > TILE / 2: no tiles.
+    assert_eq!(halo_rows(scaled_spectral_ratio(-0.49)), None);
+    for kappa in [1.0, 1.5, 3.0, 30.0] {
+        let h = halo_rows(kappa).unwrap();
+        let root: f64 = kappa.sqrt();
+        let q = (root - 1.0) / (root + 1.0);
+        let c = kappa.max((1.0 + root).powi(2) / 2.0);
+        assert!(c * q.powi(h as i32) <= TRUNCATION, "kappa {kappa}");
+        if h > 4 {
+            assert!(
+                c * q.powi(h as i32 - 4) > TRUNCATION,
+                "kappa {kappa}: not the least"
+            );
+        }
+    }
+}
+
+#[test]
+fn short_matrices_and_slow_decay_keep_the_global_factor() {
+    let m = mass(&vec![1.0; CHAINS * TILE - 2], 0.0, &[]);
+    assert!(
+        HaloTiles::new(&m, 36, &[]).is_none(),
+        "shorter than a group"
+    );
+    let m = mass(&vec![1.0; CHAINS * TILE], 0.0, &[]);
+    assert!(HaloTiles::new(&m, 36, &[]).is_some());
+    assert!(
+        HaloTiles::new(&m, 34, &[]).is_none(),
+        "halo not a multiple of 4"
+    );
+}
+
+#[test]
+fn windows_give_the_global_solution_to_round_off() {
+    // One whole group; a partial last group whose last tile is short and whose window is
+    // shifted inward; fixed rows at both ends, inside a tile and on a tile edge.
+    for (elements, fixed) in [
+        (CHAINS * TILE - 1, vec![]),
+        (3 * CHAINS * TILE + 777, vec![0, 5 * TILE, 7 * TILE + 100]),
+        (CHAINS * TILE + 40, vec![CHAINS * TILE + 40]),
+    ] {
+        for (beta, uniform) in [(0.0, true), (0.0, false), (0.5, false), (-0.45, false)] {
+            let masses = if uniform {
+                vec![0.25; elements]
+            } else {
+                graded_masses(elements)
+            };
+            let m = mass(&masses, beta, &fixed);
+            let halo = halo_rows(scaled_spectral_ratio(beta)).unwrap();
+            let tiles = HaloTiles::new(&m, halo, &fixed).unwrap();
+            let n = elements + 1;
+            let r = right_hand_side(n);
+            let mut exact = r.clone();
+            fixed.iter().for_each(|&i| exact[i] = 0.0);
+            m.factor_spd().unwrap().solve_in_place(&mut exact);
+            let mut x = r.clone();
+            tiles.solve_in_place(&mut x);
+            // Relative to the solution's scale near the row (masses vary by 1e5 along the bar):
+            // x_i against the largest |x| within a halo, a few units of round-off.
+            for i in 0..n {
+                let near = exact[i.saturating_sub(halo)..(i + halo).min(n)]
+                    .iter()
+                    .fold(0.0f64, |s, v| s.max(v.abs()));
+                assert!(
+                    (x[i] - exact[i]).abs() <= 8.0 * f64::EPSILON * near,
+                    "beta {beta}, n {n}, row {i}: {} vs {}",
+                    x[i],
+                    exact[i]
+                );
+            }
+            for &i in &fixed {
+                assert_eq!(x[i].to_bits(), 0, "fixed row {i} is +0");
+            }
+            // One row's own solve: the same bits as the whole solve's.
+            for i in
+                (0..n).filter(|i| i % 97 == 0 || i % TILE < 2 || i + 2 > n || fixed.contains(i))
+            {
+                assert_eq!(
+                    tiles.solution_at(i, &r).to_bits(),
+                    x[i].to_bits(),
+                    "row {i}"
+                );
+            }
+        }
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn intrinsics_and_portable_loops_give_the_same_bits() {
+    if !crate::kernel::has_avx2() {
+        return;
+    }
+    let elements = 2 * CHAINS * TILE + 333;
+    let fixed = [0, 3 * TILE + 1];
+    let m = mass(&graded_masses(elements), 0.0, &fixed);
+    let tiles = HaloTiles::new(&m, 36, &fixed).unwrap();
+    let r = right_hand_side(elements + 1);
+    let (mut portable, mut intrinsics) = (tiles.buffers(), tiles.buffers());
+    for g in 0..tiles.groups() {
+        tiles.solve_group::<false>(g, &r, &mut portable);
+        // SAFETY: the CPU has AVX2 (checked above).
+        unsafe { tiles.solve_group_avx2(g, &r, &mut intrinsics) };
+        for (c, rows) in tiles.group_tiles(g) {
+            let a = tiles.tile_solution(g, c, &rows, &mut portable).to_vec();
+            let b = tiles.tile_solution(g, c, &rows, &mut intrinsics).to_vec();
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&a), bits(&b), "group {g}, tile rows {rows:?}");
+        }
+    }
+}
