@@ -22,8 +22,8 @@
 //! A tile of [`TILE`] rows is solved on a window of `TILE + 2H` rows, `H` (the halo) more on each
 //! side, shifted inward at the bar's ends. The window's solution differs from the whole solution
 //! by the response to the two couplings it cuts, at least `H` rows from any row of the tile:
-//! `|x_i - x~_i| <= C q^H sqrt(m_cut/m_i) |x_cut| / 3` (the coupling is at most a third of the
-//! scaled diagonal). `H` is the least multiple of 4 with `C q^H <= 2^-66`: the truncation stays
+//! `|x_i - x~_i| <= C q^H s sqrt(m_cut/m_i) |x_cut|`, `s = |1 - beta|/3` the largest scaled
+//! coupling `M_i,i+1 / sqrt(A_i A_i+1)`. `H` is the least multiple of 4 with `C q^H <= 2^-66`: the truncation stays
 //! below 2^-13 of the unit round-off for mass ratios up to 6.7e7 across a halo, i.e. the tiles
 //! give the solution to round-off, like the global factor (`crate::partitioned_ldl`), not
 //! bit-identical to it. CMM: `H = 36`; AMM(1/2): `H = 24`.

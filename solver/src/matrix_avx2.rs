@@ -1,121 +1,116 @@
-//! The velocity update of the matrix-mass step with its two energy sums, and the energy
-//! increment of the CMM/AMM force pass, written with AVX2 intrinsics (used by
-//! [`crate::matrix_passes`] where the CPU has AVX2).
+//! The matrix-mass step's sweeps with their energy sums, written with AVX2 intrinsics (used by
+//! [`crate::matrix_passes`] where the CPU has AVX2): the residual rows with the strain and
+//! increment lanes, and the velocity update with the impulse lanes.
 //!
 //! ```text
-//!   increment[i % 8] += v_i (r^n_i + r^{n+1}_i),   impulse[i % 8] += a_i r^{n+1}_i,
-//!   v_i += dt a_i
+//!   r_i = k_{i+1} (u_{i+1} - u_i) - k_i (u_i - u_{i-1}),   strain[i % 8] += k_{i+1} (u_{i+1} - u_i)^2,
+//!   increment[i % 8] += v_i (r^n_i + r^{n+1}_i);   impulse[i % 8] += a_i r_i,   v_i += dt a_i
 //! ```
 //!
-//! Same arithmetic as the portable loop, operation for operation (no FMA: each `_mm256_mul_pd`
-//! and `_mm256_add_pd` rounds as the scalar `*` and `+` do), node `i` adding to lane `i % 8`
-//! (lanes 0-3 in one register, 4-7 in the other) in increasing `i`: bit-identical. The
-//! compiler's own vectorisation of the portable loop spilled its accumulators to the stack
-//! (measured here with `perf annotate`).
+//! Same arithmetic as the portable loops, operation for operation (no FMA: each `_mm256_mul_pd`,
+//! `_mm256_add_pd` and `_mm256_sub_pd` rounds as the scalar `*`, `+` and `-` do), node `i`
+//! adding to lane `i % 8` (lanes 0-3 in one register, 4-7 in the other) in increasing `i`:
+//! bit-identical. The compiler's own vectorisation of the portable loops spilled their
+//! accumulators to the stack (measured here with `perf annotate`).
 
 use std::arch::x86_64::{
-    __m256d, _mm256_add_pd, _mm256_loadu_pd, _mm256_mul_pd, _mm256_set1_pd, _mm256_storeu_pd,
+    _mm256_add_pd, _mm256_loadu_pd, _mm256_mul_pd, _mm256_set1_pd, _mm256_storeu_pd, _mm256_sub_pd,
 };
 
 use crate::kernel::LANES;
 
-/// The velocity update of the whole chunks of [`LANES`] nodes of `v` (the slices start at a
-/// multiple of [`LANES`] of the whole arrays and are at least as long as `v`), the increment
-/// only with `INCREMENT` (`r_previous` unread without it); returns the number of nodes done,
-/// the caller updates the rest.
+/// The velocity update of the whole chunks of [`LANES`] nodes of `v` with the impulse lanes
+/// (the slices start at a multiple of [`LANES`] of the whole arrays and `a`, `r` are at least as
+/// long as `v`); returns the number of nodes done, the caller updates the rest.
 ///
 /// # Safety
 /// The CPU must support AVX2.
 #[target_feature(enable = "avx2")]
-pub(crate) unsafe fn velocity_lanes<const INCREMENT: bool>(
+pub(crate) unsafe fn velocity_lanes(
     v: &mut [f64],
     a: &[f64],
-    r_previous: &[f64],
     r: &[f64],
     dt: f64,
-    increment: &mut [f64; LANES],
     impulse: &mut [f64; LANES],
 ) -> usize {
     let whole = v.len() / LANES * LANES;
-    assert!(a.len() >= whole && r_previous.len() >= whole && r.len() >= whole);
-    let (vp, ap, pp, rp) = (v.as_mut_ptr(), a.as_ptr(), r_previous.as_ptr(), r.as_ptr());
-    // SAFETY: every offset below is < whole, within all four slices (asserted above); loads and
-    // stores are unaligned; `increment` and `impulse` hold 8 values each.
+    assert!(a.len() >= whole && r.len() >= whole);
+    let (vp, ap, rp) = (v.as_mut_ptr(), a.as_ptr(), r.as_ptr());
+    // SAFETY: every offset below is < whole, within the three slices (asserted above); loads
+    // and stores are unaligned; `impulse` holds 8 values.
     unsafe {
         let step = _mm256_set1_pd(dt);
-        let load =
-            |p: *const f64| -> [__m256d; 2] { [_mm256_loadu_pd(p), _mm256_loadu_pd(p.add(4))] };
-        let mut sum = load(increment.as_ptr());
-        let mut product = load(impulse.as_ptr());
+        let mut product = [
+            _mm256_loadu_pd(impulse.as_ptr()),
+            _mm256_loadu_pd(impulse.as_ptr().add(4)),
+        ];
         let mut i = 0;
         while i < whole {
-            for h in 0..2 {
+            for (h, lane) in product.iter_mut().enumerate() {
                 let o = i + 4 * h;
                 let vi = _mm256_loadu_pd(vp.add(o));
                 let ai = _mm256_loadu_pd(ap.add(o));
-                let ri = _mm256_loadu_pd(rp.add(o));
-                if INCREMENT {
-                    let pi = _mm256_loadu_pd(pp.add(o));
-                    sum[h] = _mm256_add_pd(sum[h], _mm256_mul_pd(vi, _mm256_add_pd(pi, ri)));
-                }
-                product[h] = _mm256_add_pd(product[h], _mm256_mul_pd(ai, ri));
+                *lane = _mm256_add_pd(*lane, _mm256_mul_pd(ai, _mm256_loadu_pd(rp.add(o))));
                 _mm256_storeu_pd(vp.add(o), _mm256_add_pd(vi, _mm256_mul_pd(step, ai)));
             }
             i += LANES;
         }
-        for h in 0..2 {
-            _mm256_storeu_pd(increment.as_mut_ptr().add(4 * h), sum[h]);
-            _mm256_storeu_pd(impulse.as_mut_ptr().add(4 * h), product[h]);
-        }
+        _mm256_storeu_pd(impulse.as_mut_ptr(), product[0]);
+        _mm256_storeu_pd(impulse.as_mut_ptr().add(4), product[1]);
     }
     whole
 }
 
-/// The energy increment of the whole chunks of [`LANES`] nodes of `v`,
-/// `increment[i % 8] += v_i (r^n_i + r^{n+1}_i)`, with `copy_i = r^{n+1}_i` when `COPY` (the
-/// slices start at a multiple of [`LANES`] of the whole arrays and are at least as long as `v`;
-/// `copy` unused without `COPY`); returns the number of nodes done, the caller does the rest.
+/// The unloaded interior residual rows `chunks` (whole chunks of [`LANES`] rows from a multiple
+/// of [`LANES`], `1 <= chunks.start`, `chunks.end <= n - 1`) of
+/// [`crate::matrix_passes::residual_rows`]: `r_i = k[i+1] (u[i+1] - u[i]) - k[i] (u[i] - u[i-1])`
+/// overwriting `r^n_i`, with `k[i+1] (u[i+1] - u[i])^2` added to `strain[i % 8]` and
+/// `v_i (r^n_i + r_i)` to `increment[i % 8]`; returns `chunks.end`.
 ///
 /// # Safety
 /// The CPU must support AVX2.
 #[target_feature(enable = "avx2")]
-pub(crate) unsafe fn increment_lanes<const COPY: bool>(
-    v: &[f64],
-    r_previous: &[f64],
-    r: &[f64],
-    copy: &mut [f64],
-    increment: &mut [f64; LANES],
+pub(crate) unsafe fn residual_rows(
+    (k, u, v): (&[f64], &[f64], &[f64]),
+    r: &mut [f64],
+    chunks: std::ops::Range<usize>,
+    [strain, increment]: [&mut [f64; LANES]; 2],
 ) -> usize {
-    let whole = v.len() / LANES * LANES;
-    assert!(r_previous.len() >= whole && r.len() >= whole && (!COPY || copy.len() >= whole));
-    let (vp, pp, rp, cp) = (
-        v.as_ptr(),
-        r_previous.as_ptr(),
-        r.as_ptr(),
-        copy.as_mut_ptr(),
-    );
-    // SAFETY: every offset below is < whole, within all four slices (asserted above; `copy` is
-    // written only with `COPY`); loads and stores are unaligned; `increment` holds 8 values.
+    let n = u.len();
+    assert!(chunks.start >= 1 && chunks.end < n);
+    assert!(chunks.start.is_multiple_of(LANES) && chunks.end.is_multiple_of(LANES));
+    assert!(k.len() >= n && v.len() >= n && r.len() >= n);
+    let (kp, up, vp, rp) = (k.as_ptr(), u.as_ptr(), v.as_ptr(), r.as_mut_ptr());
+    // SAFETY: rows i of the chunks read u[i-1..i+5], k[i..i+5] (i + 4 <= chunks.end <= n - 1),
+    // v and r [i..i+4], within the asserted lengths; unaligned loads and stores; the lane
+    // arrays hold 8 values.
     unsafe {
-        let mut sum = [
-            _mm256_loadu_pd(increment.as_ptr()),
-            _mm256_loadu_pd(increment.as_ptr().add(4)),
-        ];
-        let mut i = 0;
-        while i < whole {
-            for (h, lane) in sum.iter_mut().enumerate() {
-                let o = i + 4 * h;
-                let ri = _mm256_loadu_pd(rp.add(o));
-                let sum_r = _mm256_add_pd(_mm256_loadu_pd(pp.add(o)), ri);
-                *lane = _mm256_add_pd(*lane, _mm256_mul_pd(_mm256_loadu_pd(vp.add(o)), sum_r));
-                if COPY {
-                    _mm256_storeu_pd(cp.add(o), ri);
-                }
+        let load = |p: *const f64| [_mm256_loadu_pd(p), _mm256_loadu_pd(p.add(4))];
+        let (mut strain_sum, mut increment_sum) = (load(strain.as_ptr()), load(increment.as_ptr()));
+        let mut base = chunks.start;
+        while base < chunks.end {
+            for h in 0..2 {
+                let i = base + 4 * h;
+                let u0 = _mm256_loadu_pd(up.add(i - 1));
+                let u1 = _mm256_loadu_pd(up.add(i));
+                let du = _mm256_sub_pd(_mm256_loadu_pd(up.add(i + 1)), u1);
+                let right = _mm256_mul_pd(_mm256_loadu_pd(kp.add(i + 1)), du);
+                let left = _mm256_mul_pd(_mm256_loadu_pd(kp.add(i)), _mm256_sub_pd(u1, u0));
+                let new = _mm256_sub_pd(right, left);
+                let sum = _mm256_add_pd(_mm256_loadu_pd(rp.add(i)), new);
+                strain_sum[h] = _mm256_add_pd(strain_sum[h], _mm256_mul_pd(right, du));
+                increment_sum[h] = _mm256_add_pd(
+                    increment_sum[h],
+                    _mm256_mul_pd(_mm256_loadu_pd(vp.add(i)), sum),
+                );
+                _mm256_storeu_pd(rp.add(i), new);
             }
-            i += LANES;
+            base += LANES;
         }
-        _mm256_storeu_pd(increment.as_mut_ptr(), sum[0]);
-        _mm256_storeu_pd(increment.as_mut_ptr().add(4), sum[1]);
+        for h in 0..2 {
+            _mm256_storeu_pd(strain.as_mut_ptr().add(4 * h), strain_sum[h]);
+            _mm256_storeu_pd(increment.as_mut_ptr().add(4 * h), increment_sum[h]);
+        }
     }
-    whole
+    chunks.end
 }

@@ -36,7 +36,7 @@ use crate::mass::MassOperator;
 #[cfg(test)]
 use crate::matrix_passes::lane_sums;
 use crate::matrix_passes::{
-    BLOCK, EnergyLanes, ResidualFront, advance_and_strain, apply_rows, residual_rows,
+    BLOCK, EnergyLanes, ResidualFront, advance, apply_rows, residual_rows, rows_loads,
     velocity_lanes,
 };
 
@@ -71,9 +71,6 @@ pub struct MatrixCentralDifference {
     r: Vec<f64>,
     /// `r^n`: the residual of the last step.
     r_previous: Vec<f64>,
-    /// The blocked step's buffer of one block's `r^n` (`BLOCK + 1` at most), kept between steps
-    /// so that a step fills no array it does not need.
-    kept: Vec<f64>,
     /// RMM: one block's `a = M^-1 r` (`BLOCK` at most; empty for the other masses).
     a_block: Vec<f64>,
     /// CMM/AMM with windows: one group's work arrays (empty otherwise).
@@ -120,7 +117,6 @@ impl MatrixCentralDifference {
             #[cfg(test)]
             r: Vec::new(),
             r_previous: r0.to_vec(),
-            kept: vec![0.0; n.min(BLOCK) + 1],
             a_block: if reciprocal {
                 vec![0.0; n.min(BLOCK)]
             } else {
@@ -272,8 +268,8 @@ impl MatrixCentralDifference {
     }
 
     /// The reciprocal-mass step in blocks: per block, `u` one node ahead of the residual, the
-    /// residual (overwriting `r^n` in place, after keeping the block's `r^n` in an L1 buffer for
-    /// the energy increment) one node ahead of `a = M^-1 r` (a stencil), and the velocity.
+    /// residual (overwriting `r^n` in place, with the strain and increment lanes) one node ahead
+    /// of `a = M^-1 r` (a stencil), and the velocity with the impulse lanes.
     #[inline(always)]
     fn reciprocal_blocks<const AVX2: bool>(
         &mut self,
@@ -287,7 +283,6 @@ impl MatrixCentralDifference {
             u,
             v,
             r_previous: r,
-            kept: previous,
             a_block,
             ..
         } = self
@@ -295,46 +290,36 @@ impl MatrixCentralDifference {
             return;
         };
         let (dt, n, diag, off) = (*dt, u.len(), &inverse.diag[..], &inverse.off[..]);
-        // `previous[i - v_done]` = r^n_i for the nodes v_done..=v_to of the block (each slot
-        // written before it is read); `a_block`: `a = M^-1 r` of the block, not stored
-        // (`Self::acceleration_at` forms it from `r`).
-        let (mut u_done, mut e_done, mut r_done, mut v_done) = (0, 0, 0, 0);
-        let mut next_force = 0;
+        // `a_block`: `a = M^-1 r` of the block, not stored (`Self::acceleration_at` forms it
+        // from `r`).
+        let (mut u_done, mut r_done, mut v_done, mut next_load) = (0, 0, 0, 0);
         while v_done < n {
             let v_to = (v_done + BLOCK).min(n);
             let r_to = (v_to + 1).min(n);
-            let e_to = r_to.div_ceil(LANES).saturating_mul(LANES).min(n - 1);
-            let u_to = (e_to + 1).min(n);
-            advance_and_strain(dt, k, u, v, (&mut u_done, &mut e_done), (u_to, e_to), lanes);
-            let kept = &mut previous[r_done - v_done..];
-            residual_rows(k, u, r, kept, r_done, r_to);
-            while let Some(&(node, f)) = forces.get(next_force).filter(|f| f.0 < r_to) {
-                r[node] += f;
-                next_force += 1;
-            }
+            advance(dt, u, v, &mut u_done, (r_to + 1).min(n));
+            let loads = rows_loads(forces, &mut next_load, r_to);
+            residual_rows::<AVX2>((k, u, v), r, (r_done, r_to), loads, lanes);
             r_done = r_to;
             let a_block = &mut a_block[..v_to - v_done];
             apply_rows(diag, off, r, a_block, v_done, v_to);
-            velocity_lanes::<AVX2, true>(
+            velocity_lanes::<AVX2>(
                 &mut v[v_done..v_to],
                 a_block,
-                previous,
                 &r[v_done..v_to],
                 dt,
-                [&mut lanes.increment, &mut lanes.impulse],
+                &mut lanes.impulse,
             );
-            previous[0] = previous[v_to - v_done];
             v_done = v_to;
         }
     }
 
     /// The CMM and AMM step: `u` and the residual in blocks (the residual overwriting `r^n` in
-    /// place, the energy increment `v^{n+1/2} (r^n + r^{n+1})` summed while both are in L1),
-    /// then `a = M^-1 r` and `v` with the impulse `a r`. With windows
-    /// ([`crate::halo_tiles::HaloTiles`]) the
-    /// residual runs just ahead of each group of windows, which is solved while its rows are
-    /// in cache, and `v` follows tile by tile; otherwise the right-hand side is copied out, the
-    /// global factor solves it, and `v` is one more pass.
+    /// place, the strain and increment lanes summed while the rows are in L1), then
+    /// `a = M^-1 r` and `v` with the impulse `a r`. With windows
+    /// ([`crate::halo_tiles::HaloTiles`]) the residual runs just ahead of each group of
+    /// windows, which is solved while its rows are in cache, and `v` follows tile by tile
+    /// (`a` is not stored); otherwise the right-hand side is copied out, the global factor
+    /// solves it, and `v` is one more pass.
     #[inline(always)]
     fn solved_step<const AVX2: bool>(&mut self, forces: &[(usize, f64)], lanes: &mut EnergyLanes) {
         let Self {
@@ -345,7 +330,6 @@ impl MatrixCentralDifference {
             v,
             a,
             r_previous: r,
-            kept: previous,
             group,
             ..
         } = self;
@@ -354,26 +338,21 @@ impl MatrixCentralDifference {
         if let Some(tiles) = mass.windows() {
             for g in 0..tiles.groups() {
                 let to = tiles.rows_read(g);
-                front.advance::<AVX2, false>(to, dt, k, u, v, r, previous, a, forces, lanes);
+                front.advance::<AVX2>(to, (dt, k), (u, v), r, forces, lanes);
                 tiles.solve_group::<AVX2>(g, r, group);
                 for (c, rows) in tiles.group_tiles(g) {
                     let solution = tiles.tile_solution(g, c, &rows, group);
-                    velocity_lanes::<AVX2, false>(
-                        &mut v[rows.clone()],
-                        solution,
-                        &[],
-                        &r[rows.clone()],
-                        dt,
-                        [&mut lanes.increment, &mut lanes.impulse],
-                    );
+                    let (v, r) = (&mut v[rows.clone()], &r[rows]);
+                    velocity_lanes::<AVX2>(v, solution, r, dt, &mut lanes.impulse);
                 }
             }
             return;
         }
-        front.advance::<AVX2, true>(u.len(), dt, k, u, v, r, previous, a, forces, lanes);
+        front.advance::<AVX2>(u.len(), (dt, k), (u, v), r, forces, lanes);
         // a = M^-1 r as `MassOperator::apply_inverse` forms it: 0 at the fixed nodes.
+        a.copy_from_slice(r);
         mass.apply_inverse_in_place(a);
-        velocity_lanes::<AVX2, false>(v, a, &[], r, dt, [&mut lanes.increment, &mut lanes.impulse]);
+        velocity_lanes::<AVX2>(v, a, r, dt, &mut lanes.impulse);
     }
 
     /// `1/2 v^{n-1/2} . M v^{n+1/2}` computed with the mass operator itself (one product or

@@ -1,7 +1,7 @@
 //! The passes of the blocked matrix-mass step ([`crate::matrix_kernel`]), each over a range of
-//! nodes or elements so that the step can run them block by block: the displacement update's
-//! strain lanes, the residual rows `r = F - K u`, the rows of the reciprocal mass's product
-//! `a = M^-1 r`, and the velocity update with its energy lanes. Each forms its values with the
+//! nodes so that the step can run them block by block: the displacement update, the residual
+//! rows `r = F - K u` with the strain and increment lanes, the rows of the reciprocal mass's
+//! product `a = M^-1 r`, and the velocity update with the impulse lanes. Each forms its values with the
 //! same operations in the same order as the whole-pass step (tested there), so blocking changes
 //! no bit.
 
@@ -11,150 +11,145 @@ use crate::kernel::LANES;
 pub(crate) const BLOCK: usize = 512;
 
 /// `v^{n+3/2} = v^{n+1/2} + dt a^{n+1}` for the nodes of `v` (starting at a multiple of
-/// [`LANES`]), adding `a r` to the impulse lanes and, `INCREMENT`, `v^{n+1/2} (r^n + r^{n+1})`
-/// to the increment lanes; `a`, `r_previous` (unused without `INCREMENT`) and `r` hold the same
-/// nodes as `v` (and may be longer). `AVX2`: the whole chunks of [`LANES`] nodes run
+/// [`LANES`]), adding `a r` to the impulse lanes; `a` and `r` hold the same nodes as `v` (and
+/// may be longer). `AVX2`: the whole chunks of [`LANES`] nodes run
 /// [`crate::matrix_avx2::velocity_lanes`] (only an AVX2-compiled caller may ask for it).
 #[inline(always)]
-pub(crate) fn velocity_lanes<const AVX2: bool, const INCREMENT: bool>(
+pub(crate) fn velocity_lanes<const AVX2: bool>(
     v: &mut [f64],
     a: &[f64],
-    r_previous: &[f64],
     r: &[f64],
     dt: f64,
-    [increment, impulse]: [&mut [f64; LANES]; 2],
+    impulse: &mut [f64; LANES],
 ) {
     let len = v.len();
     let (a, r) = (&a[..len], &r[..len]);
-    let r_previous = if INCREMENT { &r_previous[..len] } else { r };
     #[cfg(target_arch = "x86_64")]
     let done = if AVX2 {
         // SAFETY: `AVX2` is true only in the step compiled for AVX2, run when the CPU has it.
-        unsafe {
-            crate::matrix_avx2::velocity_lanes::<INCREMENT>(
-                v, a, r_previous, r, dt, increment, impulse,
-            )
-        }
+        unsafe { crate::matrix_avx2::velocity_lanes(v, a, r, dt, impulse) }
     } else {
         0
     };
     #[cfg(not(target_arch = "x86_64"))]
     let done = 0;
-    let (mut sum, mut product) = (*increment, *impulse);
+    let mut product = *impulse;
     for i in done..len {
-        if INCREMENT {
-            sum[i % LANES] += v[i] * (r_previous[i] + r[i]);
-        }
         product[i % LANES] += a[i] * r[i];
         v[i] += dt * a[i];
     }
-    (*increment, *impulse) = (sum, product);
+    *impulse = product;
 }
 
-/// For the nodes of `v` (starting at a multiple of [`LANES`]): add `v^{n+1/2} (r^n + r^{n+1})`
-/// to the increment lanes and, `COPY`, copy `r^{n+1}` to `copy` (unused without it);
-/// `r_previous`, `r` and `copy` hold the same nodes as `v` (`r_previous` may be longer).
-/// `AVX2`: the whole chunks run [`crate::matrix_avx2::increment_lanes`].
+/// `r_i = N_i - N_{i-1} + F_i` for rows `from..to`, overwriting `r^n` in place, with the
+/// element forces `N` of padded index `i + 1` formed as `k[i + 1] (u[i + 1] - u[i])` (`k` the
+/// padded stiffness, length `n + 1`), the ghost forces 0 and the load `F_i` of `loads` (the
+/// rows' loads, sorted) added last: the whole-pass step's `element_force[i + 1] -
+/// element_force[i]`, then `+= F_i`, operation for operation. Each row also adds its right
+/// element's `N_e du_e` (element `e = i`, all rows but the last) to strain lane `e % LANES` and
+/// `v_i (r^n_i + r^{n+1}_i)` to increment lane `i % LANES`, in increasing rows. `AVX2`: the
+/// whole chunks of [`LANES`] unloaded interior rows run [`crate::matrix_avx2::residual_rows`].
 #[inline(always)]
-pub(crate) fn increment_lanes<const AVX2: bool, const COPY: bool>(
-    v: &[f64],
-    r_previous: &[f64],
-    r: &[f64],
-    copy: &mut [f64],
-    increment: &mut [f64; LANES],
-) {
-    let len = v.len();
-    let (r_previous, r) = (&r_previous[..len], &r[..len]);
-    #[cfg(target_arch = "x86_64")]
-    let done = if AVX2 {
-        // SAFETY: `AVX2` is true only in the step compiled for AVX2, run when the CPU has it.
-        unsafe { crate::matrix_avx2::increment_lanes::<COPY>(v, r_previous, r, copy, increment) }
-    } else {
-        0
-    };
-    #[cfg(not(target_arch = "x86_64"))]
-    let done = 0;
-    let mut sum = *increment;
-    for i in done..len {
-        sum[i % LANES] += v[i] * (r_previous[i] + r[i]);
-    }
-    if COPY {
-        copy[done..len].copy_from_slice(&r[done..]);
-    }
-    *increment = sum;
-}
-
-/// Add `N_e du_e`, `N_e = k[e] du_e`, `du_e = u[e + 1] - u[e]`, of the elements of `k` to lane
-/// `e % LANES` (the slices start at a multiple of [`LANES`] of the whole element array).
-#[inline(always)]
-pub(crate) fn strain_lanes(k: &[f64], u: &[f64], lanes: &mut [f64; LANES]) {
-    let mut local = *lanes;
-    let whole = k.len() / LANES * LANES;
-    for (kk, uu) in k[..whole]
-        .chunks_exact(LANES)
-        .zip(u.windows(LANES + 1).step_by(LANES))
-    {
-        for l in 0..LANES {
-            let du = uu[l + 1] - uu[l];
-            let force = kk[l] * du;
-            local[l] += force * du;
-        }
-    }
-    for e in whole..k.len() {
-        let du = u[e + 1] - u[e];
-        let force = k[e] * du;
-        local[e % LANES] += force * du;
-    }
-    *lanes = local;
-}
-
-/// `r[i] = N_i - N_{i-1}` for rows `from..to`, overwriting `r` in place after keeping the old
-/// value in `kept[i - from]` (the loads are added by the caller), with the element forces `N`
-/// of padded index `i + 1` formed as `k[i + 1] (u[i + 1] - u[i])` (`k` the padded stiffness,
-/// length `n + 1`) and the ghost forces 0: the whole-pass step's
-/// `element_force[i + 1] - element_force[i]`, operation for operation.
-#[inline(always)]
-pub(crate) fn residual_rows(
-    k: &[f64],
-    u: &[f64],
+pub(crate) fn residual_rows<const AVX2: bool>(
+    (k, u, v): (&[f64], &[f64], &[f64]),
     r: &mut [f64],
-    kept: &mut [f64],
-    from: usize,
-    to: usize,
+    (from, to): (usize, usize),
+    loads: &[(usize, f64)],
+    lanes: &mut EnergyLanes,
 ) {
     let n = u.len();
     if from >= to {
         return;
     }
-    let kept = &mut kept[..to - from];
-    let set = |i: usize, value: f64, r: &mut [f64], kept: &mut [f64]| {
-        kept[i - from] = r[i];
-        r[i] = value;
-    };
+    let (mut strain, mut increment) = (lanes.strain, lanes.increment);
     let force = |i: usize| k[i + 1] * (u[i + 1] - u[i]);
+    // Row `i` with its value `N_i - N_{i-1}` and load: the new residual and its increment.
+    let set =
+        |i: usize, value: f64, load: Option<f64>, r: &mut [f64], increment: &mut [f64; LANES]| {
+            let new = load.map_or(value, |f| value + f);
+            increment[i % LANES] += v[i] * (r[i] + new);
+            r[i] = new;
+        };
+    // An interior row (1 <= i <= n - 2).
+    let interior = |i: usize, load: Option<f64>, r: &mut [f64], lanes: [&mut [f64; LANES]; 2]| {
+        let du = u[i + 1] - u[i];
+        let right = k[i + 1] * du;
+        lanes[0][i % LANES] += right * du;
+        set(i, right - k[i] * (u[i] - u[i - 1]), load, r, lanes[1]);
+    };
+    // The loads in row order: `load_at(i)` takes row i's, if it has one.
+    let mut loads = loads.iter().peekable();
+    let load_at = |loads: &mut std::iter::Peekable<std::slice::Iter<(usize, f64)>>, i: usize| {
+        loads.next_if(|f| f.0 == i).map(|f| f.1)
+    };
     if n == 1 {
         // One node, no element: both ghost forces, `0 - 0 = +0`.
-        set(0, 0.0, r, kept);
+        set(0, 0.0, load_at(&mut loads, 0), r, &mut increment);
+        (lanes.strain, lanes.increment) = (strain, increment);
         return;
     }
     if from == 0 {
-        set(0, force(0) - 0.0, r, kept);
+        let du = u[1] - u[0];
+        let right = k[1] * du;
+        strain[0] += right * du;
+        set(0, right - 0.0, load_at(&mut loads, 0), r, &mut increment);
     }
     let (lo, hi) = (from.max(1), to.min(n - 1));
-    if lo < hi {
-        let rows = r[lo..hi]
-            .iter_mut()
-            .zip(u[lo - 1..hi + 1].windows(3))
-            .zip(k[lo..hi + 1].windows(2));
-        let value = |us: &[f64], ks: &[f64]| ks[1] * (us[2] - us[1]) - ks[0] * (us[1] - us[0]);
-        for (((ri, us), ks), old) in rows.zip(&mut kept[lo - from..hi - from]) {
-            *old = *ri;
-            *ri = value(us, ks);
+    let mut row = lo;
+    while row < hi {
+        // Unloaded rows up to the next loaded one: whole chunks of LANES rows from a multiple of
+        // LANES with the intrinsics, the rest one by one.
+        let end = loads.peek().map_or(hi, |f| f.0.min(hi));
+        let chunks = row.next_multiple_of(LANES)..end / LANES * LANES;
+        let chunks = if chunks.start < chunks.end {
+            chunks
+        } else {
+            end..end
+        };
+        for i in row..chunks.start {
+            interior(i, None, r, [&mut strain, &mut increment]);
+        }
+        #[cfg(target_arch = "x86_64")]
+        let done = if AVX2 && !chunks.is_empty() {
+            // SAFETY: `AVX2` is true only in the step compiled for AVX2, run when the CPU has it.
+            unsafe {
+                crate::matrix_avx2::residual_rows(
+                    (k, u, v),
+                    r,
+                    chunks.clone(),
+                    [&mut strain, &mut increment],
+                )
+            }
+        } else {
+            chunks.start
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let done = chunks.start;
+        for i in done..end {
+            interior(i, None, r, [&mut strain, &mut increment]);
+        }
+        if end < hi {
+            interior(
+                end,
+                load_at(&mut loads, end),
+                r,
+                [&mut strain, &mut increment],
+            );
+            row = end + 1;
+        } else {
+            row = hi;
         }
     }
     if to == n {
-        set(n - 1, 0.0 - force(n - 2), r, kept);
+        set(
+            n - 1,
+            0.0 - force(n - 2),
+            load_at(&mut loads, n - 1),
+            r,
+            &mut increment,
+        );
     }
+    (lanes.strain, lanes.increment) = (strain, increment);
 }
 
 /// `a[i - from] = (M^-1 r)_i` for rows `from..to` of the symmetric tridiagonal `M^-1` (`diag`,
@@ -205,86 +200,59 @@ pub(crate) struct EnergyLanes {
     pub(crate) impulse: [f64; LANES],
 }
 
-/// How far the CMM/AMM step's first passes have got: `u` advanced to `u_done`, the strain lanes
-/// to element `e_done`, the residual (with the loads up to `next_force` and the increment
-/// lanes) to row `r_done`.
+/// How far the CMM/AMM step's first passes have got: `u` advanced to `u_done`, the residual
+/// (with its loads up to `next_load` and the strain and increment lanes) to row `r_done`.
 #[derive(Debug, Default)]
 pub(crate) struct ResidualFront {
     u_done: usize,
-    e_done: usize,
     r_done: usize,
-    next_force: usize,
+    next_load: usize,
 }
 
 impl ResidualFront {
-    /// Advance in blocks of [`BLOCK`] rows (from 0, whatever `to`: the lanes' order is the
-    /// whole-pass step's) until the residual reaches row `to` or the end: `u` one node ahead
-    /// of the residual, whose element forces are formed in registers; with `COPY` the residual
-    /// also copied to `copy` (the right-hand side of the global solve).
-    #[allow(clippy::too_many_arguments)]
+    /// Advance in blocks of [`BLOCK`] rows (from 0, whatever `to`) until the residual reaches
+    /// row `to` or the end, `u` one node ahead of it (its element forces are formed in
+    /// registers).
     #[inline(always)]
-    pub(crate) fn advance<const AVX2: bool, const COPY: bool>(
+    pub(crate) fn advance<const AVX2: bool>(
         &mut self,
         to: usize,
-        dt: f64,
-        k: &[f64],
-        u: &mut [f64],
-        v: &[f64],
+        (dt, k): (f64, &[f64]),
+        (u, v): (&mut [f64], &[f64]),
         r: &mut [f64],
-        previous: &mut [f64],
-        copy: &mut [f64],
-        forces: &[(usize, f64)],
+        loads: &[(usize, f64)],
         lanes: &mut EnergyLanes,
     ) {
         let n = u.len();
         while self.r_done < to.min(n) {
             let (from, r_to) = (self.r_done, (self.r_done + BLOCK).min(n));
-            let e_to = r_to.div_ceil(LANES).saturating_mul(LANES).min(n - 1);
-            let u_to = (e_to + 1).min(n);
-            let counters = (&mut self.u_done, &mut self.e_done);
-            advance_and_strain(dt, k, u, v, counters, (u_to, e_to), lanes);
-            residual_rows(k, u, r, previous, from, r_to);
-            while let Some(&(node, f)) = forces.get(self.next_force).filter(|f| f.0 < r_to) {
-                r[node] += f;
-                self.next_force += 1;
-            }
-            let copy: &mut [f64] = if COPY { &mut copy[from..r_to] } else { &mut [] };
-            increment_lanes::<AVX2, COPY>(
-                &v[from..r_to],
-                previous,
-                &r[from..r_to],
-                copy,
-                &mut lanes.increment,
-            );
+            advance(dt, u, v, &mut self.u_done, (r_to + 1).min(n));
+            let block_loads = rows_loads(loads, &mut self.next_load, r_to);
+            residual_rows::<AVX2>((k, u, v), r, (from, r_to), block_loads, lanes);
             self.r_done = r_to;
         }
     }
 }
 
-/// `u^{n+1} = u^n + dt v^{n+1/2}` for nodes `*u_done..u_to`, then the strain lanes of elements
-/// `*e_done..e_to` (which read `u` up to `e_to`); both counters advance.
+/// The loads from `*next` on whose nodes are below `to` (`loads` sorted); `*next` moves past them.
 #[inline(always)]
-pub(crate) fn advance_and_strain(
-    dt: f64,
-    k: &[f64],
-    u: &mut [f64],
-    v: &[f64],
-    (u_done, e_done): (&mut usize, &mut usize),
-    (u_to, e_to): (usize, usize),
-    lanes: &mut EnergyLanes,
-) {
+pub(crate) fn rows_loads<'f>(
+    loads: &'f [(usize, f64)],
+    next: &mut usize,
+    to: usize,
+) -> &'f [(usize, f64)] {
+    let from = *next;
+    *next += loads[from..].partition_point(|f| f.0 < to);
+    &loads[from..*next]
+}
+
+/// `u^{n+1} = u^n + dt v^{n+1/2}` for nodes `*u_done..u_to`; the counter advances.
+#[inline(always)]
+pub(crate) fn advance(dt: f64, u: &mut [f64], v: &[f64], u_done: &mut usize, u_to: usize) {
     for (ui, vi) in u[*u_done..u_to].iter_mut().zip(&v[*u_done..u_to]) {
         *ui += dt * vi;
     }
     *u_done = u_to.max(*u_done);
-    if *e_done < e_to {
-        strain_lanes(
-            &k[*e_done + 1..e_to + 1],
-            &u[*e_done..e_to + 1],
-            &mut lanes.strain,
-        );
-    }
-    *e_done = e_to.max(*e_done);
 }
 
 /// Update every `x[i]` with `f(i, &mut x[i], data)` and sum each of the `K` terms it returns in
