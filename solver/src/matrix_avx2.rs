@@ -114,3 +114,58 @@ pub(crate) unsafe fn residual_rows(
     }
     chunks.end
 }
+
+/// The interior rows `chunks` (whole chunks of [`LANES`] rows from a multiple of [`LANES`],
+/// `1 <= chunks.start`, `chunks.end <= n - 1`) of
+/// [`crate::matrix_passes::reciprocal_velocity`]:
+/// `a_i = (off_{i-1} r_{i-1} + diag_i r_i) + off_i r_{i+1}`, `impulse[i % 8] += a_i r_i`,
+/// `v_i += dt a_i`; returns `chunks.end`.
+///
+/// # Safety
+/// The CPU must support AVX2.
+#[target_feature(enable = "avx2")]
+pub(crate) unsafe fn reciprocal_velocity(
+    (diag, off): (&[f64], &[f64]),
+    r: &[f64],
+    v: &mut [f64],
+    dt: f64,
+    chunks: std::ops::Range<usize>,
+    impulse: &mut [f64; LANES],
+) -> usize {
+    let n = diag.len();
+    assert!(chunks.start >= 1 && chunks.end < n);
+    assert!(chunks.start.is_multiple_of(LANES) && chunks.end.is_multiple_of(LANES));
+    assert!(off.len() + 1 >= n && r.len() >= n && v.len() >= n);
+    let (dp, op, rp, vp) = (diag.as_ptr(), off.as_ptr(), r.as_ptr(), v.as_mut_ptr());
+    // SAFETY: rows i of the chunks read off[i-1..i+4], r[i-1..i+5], diag and v [i..i+4]
+    // (i + 4 <= chunks.end <= n - 1), within the asserted lengths; unaligned; `impulse` holds 8.
+    unsafe {
+        let step = _mm256_set1_pd(dt);
+        let mut product = [
+            _mm256_loadu_pd(impulse.as_ptr()),
+            _mm256_loadu_pd(impulse.as_ptr().add(4)),
+        ];
+        let mut base = chunks.start;
+        while base < chunks.end {
+            for (h, lane) in product.iter_mut().enumerate() {
+                let i = base + 4 * h;
+                let ri = _mm256_loadu_pd(rp.add(i));
+                let left = _mm256_mul_pd(
+                    _mm256_loadu_pd(op.add(i - 1)),
+                    _mm256_loadu_pd(rp.add(i - 1)),
+                );
+                let centre = _mm256_mul_pd(_mm256_loadu_pd(dp.add(i)), ri);
+                let right =
+                    _mm256_mul_pd(_mm256_loadu_pd(op.add(i)), _mm256_loadu_pd(rp.add(i + 1)));
+                let a = _mm256_add_pd(_mm256_add_pd(left, centre), right);
+                *lane = _mm256_add_pd(*lane, _mm256_mul_pd(a, ri));
+                let vi = _mm256_loadu_pd(vp.add(i));
+                _mm256_storeu_pd(vp.add(i), _mm256_add_pd(vi, _mm256_mul_pd(step, a)));
+            }
+            base += LANES;
+        }
+        _mm256_storeu_pd(impulse.as_mut_ptr(), product[0]);
+        _mm256_storeu_pd(impulse.as_mut_ptr().add(4), product[1]);
+    }
+    chunks.end
+}

@@ -36,8 +36,8 @@ use crate::mass::MassOperator;
 #[cfg(test)]
 use crate::matrix_passes::lane_sums;
 use crate::matrix_passes::{
-    BLOCK, EnergyLanes, ResidualFront, advance, apply_rows, residual_rows, rows_loads,
-    velocity_lanes,
+    BLOCK, EnergyLanes, ResidualFront, advance, apply_rows, reciprocal_velocity, residual_rows,
+    rows_loads, velocity_lanes,
 };
 
 /// The state a run starts from, after the start procedure.
@@ -71,8 +71,6 @@ pub struct MatrixCentralDifference {
     r: Vec<f64>,
     /// `r^n`: the residual of the last step.
     r_previous: Vec<f64>,
-    /// RMM: one block's `a = M^-1 r` (`BLOCK` at most; empty for the other masses).
-    a_block: Vec<f64>,
     /// CMM/AMM with windows: one group's work arrays (empty otherwise).
     group: GroupBuffers,
     scratch: Vec<f64>,
@@ -117,11 +115,6 @@ impl MatrixCentralDifference {
             #[cfg(test)]
             r: Vec::new(),
             r_previous: r0.to_vec(),
-            a_block: if reciprocal {
-                vec![0.0; n.min(BLOCK)]
-            } else {
-                Vec::new()
-            },
             group,
             scratch: vec![0.0; n],
             staggered: staggered0,
@@ -283,15 +276,14 @@ impl MatrixCentralDifference {
             u,
             v,
             r_previous: r,
-            a_block,
             ..
         } = self
         else {
             return;
         };
         let (dt, n, diag, off) = (*dt, u.len(), &inverse.diag[..], &inverse.off[..]);
-        // `a_block`: `a = M^-1 r` of the block, not stored (`Self::acceleration_at` forms it
-        // from `r`).
+        // `a = M^-1 r` is formed in the velocity sweep, not stored (`Self::acceleration_at`
+        // forms it from `r`).
         let (mut u_done, mut r_done, mut v_done, mut next_load) = (0, 0, 0, 0);
         while v_done < n {
             let v_to = (v_done + BLOCK).min(n);
@@ -300,15 +292,8 @@ impl MatrixCentralDifference {
             let loads = rows_loads(forces, &mut next_load, r_to);
             residual_rows::<AVX2>((k, u, v), r, (r_done, r_to), loads, lanes);
             r_done = r_to;
-            let a_block = &mut a_block[..v_to - v_done];
-            apply_rows(diag, off, r, a_block, v_done, v_to);
-            velocity_lanes::<AVX2>(
-                &mut v[v_done..v_to],
-                a_block,
-                &r[v_done..v_to],
-                dt,
-                &mut lanes.impulse,
-            );
+            let rows = (dt, (v_done, v_to));
+            reciprocal_velocity::<AVX2>((diag, off), r, v, rows, &mut lanes.impulse);
             v_done = v_to;
         }
     }

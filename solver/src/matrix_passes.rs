@@ -152,6 +152,78 @@ pub(crate) fn residual_rows<const AVX2: bool>(
     (lanes.strain, lanes.increment) = (strain, increment);
 }
 
+/// The reciprocal mass's velocity rows `from..to` (`from` a multiple of [`LANES`]):
+/// `a_i = (M^-1 r)_i` formed as [`apply_rows`] forms it, `a_i r_i` added to impulse lane
+/// `i % LANES`, then `v_i += dt a_i`: [`apply_rows`] and [`velocity_lanes`] in one sweep, the
+/// same operations (`a` is never stored). `AVX2`: the whole chunks of [`LANES`] interior rows
+/// run [`crate::matrix_avx2::reciprocal_velocity`].
+#[inline(always)]
+pub(crate) fn reciprocal_velocity<const AVX2: bool>(
+    (diag, off): (&[f64], &[f64]),
+    r: &[f64],
+    v: &mut [f64],
+    (dt, (from, to)): (f64, (usize, usize)),
+    impulse: &mut [f64; LANES],
+) {
+    let n = diag.len();
+    let mut product = *impulse;
+    let row = |i: usize, a: f64, v: &mut [f64], product: &mut [f64; LANES]| {
+        product[i % LANES] += a * r[i];
+        v[i] += dt * a;
+    };
+    if n == 1 {
+        if from == 0 {
+            row(0, diag[0] * r[0], v, &mut product);
+        }
+        *impulse = product;
+        return;
+    }
+    if from == 0 && to > 0 {
+        row(0, diag[0] * r[0] + off[0] * r[1], v, &mut product);
+    }
+    let (lo, hi) = (from.max(1), to.min(n - 1));
+    let interior = |i: usize| off[i - 1] * r[i - 1] + diag[i] * r[i] + off[i] * r[i + 1];
+    let chunks = lo.next_multiple_of(LANES)..hi / LANES * LANES;
+    let chunks = if chunks.start < chunks.end {
+        chunks
+    } else {
+        hi.max(lo)..hi.max(lo)
+    };
+    for i in lo..chunks.start {
+        row(i, interior(i), v, &mut product);
+    }
+    #[cfg(target_arch = "x86_64")]
+    let done = if AVX2 && !chunks.is_empty() {
+        // SAFETY: `AVX2` is true only in the step compiled for AVX2, run when the CPU has it.
+        unsafe {
+            crate::matrix_avx2::reciprocal_velocity(
+                (diag, off),
+                r,
+                v,
+                dt,
+                chunks.clone(),
+                &mut product,
+            )
+        }
+    } else {
+        chunks.start
+    };
+    #[cfg(not(target_arch = "x86_64"))]
+    let done = chunks.start;
+    for i in done..hi {
+        row(i, interior(i), v, &mut product);
+    }
+    if to == n {
+        row(
+            n - 1,
+            off[n - 2] * r[n - 2] + diag[n - 1] * r[n - 1],
+            v,
+            &mut product,
+        );
+    }
+    *impulse = product;
+}
+
 /// `a[i - from] = (M^-1 r)_i` for rows `from..to` of the symmetric tridiagonal `M^-1` (`diag`,
 /// `off`), each row formed as [`crate::tridiagonal::Tridiagonal::apply`] forms it (same
 /// operations, same order); interior rows as zipped windows, so the loop vectorises.
