@@ -23,15 +23,17 @@
 //! side, shifted inward at the bar's ends. The window's solution differs from the whole solution
 //! by the response to the two couplings it cuts, at least `H` rows from any row of the tile:
 //! `|x_i - x~_i| <= C q^H s sqrt(m_cut/m_i) |x_cut|`, `s = |1 - beta|/3` the largest scaled
-//! coupling `M_i,i+1 / sqrt(A_i A_i+1)`. `H` is the least multiple of 4 with `C q^H <= 2^-66`: the truncation stays
-//! below 2^-13 of the unit round-off for mass ratios up to 6.7e7 across a halo, i.e. the tiles
-//! give the solution to round-off, like the global factor (`crate::partitioned_ldl`), not
-//! bit-identical to it. CMM: `H = 36`; AMM(1/2): `H = 24`.
+//! coupling `M_i,i+1 / sqrt(A_i A_i+1)` and `x_cut` the solution just outside the window. `H` is
+//! the least multiple of 4 with `C q^H <= 2^-66`: with `s = 1/3` (CMM) the truncation stays below
+//! `2^-13 u |x_cut|` (`u = 2^-53`, the unit round-off) for mass ratios up to 9 across a halo and
+//! below `u |x_cut|` up to `9 2^26`: the tiles give the solution to round-off, like the global
+//! factor (`crate::partitioned_ldl`), not bit-identical to it. CMM: `H = 36`; AMM(1/2): `H = 24`.
 //!
 //! Each window is factored once (`L D L^T`, no pivoting: its rows are a principal submatrix of
 //! an SPD matrix); a step runs, per window, the forward recurrence `z_k = r_k - l_{k-1} z_{k-1}`
 //! and the backward one `x_k = z_k / d_k - l_k x_{k+1}`, each a fused multiply-add (one
-//! rounding) per row on a chain of latencies. [`CHAINS`] (16) windows form a group and run interleaved:
+//! rounding) per row on a chain of latencies. [`CHAINS`] (16) windows form a group and run
+//! interleaved:
 //! the factors are stored row-major by group (row `k` of the 16 windows side by side), the
 //! residual rows are transposed in 4 x 4 blocks into that layout and the solution back into
 //! window-major order ([`crate::halo_avx2`]). The portable loops do the same arithmetic: the
@@ -101,8 +103,8 @@ pub struct HaloTiles {
     lowest: Vec<usize>,
     /// Fixed (decoupled) rows, ascending: their solution is `+0`.
     fixed: Vec<usize>,
-    /// Whether the CPU has FMA (the intrinsics need it beside AVX2).
-    fma: bool,
+    /// Whether the CPU has AVX2 and FMA (what the intrinsics need).
+    simd: bool,
 }
 
 /// The work arrays of one group's solve: the rows in group layout and the solution by window.
@@ -116,13 +118,13 @@ pub struct GroupBuffers {
 
 impl HaloTiles {
     /// Tiles for `m` (fixed rows decoupled: unit diagonal, zero couplings, listed in `fixed`)
-    /// with halo `halo` (a multiple of 4, from [`halo_rows`]); `None` when the matrix is
-    /// shorter than a group of windows (the global factor is as fast there) or a window's
-    /// factor has a non-positive pivot.
+    /// with halo `halo` (a multiple of 4 up to `TILE / 2`, from [`halo_rows`]); `None` for any
+    /// other halo, when the matrix is shorter than a group of windows (the global factor is as
+    /// fast there) or when a window's factor has a non-positive pivot.
     pub fn new(m: &Tridiagonal, halo: usize, fixed: &[usize]) -> Option<Self> {
         let n = m.diag.len();
         let window = TILE + 2 * halo;
-        if !halo.is_multiple_of(4) || n < CHAINS * TILE || n < window {
+        if !halo.is_multiple_of(4) || halo > MAX_HALO || n < CHAINS * TILE || n < window {
             return None;
         }
         let tiles = n.div_ceil(TILE);
@@ -159,7 +161,7 @@ impl HaloTiles {
             factors,
             lowest,
             fixed: fixed.to_vec(),
-            fma: has_fma(),
+            simd: crate::kernel::has_avx2() && has_fma(),
         })
     }
 
@@ -195,8 +197,8 @@ impl HaloTiles {
     }
 
     /// Solve the windows of group `g` for the right-hand side `r` (the whole vector; rows up
-    /// to [`Self::rows_read`] are read), `AVX2` with the intrinsics where the CPU also has FMA
-    /// (only an AVX2-compiled caller may ask for them). Afterwards [`Self::tile_solution`] gives each tile's rows.
+    /// to [`Self::rows_read`] are read), `AVX2` with the intrinsics where the CPU has AVX2 and
+    /// FMA (an AVX2-compiled caller inlines them), the portable loops otherwise: the same bits. Afterwards [`Self::tile_solution`] gives each tile's rows.
     #[inline(always)]
     pub fn solve_group<const AVX2: bool>(&self, g: usize, r: &[f64], buffers: &mut GroupBuffers) {
         let window = self.window;
@@ -208,9 +210,9 @@ impl HaloTiles {
         assert!(r.len() >= self.rows_read(g) && buffers.rows.len() == window * CHAINS);
         assert!(buffers.solution.len() == CHAINS * window && window.is_multiple_of(4));
         #[cfg(target_arch = "x86_64")]
-        if AVX2 && self.fma {
-            // SAFETY: `AVX2` is true only in code compiled for AVX2, run when the CPU has it,
-            // and `fma` only when it has FMA; the lengths are asserted above.
+        if AVX2 && self.simd {
+            // SAFETY: `simd` is set only when the CPU reports AVX2 and FMA; the lengths are
+            // asserted above.
             unsafe {
                 crate::halo_avx2::solve_windows(
                     factors,

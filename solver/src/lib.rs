@@ -17,7 +17,8 @@
 //! `courant` crate), and it does no I/O.
 //!
 //! Layers, lowest first: `mesh`, `bar`, `load`, `model` (the problem); `tridiagonal`,
-//! `partitioned_ldl`, `banded`, `mass` (operators); `stability`, `spectrum`, `time_step`;
+//! `partitioned_ldl`, `halo_tiles` (with `halo_avx2`), `banded`, `mass` (operators);
+//! `stability`, `spectrum`, `time_step`;
 //! `kernel`, `kernel_tiled` and `kernel_pipeline` (the lumped step, and blocks of it: temporal
 //! blocking on one or several threads), `matrix_kernel` (with `matrix_passes`, `matrix_avx2`),
 //! `park` (step kernels); `integrator` (the public integrator

@@ -1,7 +1,8 @@
-//! The central-difference step with a non-diagonal mass (CMM, AMM: a pre-factored, partitioned
-//! tridiagonal solve, [`crate::partitioned_ldl`]; RMM: a tridiagonal product with the assembled
-//! `M^-1`, no solve), O(N) per step, no dense matrix, no allocation; the passes run in cache
-//! blocks ([`MatrixCentralDifference::step_with_energy`]).
+//! The central-difference step with a non-diagonal mass (CMM, AMM: a pre-factored tridiagonal
+//! solve, in overlapping windows for long bars ([`crate::halo_tiles`]) and with the global
+//! partitioned factor otherwise ([`crate::partitioned_ldl`]); RMM: a tridiagonal product with
+//! the assembled `M^-1`, no solve), O(N) per step, no dense matrix, no allocation; the passes
+//! run in cache blocks ([`MatrixCentralDifference::step_with_energy`]).
 //!
 //! ```text
 //!   u^{n+1}   = u^n + dt v^{n+1/2}
@@ -20,15 +21,15 @@
 //! and, at sampled steps, `T*` from `M` itself ([`MatrixCentralDifference::staggered_kinetic_from_mass`]),
 //! which checks the mass operator against the update.
 //!
-//! What a step streams (8-byte words per node): RMM reads and writes `u`, `v` and the residual
-//! (overwritten in place: the block's `r^n` is kept in L1 for `T*`) and reads `k`, and the two
-//! diagonals of `M^-1`; `a` is not stored (a history reads `(M^-1 r^n)_i` at its node). That is
-//! 9 words against the lumped step's 7 (`u`, `v` read and written, `k`, `dt/m`, `m`): measured
-//! 1.30x / 1.42x the lumped step at N = 1e5 / 1e6 (benches/RESULTS.md, target 3). CMM and AMM
-//! also write the solve's right-hand side, run the solve's forward and backward sweeps over it
-//! and the factor, and a separate velocity pass: about 19 words, 2.3x / 2.7x measured. Their
-//! sweeps cannot be fused with the force and velocity passes without changing the order of the
-//! energy sums (the sweeps run in 8 interleaved partitions, the backward one downwards).
+//! What a step streams (8-byte words per node): every mass reads and writes `u`, `v` and the
+//! residual (overwritten in place, `r^n` read just before: the increment needs both) and reads
+//! `k`. RMM adds the two diagonals of `M^-1` (9 words against the lumped step's 7: `u`, `v`
+//! read and written, `k`, `dt/m`, `m`); `a` is formed in the velocity sweep and never stored (a
+//! history forms `(M^-1 r^n)_i` at its node). CMM and AMM with windows add the windows' factors
+//! (2 words and the halo's share, 14 % for CMM) and keep the group's residual and solve in cache
+//! (about 9.3 words; `a` not stored either); with the global factor they also copy the residual
+//! out, run the factor's two sweeps over it and a separate velocity pass (about 18 words).
+//! Measured ratios to the lumped step: benches/RESULTS.md, target 3.
 
 use crate::halo_tiles::GroupBuffers;
 use crate::kernel::{LANES, StepEnergy, has_avx2};
@@ -231,8 +232,9 @@ impl MatrixCentralDifference {
     /// formed in registers, not stored; for the reciprocal mass, whose `M^-1` is a tridiagonal
     /// product (a stencil), the residual one node ahead of `a = M^-1 r` and the velocity update
     /// in the same block, the residual overwriting `r^n` in place), so a block's data are still
-    /// in L1 when the next pass reads them. CMM and AMM solve with the whole residual after the
-    /// blocks, then update `v` in one pass. Every value is computed by the same operations as
+    /// in L1 when the next pass reads them; CMM and AMM with windows solve each group of windows
+    /// just behind the residual and update `v` tile by tile, with the global factor they solve
+    /// the whole residual after the blocks. Every value is computed by the same operations as
     /// in whole passes, and each pass's blocks start at multiples of [`LANES`], so every energy
     /// term goes to the same lane in the same order: bit-identical to the whole-pass step
     /// (tested).
@@ -367,15 +369,12 @@ mod tests {
     use super::*;
     use crate::halo_tiles::{CHAINS, TILE};
     use crate::mass::MassKind;
+    use crate::{Support, Supports};
 
-    /// The graded seed bar (fixed right end) or, `free`, the same bar free at both ends.
-    fn matrix_kernel(n: usize, kind: MassKind, free: bool) -> MatrixCentralDifference {
-        let model = if free {
-            let bar = crate::fixtures::graded_bar(n).unwrap();
-            crate::Model::unloaded(bar, crate::Supports::default())
-        } else {
-            crate::fixtures::graded_seed_bar(n).unwrap()
-        };
+    /// The graded seed bar of `n` elements with the given supports.
+    fn matrix_kernel(n: usize, kind: MassKind, supports: Supports) -> MatrixCentralDifference {
+        let bar = crate::fixtures::graded_bar(n).unwrap();
+        let model = crate::Model::unloaded(bar, supports);
         let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
         let v = crate::fixtures::smooth_half_velocity(n);
         let zeros = vec![0.0; n + 1];
@@ -395,33 +394,51 @@ mod tests {
         // Several blocks, loads inside a block, at a block edge and at the last node; and a
         // mesh shorter than a block. The lumped (diagonal) operator too: the kernel accepts any
         // mass (a step with it once did nothing at all).
+        let windowed = 2 * CHAINS * TILE + 333;
         for (n, forces) in [
             (
                 3 * BLOCK + 37,
                 vec![
                     (0, 1.0),
+                    (1, 0.125),
+                    (7, 0.5),
+                    (8, -0.5),
+                    (BLOCK - 1, 0.25),
                     (700, -0.25),
                     (2 * BLOCK, 0.5),
-                    (3 * BLOCK + 37, 2.0),
+                    (3 * BLOCK + 36, 1.5),
+                    (3 * BLOCK + 37, 2.0), // the last node
                 ],
             ),
             (5, vec![(0, 1.0)]),
+            // One and two elements: no interior row, one.
+            (1, vec![(0, 1.0), (1, 0.5)]),
+            (2, vec![(0, 1.0), (1, 0.5), (2, -1.0)]),
             // n elements, n + 1 nodes: the last node alone in the last block.
             (2 * BLOCK, vec![(0, 1.0)]),
             // CMM and AMM solve in windows ([`crate::halo_tiles`]): two groups and a short
-            // one, loads on a tile edge, a group edge and inside the short last tile.
+            // one, loads on a tile edge, a group edge, inside the short last tile and at the
+            // last two nodes.
             (
-                2 * CHAINS * TILE + 333,
+                windowed,
                 vec![
                     (0, 1.0),
+                    (TILE - 1, -0.5),
                     (TILE, 0.5),
                     (CHAINS * TILE, -1.0),
                     (2 * CHAINS * TILE + 300, 2.0),
+                    (windowed - 1, 0.25),
+                    (windowed, 1.0), // the last node
                 ],
             ),
         ] {
             let steps = if n > CHAINS * TILE { 40 } else { 200 };
-            for (kind, avx2, free) in [
+            let both_fixed = Supports {
+                left: Support::Fixed,
+                right: Support::Fixed,
+            };
+            let supports = [Supports::FREE_FIXED, Supports::default(), both_fixed];
+            for (kind, avx2, supports) in [
                 MassKind::Reciprocal { beta: 0.5 },
                 MassKind::Consistent,
                 MassKind::Averaged { beta: 0.5 },
@@ -429,15 +446,15 @@ mod tests {
             ]
             .into_iter()
             .flat_map(|kind| [(kind, false), (kind, has_avx2())])
-            .flat_map(|(kind, avx2)| [(kind, avx2, false), (kind, avx2, true)])
+            .flat_map(|(kind, avx2)| supports.map(|s| (kind, avx2, s)))
             {
-                let mut blocked = matrix_kernel(n, kind, free);
+                let mut blocked = matrix_kernel(n, kind, supports);
                 blocked.avx2 = avx2;
-                let mut whole = matrix_kernel(n, kind, free);
+                let mut whole = matrix_kernel(n, kind, supports);
                 for _ in 0..steps {
                     let a = blocked.step_with_energy(&forces);
                     let b = whole.whole_pass_step(&forces);
-                    assert_eq!(a, b, "{kind:?}, n = {n}, free {free}");
+                    assert_eq!(a, b, "{kind:?}, n = {n}, {supports:?}");
                 }
                 assert_eq!((&blocked.u, &blocked.v), (&whole.u, &whole.v));
                 assert!(

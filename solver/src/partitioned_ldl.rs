@@ -1,4 +1,6 @@
-//! Partitioned ("SPIKE") solve of an SPD tridiagonal system, the mass solve of CMM and AMM.
+//! Partitioned ("SPIKE") solve of an SPD tridiagonal system: the global factor of CMM and AMM
+//! (the step's solve for bars shorter than a group of windows, [`crate::halo_tiles`], and for
+//! masses whose inverse decays too slowly for windows), and of RMM's `C` for `M v`.
 //!
 //! The Thomas algorithm is one recurrence, `z_i = r_i - l_{i-1} z_{i-1}`: every row waits for
 //! the previous one, so its time is the latency of a multiply-add per row, not the machine's

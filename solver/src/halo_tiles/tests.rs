@@ -91,6 +91,12 @@ fn windows_give_the_global_solution_to_round_off() {
         (CHAINS * TILE - 1, vec![]),
         (3 * CHAINS * TILE + 777, vec![0, 5 * TILE, 7 * TILE + 100]),
         (CHAINS * TILE + 40, vec![CHAINS * TILE + 40]),
+        // The last tile is one fixed row (the seed bar's fixed right end); a fixed row ends a
+        // tile.
+        (
+            CHAINS * TILE + TILE,
+            vec![3 * TILE - 1, CHAINS * TILE + TILE],
+        ),
     ] {
         for (beta, uniform) in [(0.0, true), (0.0, false), (0.5, false), (-0.45, false)] {
             let masses = if uniform {

@@ -195,7 +195,8 @@ impl CentralDifferenceKernel for MatrixCentralDifference {
     fn half_step_velocity(&self) -> &[f64] {
         self.half_step_velocity()
     }
-    /// `a^n = M^-1 r^n` at node `i` (kept by CMM and AMM, one row of `M^-1` for RMM).
+    /// `a^n = M^-1 r^n` at node `i` (kept by CMM and AMM with the global factor, one window's
+    /// solve with windows, one row of `M^-1` for RMM).
     fn acceleration_at(&self, _: &Model, i: usize, _: f64) -> f64 {
         self.acceleration_at(i)
     }
