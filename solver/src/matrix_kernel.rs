@@ -347,20 +347,31 @@ impl MatrixCentralDifference {
     pub fn staggered_kinetic_from_mass(&mut self) -> f64 {
         let dt = self.dt;
         self.mass.apply(&self.v, &mut self.scratch);
-        let (v, my) = (&self.v, &self.scratch);
-        if let Some(tiles) = self.mass.windows() {
-            // a = M^-1 r^n window by window, in increasing rows (the sum's order below).
-            let mut sum = 0.0;
-            tiles.for_each_tile(&self.r_previous, &mut self.group, |rows, a| {
-                for (i, ai) in rows.zip(a) {
-                    sum += (v[i] - dt * ai) * my[i];
+        let (v, my, r) = (&self.v, &self.scratch, &self.r_previous);
+        // Sum of (v_i - dt a_i) (M v)_i in increasing i, `a = M^-1 r^n` formed as the step
+        // formed it: window by window, block by block of `M^-1` rows (RMM), or the kept `a`.
+        let mut sum = 0.0;
+        let mut add = |rows: std::ops::Range<usize>, a: &[f64]| {
+            for (i, ai) in rows.zip(a) {
+                sum += (v[i] - dt * ai) * my[i];
+            }
+        };
+        match &self.mass {
+            MassOperator::Reciprocal { inverse, .. } => {
+                let mut a = [0.0; BLOCK];
+                for from in (0..v.len()).step_by(BLOCK) {
+                    let to = (from + BLOCK).min(v.len());
+                    let a = &mut a[..to - from];
+                    apply_rows(&inverse.diag, &inverse.off, r, a, from, to);
+                    add(from..to, a);
                 }
-            });
-            return 0.5 * sum;
+            }
+            mass => match mass.windows() {
+                Some(tiles) => tiles.for_each_tile(r, &mut self.group, add),
+                None => add(0..v.len(), &self.a),
+            },
         }
-        0.5 * (0..v.len())
-            .map(|i| (v[i] - dt * self.acceleration_at(i)) * my[i])
-            .sum::<f64>()
+        0.5 * sum
     }
 }
 
