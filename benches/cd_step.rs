@@ -455,7 +455,7 @@ fn run_loop(c: &mut Criterion) {
 /// The run loop at scale (issue 17, target 1): `Scheme::run` (the shared time loop: the start,
 /// the steps with the energy balance checked every step, the blow-up guard, the work of the
 /// loads, an energy sample at every step as a scene takes them for runs of up to 10^4 steps
-/// (with `T*` recomputed from the mass at every 16th: `MASS_CHECK_EVERY`), no profiles or
+/// (with `T*` recomputed from the mass at every 64th: `MASS_CHECK_EVERY`), no profiles or
 /// histories) on the graded bar of
 /// N = 1e5 (1000 steps) and 1e6 (300 steps) elements, for lumped CD (compare with
 /// `lumped_cd_step/step`, the bare kernel), CMM, AMM(1/2), RMM(1/2) (with `mass_kind_step`, their

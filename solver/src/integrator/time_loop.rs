@@ -371,11 +371,11 @@ impl Ledger<'_> {
 }
 
 /// Energy samples between two recomputations of `T*` from the mass matrix (a solve or product
-/// over the whole bar, a few steps' cost for CMM, AMM and RMM): every 16th sample and the last.
+/// over the whole bar, a few steps' cost for CMM, AMM and RMM): every 64th sample and the last.
 /// The running `T*` is exact per step (its increments are the step's own sums, checked by the
 /// balance at every step); the recomputation checks the mass operator against `M^-1`, whose
-/// round-off accumulates slowly, so a check every 16 samples bounds it at each check.
-pub const MASS_CHECK_EVERY: usize = 16;
+/// round-off accumulates slowly, so a check every 64 samples bounds it at each check.
+pub const MASS_CHECK_EVERY: usize = 64;
 
 /// Log the energies of step `step` when it is a sample (every `energy_every` steps and the
 /// last); `recomputed` gives `T*` recomputed from the mass for steppers that carry it by
