@@ -474,7 +474,7 @@ mod tests {
                 );
                 assert_eq!(&blocked.r_previous, &whole.r_previous);
                 // Every node; with windows (each node's own solve) every 7th and the tile edges.
-                let check = |i: usize| n < CHAINS * TILE || i % 7 == 0 || i % TILE < 2;
+                let check = |i: usize| n < CHAINS * TILE || i.is_multiple_of(7) || i % TILE < 2;
                 for i in (0..=n).filter(|&i| check(i)) {
                     assert_eq!(blocked.acceleration_at(i), whole.a[i], "node {i}");
                 }
