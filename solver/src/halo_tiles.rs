@@ -19,7 +19,7 @@
 //! AMM(1/2) (`q = 0.101`). Fixed nodes are decoupled rows; they only cut the matrix into
 //! blocks, each with the same bound.
 //!
-//! A tile of [`TILE`] rows is solved on a window of `TILE + 2H` rows, `H` (the halo) more on each
+//! A tile of `TILE` (512) rows is solved on a window of `TILE + 2H` rows, `H` (the halo) more on each
 //! side, shifted inward at the bar's ends. The window's solution differs from the whole solution
 //! by the response to the two couplings it cuts, at least `H` rows from any row of the tile:
 //! `|x_i - x~_i| <= C q^H s sqrt(m_cut/m_i) |x_cut|`, `s = |1 - beta|/3` the largest scaled
@@ -32,11 +32,11 @@
 //! Each window is factored once (`L D L^T`, no pivoting: its rows are a principal submatrix of
 //! an SPD matrix); a step runs, per window, the forward recurrence `z_k = r_k - l_{k-1} z_{k-1}`
 //! and the backward one `x_k = z_k / d_k - l_k x_{k+1}`, each a fused multiply-add (one
-//! rounding) per row on a chain of latencies. [`CHAINS`] (16) windows form a group and run
+//! rounding) per row on a chain of latencies. `CHAINS` (16) windows form a group and run
 //! interleaved:
 //! the factors are stored row-major by group (row `k` of the 16 windows side by side), the
 //! residual rows are transposed in 4 x 4 blocks into that layout and the solution back into
-//! window-major order ([`crate::halo_avx2`]). The portable loops do the same arithmetic: the
+//! window-major order (`halo_avx2`). The portable loops do the same arithmetic: the
 //! same bits with or without AVX2.
 
 use crate::tridiagonal::Tridiagonal;
@@ -104,12 +104,13 @@ pub struct HaloTiles {
     /// Fixed (decoupled) rows, ascending: their solution is `+0`.
     fixed: Vec<usize>,
     /// Whether the CPU has AVX2 and FMA (what the intrinsics need).
+    #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
     simd: bool,
 }
 
 /// The work arrays of one group's solve: the rows in group layout and the solution by window.
 #[derive(Debug, Clone, Default)]
-pub struct GroupBuffers {
+pub(crate) struct GroupBuffers {
     /// `window x CHAINS`: row `k` of window `c` at `k * CHAINS + c`.
     rows: Vec<f64>,
     /// `CHAINS x window`: row `k` of window `c` at `c * window + k`.
@@ -118,7 +119,7 @@ pub struct GroupBuffers {
 
 impl HaloTiles {
     /// Tiles for `m` (fixed rows decoupled: unit diagonal, zero couplings, listed in `fixed`)
-    /// with halo `halo` (a multiple of 4 up to `TILE / 2`, from [`halo_rows`]); `None` for any
+    /// with halo `halo` (a multiple of 4 up to `TILE / 2`, from `halo_rows`); `None` for any
     /// other halo, when the matrix is shorter than a group of windows (the global factor is as
     /// fast there) or when a window's factor has a non-positive pivot.
     pub fn new(m: &Tridiagonal, halo: usize, fixed: &[usize]) -> Option<Self> {
@@ -166,7 +167,7 @@ impl HaloTiles {
     }
 
     /// Number of groups of [`CHAINS`] windows.
-    pub fn groups(&self) -> usize {
+    pub(crate) fn groups(&self) -> usize {
         self.lowest.len()
     }
 
@@ -176,20 +177,23 @@ impl HaloTiles {
     }
 
     /// One past the last row of the right-hand side that group `g` reads.
-    pub fn rows_read(&self, g: usize) -> usize {
+    pub(crate) fn rows_read(&self, g: usize) -> usize {
         let starts = &self.starts[g * CHAINS..(g + 1) * CHAINS];
         starts.iter().max().map_or(0, |s| s + self.window)
     }
 
     /// The tiles of group `g`: `(window index c, tile rows)`.
-    pub fn group_tiles(&self, g: usize) -> impl Iterator<Item = (usize, std::ops::Range<usize>)> {
+    pub(crate) fn group_tiles(
+        &self,
+        g: usize,
+    ) -> impl Iterator<Item = (usize, std::ops::Range<usize>)> {
         let (n, first) = (self.n, g * CHAINS);
         (first..self.tiles.min(first + CHAINS))
             .map(move |tile| (tile - first, tile * TILE..((tile + 1) * TILE).min(n)))
     }
 
     /// Work arrays for [`Self::solve_group`].
-    pub fn buffers(&self) -> GroupBuffers {
+    pub(crate) fn buffers(&self) -> GroupBuffers {
         GroupBuffers {
             rows: vec![0.0; self.window * CHAINS],
             solution: vec![0.0; CHAINS * self.window],
@@ -198,9 +202,15 @@ impl HaloTiles {
 
     /// Solve the windows of group `g` for the right-hand side `r` (the whole vector; rows up
     /// to [`Self::rows_read`] are read), `AVX2` with the intrinsics where the CPU has AVX2 and
-    /// FMA (an AVX2-compiled caller inlines them), the portable loops otherwise: the same bits. Afterwards [`Self::tile_solution`] gives each tile's rows.
+    /// FMA (an AVX2-compiled caller inlines them), the portable loops otherwise: the same bits.
+    /// Afterwards [`Self::tile_solution`] gives each tile's rows.
     #[inline(always)]
-    pub fn solve_group<const AVX2: bool>(&self, g: usize, r: &[f64], buffers: &mut GroupBuffers) {
+    pub(crate) fn solve_group<const AVX2: bool>(
+        &self,
+        g: usize,
+        r: &[f64],
+        buffers: &mut GroupBuffers,
+    ) {
         let window = self.window;
         let starts: &[usize; CHAINS] = self.starts[g * CHAINS..(g + 1) * CHAINS]
             .try_into()
@@ -241,7 +251,7 @@ impl HaloTiles {
 
     /// The solution at the rows of the tile in window `c` of the last solved group (`rows` from
     /// [`Self::group_tiles`]).
-    pub fn tile_solution<'b>(
+    pub(crate) fn tile_solution<'b>(
         &self,
         g: usize,
         c: usize,
@@ -265,7 +275,7 @@ impl HaloTiles {
 
     /// Solve `M x = r` group by group and hand each tile's rows and solution to `f`, in
     /// increasing rows.
-    pub fn for_each_tile(
+    pub(crate) fn for_each_tile(
         &self,
         r: &[f64],
         buffers: &mut GroupBuffers,
@@ -281,9 +291,9 @@ impl HaloTiles {
         }
     }
 
-    /// `(M^-1 r)_i` alone: the one window of row `i`'s tile, solved as [`Self::solve_group`]
-    /// solves it (the same operations, so the same bits), the backward sweep stopping at row
-    /// `i`: O(window) work and no allocation.
+    /// `(M^-1 r)_i` alone: the one window of row `i`'s tile, with the operations of the step's
+    /// group solve (so the same bits), the backward sweep stopping at row `i`: O(window) work
+    /// and no allocation.
     pub fn solution_at(&self, i: usize, r: &[f64]) -> f64 {
         assert!(i < self.n && r.len() == self.n, "row {i} of {}", self.n);
         if self.fixed.binary_search(&i).is_ok() {
