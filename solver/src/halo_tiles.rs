@@ -19,9 +19,10 @@
 //! AMM(1/2) (`q = 0.101`). Fixed nodes are decoupled rows; they only cut the matrix into
 //! blocks, each with the same bound.
 //!
-//! A tile of `TILE` (512) rows is solved on a window of `TILE + 2H` rows, `H` (the halo) more on each
-//! side, shifted inward at the bar's ends. The window's solution differs from the whole solution
-//! by the response to the two couplings it cuts, at least `H` rows from any row of the tile:
+//! A tile of `TILE` (512) rows is solved on a window of `TILE + 2H` rows, `H` (the halo) more on
+//! each side, shifted inward at the bar's ends. The window's solution differs from the whole
+//! solution by the response to the two couplings it cuts, at least `H` rows from any row of the
+//! tile:
 //! `|x_i - x~_i| <= C q^H s sqrt(m_cut/m_i) |x_cut|`, `s = |1 - beta|/3` the largest scaled
 //! coupling `M_i,i+1 / sqrt(A_i A_i+1)` and `x_cut` the solution just outside the window. `H` is
 //! the least multiple of 4 with `C q^H <= 2^-66`: with `s = 1/3` (CMM) the truncation stays below

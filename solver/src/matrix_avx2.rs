@@ -3,8 +3,9 @@
 //! increment lanes, and the velocity update with the impulse lanes.
 //!
 //! ```text
-//!   r_i = k_{i+1} (u_{i+1} - u_i) - k_i (u_i - u_{i-1}),   strain[i % 8] += k_{i+1} (u_{i+1} - u_i)^2,
-//!   increment[i % 8] += v_i (r^n_i + r^{n+1}_i);   impulse[i % 8] += a_i r_i,   v_i += dt a_i
+//!   r_i = k_{i+1} (u_{i+1} - u_i) - k_i (u_i - u_{i-1}),
+//!   strain[i % 8] += k_{i+1} (u_{i+1} - u_i)^2,   increment[i % 8] += v_i (r^n_i + r^{n+1}_i),
+//!   impulse[i % 8] += a_i r_i,   v_i += dt a_i
 //! ```
 //!
 //! Same arithmetic as the portable loops, operation for operation (no FMA: each `_mm256_mul_pd`,

@@ -1,9 +1,9 @@
 //! The passes of the blocked matrix-mass step ([`crate::matrix_kernel`]), each over a range of
 //! nodes so that the step can run them block by block: the displacement update, the residual
 //! rows `r = F - K u` with the strain and increment lanes, the rows of the reciprocal mass's
-//! product `a = M^-1 r`, and the velocity update with the impulse lanes. Each forms its values with the
-//! same operations in the same order as the whole-pass step (tested there), so blocking changes
-//! no bit.
+//! product `a = M^-1 r`, and the velocity update with the impulse lanes. Each forms its values
+//! with the same operations in the same order as the whole-pass step (tested there), so
+//! blocking changes no bit.
 
 use crate::kernel::LANES;
 
