@@ -51,13 +51,9 @@ unsafe fn transpose(m: [__m256d; 4]) -> [__m256d; 4] {
 /// The CPU must support AVX2 and FMA.
 #[target_feature(enable = "avx2,fma")]
 pub(crate) unsafe fn solve_windows(
-    factors: &[f64],
-    starts: &[usize; CHAINS],
-    r: &[f64],
-    window: usize,
-    lowest: usize,
-    rows: &mut [f64],
-    solution: &mut [f64],
+    (factors, starts, r): (&[f64], &[usize; CHAINS], &[f64]),
+    (window, lowest): (usize, usize),
+    [rows, solution]: [&mut [f64]; 2],
 ) {
     assert!(window.is_multiple_of(4) && lowest.is_multiple_of(4) && lowest <= window);
     assert!(factors.len() >= 2 * window * CHAINS && rows.len() >= window * CHAINS);

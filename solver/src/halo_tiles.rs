@@ -220,33 +220,22 @@ impl HaloTiles {
         let lowest = self.lowest[g];
         assert!(r.len() >= self.rows_read(g) && buffers.rows.len() == window * CHAINS);
         assert!(buffers.solution.len() == CHAINS * window && window.is_multiple_of(4));
+        let (input, extent) = ((factors, starts, r), (window, lowest));
+        let output = [&mut buffers.rows[..], &mut buffers.solution[..]];
         #[cfg(target_arch = "x86_64")]
-        if AVX2 && self.simd {
+        let simd = AVX2 && self.simd;
+        #[cfg(not(target_arch = "x86_64"))]
+        let simd = false;
+        if simd {
             // SAFETY: `simd` is set only when the CPU reports AVX2 and FMA; the lengths are
             // asserted above.
+            #[cfg(target_arch = "x86_64")]
             unsafe {
-                crate::halo_avx2::solve_windows(
-                    factors,
-                    starts,
-                    r,
-                    window,
-                    lowest,
-                    &mut buffers.rows,
-                    &mut buffers.solution,
-                )
+                crate::halo_avx2::solve_windows(input, extent, output)
             };
-            self.zero_fixed(g, buffers);
-            return;
+        } else {
+            solve_windows_portable(input, extent, output);
         }
-        solve_windows_portable(
-            factors,
-            starts,
-            r,
-            window,
-            lowest,
-            &mut buffers.rows,
-            &mut buffers.solution,
-        );
         self.zero_fixed(g, buffers);
     }
 
@@ -366,13 +355,9 @@ fn has_fma() -> bool {
 /// (one rounding); the operations of
 /// [`crate::halo_avx2::solve_windows`], one lane at a time.
 fn solve_windows_portable(
-    factors: &[f64],
-    starts: &[usize; CHAINS],
-    r: &[f64],
-    window: usize,
-    lowest: usize,
-    rows: &mut [f64],
-    solution: &mut [f64],
+    (factors, starts, r): (&[f64], &[usize; CHAINS], &[f64]),
+    (window, lowest): (usize, usize),
+    [rows, solution]: [&mut [f64]; 2],
 ) {
     let lower = |k: usize, c: usize| factors[2 * k * CHAINS + c];
     let pivot = |k: usize, c: usize| factors[(2 * k + 1) * CHAINS + c];
