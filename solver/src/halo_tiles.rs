@@ -3,7 +3,7 @@
 //! still in cache, and sixteen recurrences run side by side in four AVX2 registers.
 //!
 //! Why a window suffices. The inverse of a banded SPD matrix decays geometrically away from its
-//! diagonal (Demko, Moss and Smith, Math. Comp. 43 (1984) 491-499, Theorem 2.4): for a
+//! diagonal (Demko, Moss and Smith, Math. Comp. 43 (1984) 491-499, the positive definite case): for a
 //! tridiagonal `S` with spectrum in `[a, b]`, `kappa = b/a`,
 //!
 //! ```text
@@ -91,8 +91,6 @@ pub struct HaloTiles {
     n: usize,
     /// Rows of a window, `TILE + 2 H`.
     window: usize,
-    /// Number of tiles, `ceil(n / TILE)`.
-    tiles: usize,
     /// First row of each window, [`CHAINS`] per group (the last group padded with copies of the
     /// last window).
     starts: Vec<usize>,
@@ -104,8 +102,7 @@ pub struct HaloTiles {
     lowest: Vec<usize>,
     /// Fixed (decoupled) rows, ascending: their solution is `+0`.
     fixed: Vec<usize>,
-    /// Whether the CPU has AVX2 and FMA (what the intrinsics need).
-    #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
+    /// Whether the CPU has AVX2 and FMA (what the intrinsics need); always false elsewhere.
     simd: bool,
 }
 
@@ -122,7 +119,8 @@ impl HaloTiles {
     /// Tiles for `m` (fixed rows decoupled: unit diagonal, zero couplings, listed in `fixed`)
     /// with halo `halo` (a multiple of 4 up to `TILE / 2`, from `halo_rows`); `None` for any
     /// other halo, when the matrix is shorter than a group of windows (the global factor is as
-    /// fast there) or when a window's factor has a non-positive pivot.
+    /// fast there) or when it is not positive definite (a pivot of its `L D L^T` factorisation
+    /// is not positive: the caller's global factor then reports it).
     pub fn new(m: &Tridiagonal, halo: usize, fixed: &[usize]) -> Option<Self> {
         let n = m.diag.len();
         let window = TILE + 2 * halo;
@@ -136,6 +134,11 @@ impl HaloTiles {
         let mut factors = vec![0.0; groups * window * 2 * CHAINS];
         let mut lowest = Vec::with_capacity(groups);
         let (mut lower, mut pivot) = (vec![0.0; n], vec![0.0; n]);
+        // Positive definite iff every pivot of the whole factorisation is positive (each window
+        // is then positive definite too, as a principal submatrix).
+        if !crate::partitioned_ldl::factor_rows(m, 0..n, &mut lower, &mut pivot) {
+            return None;
+        }
         for g in 0..groups {
             let mut low = window;
             for c in 0..CHAINS {
@@ -143,10 +146,13 @@ impl HaloTiles {
                 let start = start_of(tile);
                 starts.push(start);
                 low = low.min(tile * TILE - start);
-                let rows = start..start + window;
-                if !crate::partitioned_ldl::factor_rows(m, rows.clone(), &mut lower, &mut pivot) {
-                    return None;
-                }
+                let positive = crate::partitioned_ldl::factor_rows(
+                    m,
+                    start..start + window,
+                    &mut lower,
+                    &mut pivot,
+                );
+                debug_assert!(positive, "a principal submatrix of an SPD matrix is SPD");
                 let group = &mut factors[g * window * 2 * CHAINS..];
                 for k in 0..window {
                     group[2 * k * CHAINS + c] = lower[start + k];
@@ -158,7 +164,6 @@ impl HaloTiles {
         Some(Self {
             n,
             window,
-            tiles,
             starts,
             factors,
             lowest,
@@ -189,7 +194,7 @@ impl HaloTiles {
         g: usize,
     ) -> impl Iterator<Item = (usize, std::ops::Range<usize>)> {
         let (n, first) = (self.n, g * CHAINS);
-        (first..self.tiles.min(first + CHAINS))
+        (first..n.div_ceil(TILE).min(first + CHAINS))
             .map(move |tile| (tile - first, tile * TILE..((tile + 1) * TILE).min(n)))
     }
 
@@ -202,16 +207,10 @@ impl HaloTiles {
     }
 
     /// Solve the windows of group `g` for the right-hand side `r` (the whole vector; rows up
-    /// to [`Self::rows_read`] are read), `AVX2` with the intrinsics where the CPU has AVX2 and
-    /// FMA (an AVX2-compiled caller inlines them), the portable loops otherwise: the same bits.
-    /// Afterwards [`Self::tile_solution`] gives each tile's rows.
-    #[inline(always)]
-    pub(crate) fn solve_group<const AVX2: bool>(
-        &self,
-        g: usize,
-        r: &[f64],
-        buffers: &mut GroupBuffers,
-    ) {
+    /// to [`Self::rows_read`] are read), with the intrinsics where the CPU has AVX2 and FMA,
+    /// the portable loops otherwise: the same bits. Afterwards [`Self::tile_solution`] gives
+    /// each tile's rows.
+    pub(crate) fn solve_group(&self, g: usize, r: &[f64], buffers: &mut GroupBuffers) {
         let window = self.window;
         let starts: &[usize; CHAINS] = self.starts[g * CHAINS..(g + 1) * CHAINS]
             .try_into()
@@ -222,11 +221,7 @@ impl HaloTiles {
         assert!(buffers.solution.len() == CHAINS * window && window.is_multiple_of(4));
         let (input, extent) = ((factors, starts, r), (window, lowest));
         let output = [&mut buffers.rows[..], &mut buffers.solution[..]];
-        #[cfg(target_arch = "x86_64")]
-        let simd = AVX2 && self.simd;
-        #[cfg(not(target_arch = "x86_64"))]
-        let simd = false;
-        if simd {
+        if self.simd {
             // SAFETY: `simd` is set only when the CPU reports AVX2 and FMA; the lengths are
             // asserted above.
             #[cfg(target_arch = "x86_64")]
@@ -271,9 +266,8 @@ impl HaloTiles {
         buffers: &mut GroupBuffers,
         mut f: impl FnMut(std::ops::Range<usize>, &[f64]),
     ) {
-        let avx2 = crate::kernel::has_avx2();
         for g in 0..self.groups() {
-            self.solve_group_dispatched(g, r, buffers, avx2);
+            self.solve_group(g, r, buffers);
             for (c, rows) in self.group_tiles(g) {
                 let solution = self.tile_solution(g, c, &rows, buffers);
                 f(rows, solution);
@@ -305,23 +299,6 @@ impl HaloTiles {
             x = (-lower(k)).mul_add(x, z[k] * pivot(k));
         }
         x
-    }
-
-    /// [`Self::solve_group`] with the intrinsics when `avx2` (the CPU has AVX2).
-    fn solve_group_dispatched(&self, g: usize, r: &[f64], buffers: &mut GroupBuffers, avx2: bool) {
-        #[cfg(target_arch = "x86_64")]
-        if avx2 {
-            // SAFETY: `avx2` is set only when the CPU reports AVX2.
-            return unsafe { self.solve_group_avx2(g, r, buffers) };
-        }
-        let _ = avx2;
-        self.solve_group::<false>(g, r, buffers);
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    fn solve_group_avx2(&self, g: usize, r: &[f64], buffers: &mut GroupBuffers) {
-        self.solve_group::<true>(g, r, buffers);
     }
 
     /// `+0` at the fixed rows of group `g`'s tiles (a decoupled row's window value is its

@@ -217,14 +217,15 @@ impl MassOperator {
                     .enumerate()
                     .filter(|(_, f)| **f)
                     .for_each(|(i, _)| matrix.decouple(i));
-                // The global factor also checks that the whole matrix is positive definite.
-                let factor = matrix.factor_spd().ok_or_else(not_spd)?;
                 let fixed_nodes: Vec<usize> = (0..n).filter(|&i| fixed[i]).collect();
+                // Windows where they apply, else the global factor; either checks that the
+                // whole matrix is positive definite (windows refuse one that is not, and the
+                // global factor then reports it).
                 let solve = match halo_rows(scaled_spectral_ratio(beta))
                     .and_then(|halo| HaloTiles::new(&matrix, halo, &fixed_nodes))
                 {
                     Some(tiles) => TridiagonalSolve::Windows(tiles),
-                    None => TridiagonalSolve::Global(factor),
+                    None => TridiagonalSolve::Global(matrix.factor_spd().ok_or_else(not_spd)?),
                 };
                 MassOperator::Tridiagonal {
                     matrix,

@@ -129,8 +129,7 @@ pub(crate) unsafe fn reciprocal_velocity(
     (diag, off): (&[f64], &[f64]),
     r: &[f64],
     v: &mut [f64],
-    dt: f64,
-    chunks: std::ops::Range<usize>,
+    (dt, chunks): (f64, std::ops::Range<usize>),
     impulse: &mut [f64; LANES],
 ) -> usize {
     let n = diag.len();

@@ -37,8 +37,7 @@ use crate::mass::MassOperator;
 #[cfg(test)]
 use crate::matrix_passes::lane_sums;
 use crate::matrix_passes::{
-    BLOCK, EnergyLanes, ResidualFront, advance, apply_rows, reciprocal_velocity, residual_rows,
-    rows_loads, velocity_lanes,
+    BLOCK, EnergyLanes, ResidualFront, inverse_row, reciprocal_velocity, velocity_lanes,
 };
 
 /// The state a run starts from, after the start procedure.
@@ -146,16 +145,7 @@ impl MatrixCentralDifference {
     pub fn acceleration_at(&self, i: usize) -> f64 {
         match &self.mass {
             MassOperator::Reciprocal { inverse, .. } => {
-                let mut a = [0.0];
-                apply_rows(
-                    &inverse.diag,
-                    &inverse.off,
-                    &self.r_previous,
-                    &mut a,
-                    i,
-                    i + 1,
-                );
-                a[0]
+                inverse_row(&inverse.diag, &inverse.off, &self.r_previous, i)
             }
             mass => match mass.windows() {
                 Some(tiles) => tiles.solution_at(i, &self.r_previous),
@@ -285,15 +275,12 @@ impl MatrixCentralDifference {
         };
         let (dt, n, diag, off) = (*dt, u.len(), &inverse.diag[..], &inverse.off[..]);
         // `a = M^-1 r` is formed in the velocity sweep, not stored (`Self::acceleration_at`
-        // forms it from `r`).
-        let (mut u_done, mut r_done, mut v_done, mut next_load) = (0, 0, 0, 0);
+        // forms it from `r`); the residual runs one row ahead (the product reads it).
+        let mut front = ResidualFront::default();
+        let mut v_done = 0;
         while v_done < n {
             let v_to = (v_done + BLOCK).min(n);
-            let r_to = (v_to + 1).min(n);
-            advance(dt, u, v, &mut u_done, (r_to + 1).min(n));
-            let loads = rows_loads(forces, &mut next_load, r_to);
-            residual_rows::<AVX2>((k, u, v), r, (r_done, r_to), loads, lanes);
-            r_done = r_to;
+            front.advance::<AVX2>(v_to + 1, (dt, k), (u, v), r, forces, lanes);
             let rows = (dt, (v_done, v_to));
             reciprocal_velocity::<AVX2>((diag, off), r, v, rows, &mut lanes.impulse);
             v_done = v_to;
@@ -326,7 +313,7 @@ impl MatrixCentralDifference {
             for g in 0..tiles.groups() {
                 let to = tiles.rows_read(g);
                 front.advance::<AVX2>(to, (dt, k), (u, v), r, forces, lanes);
-                tiles.solve_group::<AVX2>(g, r, group);
+                tiles.solve_group(g, r, group);
                 for (c, rows) in tiles.group_tiles(g) {
                     let solution = tiles.tile_solution(g, c, &rows, group);
                     let (v, r) = (&mut v[rows.clone()], &r[rows]);
@@ -349,7 +336,7 @@ impl MatrixCentralDifference {
         self.mass.apply(&self.v, &mut self.scratch);
         let (v, my, r) = (&self.v, &self.scratch, &self.r_previous);
         // Sum of (v_i - dt a_i) (M v)_i in increasing i, `a = M^-1 r^n` formed as the step
-        // formed it: window by window, block by block of `M^-1` rows (RMM), or the kept `a`.
+        // formed it: window by window, row by row of `M^-1` (RMM), or the kept `a`.
         let mut sum = 0.0;
         let mut add = |rows: std::ops::Range<usize>, a: &[f64]| {
             for (i, ai) in rows.zip(a) {
@@ -358,12 +345,9 @@ impl MatrixCentralDifference {
         };
         match &self.mass {
             MassOperator::Reciprocal { inverse, .. } => {
-                let mut a = [0.0; BLOCK];
-                for from in (0..v.len()).step_by(BLOCK) {
-                    let to = (from + BLOCK).min(v.len());
-                    let a = &mut a[..to - from];
-                    apply_rows(&inverse.diag, &inverse.off, r, a, from, to);
-                    add(from..to, a);
+                let (diag, off) = (&inverse.diag[..], &inverse.off[..]);
+                for i in 0..v.len() {
+                    sum += (v[i] - dt * inverse_row(diag, off, r, i)) * my[i];
                 }
             }
             mass => match mass.windows() {

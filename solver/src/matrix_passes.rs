@@ -10,6 +10,18 @@ use crate::kernel::LANES;
 /// Nodes per block of the blocked step (a multiple of [`LANES`]).
 pub(crate) const BLOCK: usize = 512;
 
+/// The whole chunks of [`LANES`] rows from a multiple of [`LANES`] within `lo..hi` (empty, at
+/// `hi`, when there is none): the rows an AVX2 sweep takes, the rest run one by one.
+#[inline(always)]
+fn lane_chunks(lo: usize, hi: usize) -> std::ops::Range<usize> {
+    let chunks = lo.next_multiple_of(LANES)..hi / LANES * LANES;
+    if chunks.start < chunks.end {
+        chunks
+    } else {
+        hi.max(lo)..hi.max(lo)
+    }
+}
+
 /// `v^{n+3/2} = v^{n+1/2} + dt a^{n+1}` for the nodes of `v` (starting at a multiple of
 /// [`LANES`]), adding `a r` to the impulse lanes; `a` and `r` hold the same nodes as `v` (and
 /// may be longer). `AVX2`: the whole chunks of [`LANES`] nodes run
@@ -100,12 +112,7 @@ pub(crate) fn residual_rows<const AVX2: bool>(
         // Unloaded rows up to the next loaded one: whole chunks of LANES rows from a multiple of
         // LANES with the intrinsics, the rest one by one.
         let end = loads.peek().map_or(hi, |f| f.0.min(hi));
-        let chunks = row.next_multiple_of(LANES)..end / LANES * LANES;
-        let chunks = if chunks.start < chunks.end {
-            chunks
-        } else {
-            end..end
-        };
+        let chunks = lane_chunks(row, end);
         for i in row..chunks.start {
             interior(i, None, r, [&mut strain, &mut increment]);
         }
@@ -153,10 +160,10 @@ pub(crate) fn residual_rows<const AVX2: bool>(
 }
 
 /// The reciprocal mass's velocity rows `from..to` (`from` a multiple of [`LANES`]):
-/// `a_i = (M^-1 r)_i` formed as [`apply_rows`] forms it, `a_i r_i` added to impulse lane
-/// `i % LANES`, then `v_i += dt a_i`: [`apply_rows`] and [`velocity_lanes`] in one sweep, the
-/// same operations (`a` is never stored). `AVX2`: the whole chunks of [`LANES`] interior rows
-/// run [`crate::matrix_avx2::reciprocal_velocity`].
+/// `a_i = (M^-1 r)_i` formed as [`inverse_row`] forms it, `a_i r_i` added to impulse lane
+/// `i % LANES`, then `v_i += dt a_i` (`a` is never stored). `AVX2`: the whole chunks of
+/// [`LANES`] interior rows run [`crate::matrix_avx2::reciprocal_velocity`] (the same
+/// operations).
 #[inline(always)]
 pub(crate) fn reciprocal_velocity<const AVX2: bool>(
     (diag, off): (&[f64], &[f64]),
@@ -167,99 +174,43 @@ pub(crate) fn reciprocal_velocity<const AVX2: bool>(
 ) {
     let n = diag.len();
     let mut product = *impulse;
-    let row = |i: usize, a: f64, v: &mut [f64], product: &mut [f64; LANES]| {
+    let row = |i: usize, v: &mut [f64], product: &mut [f64; LANES]| {
+        let a = inverse_row(diag, off, r, i);
         product[i % LANES] += a * r[i];
         v[i] += dt * a;
     };
-    if n == 1 {
-        if from == 0 {
-            row(0, diag[0] * r[0], v, &mut product);
-        }
-        *impulse = product;
-        return;
-    }
-    if from == 0 && to > 0 {
-        row(0, diag[0] * r[0] + off[0] * r[1], v, &mut product);
-    }
-    let (lo, hi) = (from.max(1), to.min(n - 1));
-    let interior = |i: usize| off[i - 1] * r[i - 1] + diag[i] * r[i] + off[i] * r[i + 1];
-    let chunks = lo.next_multiple_of(LANES)..hi / LANES * LANES;
-    let chunks = if chunks.start < chunks.end {
-        chunks
-    } else {
-        hi.max(lo)..hi.max(lo)
-    };
-    for i in lo..chunks.start {
-        row(i, interior(i), v, &mut product);
-    }
+    // Interior rows (1..n - 1) in whole chunks with the intrinsics; the rest one by one.
+    let chunks = lane_chunks(from.max(1), to.min(n.saturating_sub(1)));
+    (from..chunks.start).for_each(|i| row(i, v, &mut product));
     #[cfg(target_arch = "x86_64")]
     let done = if AVX2 && !chunks.is_empty() {
         // SAFETY: `AVX2` is true only in the step compiled for AVX2, run when the CPU has it.
         unsafe {
-            crate::matrix_avx2::reciprocal_velocity(
-                (diag, off),
-                r,
-                v,
-                dt,
-                chunks.clone(),
-                &mut product,
-            )
+            let rows = (dt, chunks.clone());
+            crate::matrix_avx2::reciprocal_velocity((diag, off), r, v, rows, &mut product)
         }
     } else {
         chunks.start
     };
     #[cfg(not(target_arch = "x86_64"))]
     let done = chunks.start;
-    for i in done..hi {
-        row(i, interior(i), v, &mut product);
-    }
-    if to == n {
-        row(
-            n - 1,
-            off[n - 2] * r[n - 2] + diag[n - 1] * r[n - 1],
-            v,
-            &mut product,
-        );
-    }
+    (done..to).for_each(|i| row(i, v, &mut product));
     *impulse = product;
 }
 
-/// `a[i - from] = (M^-1 r)_i` for rows `from..to` of the symmetric tridiagonal `M^-1` (`diag`,
-/// `off`), each row formed as [`crate::tridiagonal::Tridiagonal::apply`] forms it (same
-/// operations, same order); interior rows as zipped windows, so the loop vectorises.
+/// `(M^-1 r)_i`, row `i` of the symmetric tridiagonal `M^-1` (`diag`, `off`) times `r`, formed
+/// as [`crate::tridiagonal::Tridiagonal::apply`] forms it (same operations, same order).
 #[inline(always)]
-pub(crate) fn apply_rows(
-    diag: &[f64],
-    off: &[f64],
-    r: &[f64],
-    a: &mut [f64],
-    from: usize,
-    to: usize,
-) {
+pub(crate) fn inverse_row(diag: &[f64], off: &[f64], r: &[f64], i: usize) -> f64 {
     let n = diag.len();
-    if from >= to {
-        return;
-    }
     if n == 1 {
-        a[0] = diag[0] * r[0];
-        return;
-    }
-    if from == 0 {
-        a[0] = diag[0] * r[0] + off[0] * r[1];
-    }
-    let (lo, hi) = (from.max(1), to.min(n - 1));
-    if lo < hi {
-        for (((ai, rs), di), os) in a[lo - from..hi - from]
-            .iter_mut()
-            .zip(r[lo - 1..hi + 1].windows(3))
-            .zip(&diag[lo..hi])
-            .zip(off[lo - 1..hi].windows(2))
-        {
-            *ai = os[0] * rs[0] + di * rs[1] + os[1] * rs[2];
-        }
-    }
-    if to == n {
-        a[n - 1 - from] = off[n - 2] * r[n - 2] + diag[n - 1] * r[n - 1];
+        diag[0] * r[0]
+    } else if i == 0 {
+        diag[0] * r[0] + off[0] * r[1]
+    } else if i == n - 1 {
+        off[n - 2] * r[n - 2] + diag[n - 1] * r[n - 1]
+    } else {
+        off[i - 1] * r[i - 1] + diag[i] * r[i] + off[i] * r[i + 1]
     }
 }
 
@@ -272,7 +223,7 @@ pub(crate) struct EnergyLanes {
     pub(crate) impulse: [f64; LANES],
 }
 
-/// How far the CMM/AMM step's first passes have got: `u` advanced to `u_done`, the residual
+/// How far a matrix-mass step's first passes have got: `u` advanced to `u_done`, the residual
 /// (with its loads up to `next_load` and the strain and increment lanes) to row `r_done`.
 #[derive(Debug, Default)]
 pub(crate) struct ResidualFront {
@@ -282,9 +233,9 @@ pub(crate) struct ResidualFront {
 }
 
 impl ResidualFront {
-    /// Advance in blocks of [`BLOCK`] rows (from 0, whatever `to`) until the residual reaches
-    /// row `to` or the end, `u` one node ahead of it (its element forces are formed in
-    /// registers).
+    /// Advance the residual to row `to` (or the end) in blocks of at most [`BLOCK`] rows, `u`
+    /// one node ahead of it (its element forces are formed in registers). Where the blocks
+    /// end changes no bit: every row is formed alike and adds to its own lanes in row order.
     #[inline(always)]
     pub(crate) fn advance<const AVX2: bool>(
         &mut self,
@@ -297,7 +248,7 @@ impl ResidualFront {
     ) {
         let n = u.len();
         while self.r_done < to.min(n) {
-            let (from, r_to) = (self.r_done, (self.r_done + BLOCK).min(n));
+            let (from, r_to) = (self.r_done, (self.r_done + BLOCK).min(to).min(n));
             advance(dt, u, v, &mut self.u_done, (r_to + 1).min(n));
             let block_loads = rows_loads(loads, &mut self.next_load, r_to);
             residual_rows::<AVX2>((k, u, v), r, (from, r_to), block_loads, lanes);
@@ -308,11 +259,7 @@ impl ResidualFront {
 
 /// The loads from `*next` on whose nodes are below `to` (`loads` sorted); `*next` moves past them.
 #[inline(always)]
-pub(crate) fn rows_loads<'f>(
-    loads: &'f [(usize, f64)],
-    next: &mut usize,
-    to: usize,
-) -> &'f [(usize, f64)] {
+fn rows_loads<'f>(loads: &'f [(usize, f64)], next: &mut usize, to: usize) -> &'f [(usize, f64)] {
     let from = *next;
     *next += loads[from..].partition_point(|f| f.0 < to);
     &loads[from..*next]
@@ -320,7 +267,7 @@ pub(crate) fn rows_loads<'f>(
 
 /// `u^{n+1} = u^n + dt v^{n+1/2}` for nodes `*u_done..u_to`; the counter advances.
 #[inline(always)]
-pub(crate) fn advance(dt: f64, u: &mut [f64], v: &[f64], u_done: &mut usize, u_to: usize) {
+fn advance(dt: f64, u: &mut [f64], v: &[f64], u_done: &mut usize, u_to: usize) {
     for (ui, vi) in u[*u_done..u_to].iter_mut().zip(&v[*u_done..u_to]) {
         *ui += dt * vi;
     }

@@ -8,7 +8,8 @@
 //!
 //! Proves: one step of lumped CD (and a block of its steps on one thread; on two threads a
 //! block allocates a fixed few buffers and its thread, never per step), of CD with each
-//! non-diagonal mass (CMM, AMM: partitioned tridiagonal solve; RMM: product with M^-1), of
+//! non-diagonal mass (CMM, AMM: partitioned tridiagonal solve, and windows on a long bar; RMM:
+//! product with M^-1; with a node's acceleration and T* recomputed from the mass), of
 //! Park's scheme (global and local stepping,
 //! both variants), and of the Noh-Bathe stepper with every mass (stepped through the public
 //! `Integrator` interface, as the shared time loop steps it) performs exactly zero heap
@@ -109,11 +110,19 @@ fn every_time_stepping_kernel_steps_without_allocating() {
         "{per_block} allocations per block on two threads"
     );
 
-    for kind in [
-        MassKind::Consistent,
-        MassKind::Averaged { beta: 0.5 },
-        MassKind::Reciprocal { beta: 0.5 },
+    // CMM, AMM and RMM on the 1000-element bar (CMM and AMM: the global factor), and CMM and
+    // AMM on a bar long enough for windows (two groups of 16 x 512 rows), with the mass check
+    // (`staggered_kinetic_from_mass`) and one node's acceleration as a time loop asks for them.
+    let long = graded_seed_bar(2 * 16 * 512).unwrap();
+    for (model, kind) in [
+        (&model, MassKind::Consistent),
+        (&model, MassKind::Averaged { beta: 0.5 }),
+        (&model, MassKind::Reciprocal { beta: 0.5 }),
+        (&long, MassKind::Consistent),
+        (&long, MassKind::Averaged { beta: 0.5 }),
     ] {
+        let n = model.bar().element_count();
+        let element_dt = model.bar().stiffest_element().1;
         let zeros = vec![0.0; n + 1];
         let start = StartState {
             displacement: &zeros,
@@ -124,13 +133,29 @@ fn every_time_stepping_kernel_steps_without_allocating() {
         };
         let operator = MassOperator::new(&model, kind).unwrap();
         let dt = 0.5 * kind.critical_courant() * element_dt;
+        let windows = operator.windows().is_some();
+        assert_eq!(
+            windows,
+            n > 1000,
+            "{}: windows on the long bar only",
+            kind.label()
+        );
         let mut kernel = MatrixCentralDifference::new(dt, model.stiffness(), operator, &start);
         assert_eq!(
             allocations_during(200, || {
                 std::hint::black_box(kernel.step_with_energy(&forces));
+                std::hint::black_box(kernel.acceleration_at(n / 2));
             }),
             0,
-            "{}",
+            "{}, {n} elements",
+            kind.label()
+        );
+        assert_eq!(
+            allocations_during(3, || {
+                std::hint::black_box(kernel.staggered_kinetic_from_mass());
+            }),
+            0,
+            "{}, {n} elements: T* from the mass",
             kind.label()
         );
         assert!(kernel.displacement().iter().all(|u| u.is_finite()));

@@ -377,6 +377,13 @@ impl Ledger<'_> {
 /// round-off accumulates slowly, so a check every 64 samples bounds it at each check.
 pub const MASS_CHECK_EVERY: usize = 64;
 
+/// Whether the energy sample at `step` (a multiple of `energy_every`, or the last step `steps`)
+/// recomputes `T*` from the mass: every [`MASS_CHECK_EVERY`]-th sample (step 0 included) and
+/// the last.
+fn checks_mass(step: usize, steps: usize, energy_every: usize) -> bool {
+    step == steps || (step / energy_every).is_multiple_of(MASS_CHECK_EVERY)
+}
+
 /// Log the energies of step `step` when it is a sample (every `energy_every` steps and the
 /// last); `recomputed` gives `T*` recomputed from the mass for steppers that carry it by
 /// increments, asked at every [`MASS_CHECK_EVERY`]-th sample and the last.
@@ -395,8 +402,7 @@ fn sample_energy(
         return;
     }
     let balance_error = ledger.balance_error(sums);
-    let mass_check =
-        step == steps || (step / request.energy_every).is_multiple_of(MASS_CHECK_EVERY);
+    let mass_check = checks_mass(step, steps, request.energy_every);
     let balance_error = match mass_check.then(recomputed).flatten() {
         Some(from_mass) => balance_error + (from_mass - sums.kinetic_staggered),
         None => balance_error,
@@ -441,5 +447,27 @@ fn diverged<I: Integrator>(
     RunError::Diverged {
         error,
         partial: Box::new(output),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_mass_is_checked_at_every_64th_sample_and_the_last() {
+        // Samples every step, 200 steps: steps 64, 128, 192 and the last, 200.
+        let checked: Vec<usize> = (1..=200).filter(|&s| checks_mass(s, 200, 1)).collect();
+        assert_eq!(checked, [64, 128, 192, 200]);
+        // Samples every 3 steps: the 64th sample is step 192; a run shorter than 64 samples
+        // checks only its last step.
+        let checked: Vec<usize> = (3..=400)
+            .step_by(3)
+            .filter(|&s| checks_mass(s, 400, 3))
+            .collect();
+        assert_eq!(checked, [192, 384]);
+        assert!(checks_mass(400, 400, 3));
+        assert_eq!((1..50).filter(|&s| checks_mass(s, 50, 1)).count(), 0);
+        assert!(checks_mass(50, 50, 1));
     }
 }
