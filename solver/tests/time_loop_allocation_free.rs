@@ -131,7 +131,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
             residual: &zeros,
             kinetic_staggered: 0.0,
         };
-        let operator = MassOperator::new(&model, kind).unwrap();
+        let operator = MassOperator::new(model, kind).unwrap();
         let dt = 0.5 * kind.critical_courant() * element_dt;
         let windows = operator.windows().is_some();
         assert_eq!(
