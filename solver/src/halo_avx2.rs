@@ -1,5 +1,5 @@
-//! The group solve of [`crate::halo_tiles`] in AVX2 intrinsics: sixteen windows' recurrences
-//! in four registers (lane `i` of register `q` is window `4q + i`).
+//! The group solve of [`crate::halo_tiles`] in AVX2 intrinsics: eight windows' recurrences
+//! in two registers (lane `i` of register `q` is window `4q + i`).
 //!
 //! ```text
 //!   forward   z_k = r_k - l_{k-1} z_{k-1}          (z_0 = r_0)       rows 0 .. window
@@ -11,15 +11,17 @@
 //! transposed back four rows at a time. Same arithmetic as the portable loop, operation for
 //! operation: each `a - l b` is one fused multiply-add (`_mm256_fnmadd_pd`, one rounding, as
 //! the portable `(-l).mul_add(b, a)`), `z (1/d)` a product (`_mm256_mul_pd`, as `*`): the same
-//! bits.
+//! bits. A group's shared factors are broadcast to every lane (`_mm256_broadcast_sd`), its
+//! per-window factors loaded four lanes at a time.
 
 use std::arch::x86_64::{
-    __m256d, _mm256_fnmadd_pd, _mm256_loadu_pd, _mm256_mul_pd, _mm256_permute2f128_pd,
-    _mm256_setzero_pd, _mm256_storeu_pd, _mm256_unpackhi_pd, _mm256_unpacklo_pd,
+    __m256d, _mm256_broadcast_sd, _mm256_fnmadd_pd, _mm256_loadu_pd, _mm256_mul_pd,
+    _mm256_permute2f128_pd, _mm256_setzero_pd, _mm256_storeu_pd, _mm256_unpackhi_pd,
+    _mm256_unpacklo_pd,
 };
 
 /// Windows per group (`halo_tiles::CHAINS`; checked at compile time there).
-pub(crate) const CHAINS: usize = 16;
+pub(crate) const CHAINS: usize = 8;
 
 /// Registers of four windows.
 const QUADS: usize = CHAINS / 4;
@@ -42,21 +44,23 @@ unsafe fn transpose(m: [__m256d; 4]) -> [__m256d; 4] {
     }
 }
 
-/// Solve the [`CHAINS`] windows of a group: `factors` (per row `k`: `l_k` of the windows, then
-/// their `1/d_k`), window `c` reading `r[starts[c]..starts[c] + window]`; `rows` receives `z`
-/// in group layout, `solution` the rows `lowest..window` of `x` in window layout
-/// (`solution[c * window + k]`). `window` and `lowest` are multiples of 4.
+/// Solve the [`CHAINS`] windows of a group with their `factors` (`SHARED`: `[l_k, 1/d_k]` per
+/// row for every window; otherwise per row `k` the `l_k` of the windows, then their `1/d_k`),
+/// window `c` reading `r[starts[c]..starts[c] + window]`; `rows` receives `z` in group layout,
+/// `solution` the rows `lowest..window` of `x` in window layout (`solution[c * window + k]`).
+/// `window` and `lowest` are multiples of 4.
 ///
 /// # Safety
 /// The CPU must support AVX2 and FMA.
 #[target_feature(enable = "avx2,fma")]
-pub(crate) unsafe fn solve_windows(
+pub(crate) unsafe fn solve_windows<const SHARED: bool>(
     (factors, starts, r): (&[f64], &[usize; CHAINS], &[f64]),
     (window, lowest): (usize, usize),
     [rows, solution]: [&mut [f64]; 2],
 ) {
+    let lanes = if SHARED { 1 } else { CHAINS };
     assert!(window.is_multiple_of(4) && lowest.is_multiple_of(4) && lowest <= window);
-    assert!(factors.len() >= 2 * window * CHAINS && rows.len() >= window * CHAINS);
+    assert!(factors.len() >= 2 * window * lanes && rows.len() >= window * CHAINS);
     assert!(solution.len() >= CHAINS * window);
     assert!(starts.iter().all(|&s| s + window <= r.len()));
     let (fp, rp) = (factors.as_ptr(), r.as_ptr());
@@ -64,8 +68,15 @@ pub(crate) unsafe fn solve_windows(
     // SAFETY: row offsets below are < window and window offsets < CHAINS, so every index is
     // within the lengths asserted above; loads and stores are unaligned.
     unsafe {
-        let lower = |k: usize, q: usize| _mm256_loadu_pd(fp.add(2 * k * CHAINS + 4 * q));
-        let pivot = |k: usize, q: usize| _mm256_loadu_pd(fp.add((2 * k + 1) * CHAINS + 4 * q));
+        let factor = |at: usize, q: usize| {
+            if SHARED {
+                _mm256_broadcast_sd(&*fp.add(at))
+            } else {
+                _mm256_loadu_pd(fp.add(at * CHAINS + 4 * q))
+            }
+        };
+        let lower = |k: usize, q: usize| factor(2 * k, q);
+        let pivot = |k: usize, q: usize| factor(2 * k + 1, q);
         // Forward, four rows at a time per register (the registers' chains are independent:
         // the core overlaps them).
         let mut z = [_mm256_setzero_pd(); QUADS];

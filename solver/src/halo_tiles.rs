@@ -1,6 +1,6 @@
 //! Tiled solves of an SPD tridiagonal mass (CMM, AMM) on overlapping windows: `M^-1 r` as
 //! independent local solves, so the step can solve each stretch of the bar while its residual is
-//! still in cache, and sixteen recurrences run side by side in four AVX2 registers.
+//! still in cache, and eight recurrences run side by side in two AVX2 registers.
 //!
 //! Why a window suffices. The inverse of a banded SPD matrix decays geometrically away from its
 //! diagonal (Demko, Moss and Smith, Math. Comp. 43 (1984) 491-499, the positive definite case): for a
@@ -33,20 +33,29 @@
 //! Each window is factored once (`L D L^T`, no pivoting: its rows are a principal submatrix of
 //! an SPD matrix); a step runs, per window, the forward recurrence `z_k = r_k - l_{k-1} z_{k-1}`
 //! and the backward one `x_k = z_k / d_k - l_k x_{k+1}`, each a fused multiply-add (one
-//! rounding) per row on a chain of latencies. `CHAINS` (16) windows form a group and run
-//! interleaved:
-//! the factors are stored row-major by group (row `k` of the 16 windows side by side), the
-//! residual rows are transposed in 4 x 4 blocks into that layout and the solution back into
-//! window-major order (`halo_avx2`). The portable loops do the same arithmetic: the
-//! same bits with or without AVX2.
+//! rounding) per row on a chain of latencies. `CHAINS` (8) windows form a group and run
+//! interleaved; the residual rows are transposed in 4 x 4 blocks into group layout (row `k` of
+//! the 8 windows side by side) and the solution back into window-major order (`halo_avx2`).
+//! The portable loops do the same arithmetic: the same bits with or without AVX2.
+//!
+//! **Shared factors.** A window's factors depend only on its rows of the matrix. Where every
+//! window of a group has the same rows, bit for bit (a bar of uniform element mass `rho A h`,
+//! whatever its stiffness), the group uses one set of factors, `2 (TILE + 2H)` values that stay
+//! in L1 and are broadcast to every lane; consecutive such groups with the same rows share one
+//! set. Other groups keep a block of per-window factors in group layout (row `k`: `l_k` of the
+//! 8 windows, then their `1/d_k`). Both give the same bits (the same values enter the same
+//! operations); sharing only removes a stream of 16 B per row from every step (measured in
+//! `benches/RESULTS.md`).
 
 use crate::tridiagonal::Tridiagonal;
 
 /// Rows whose solution a window gives (a multiple of 4 and of [`crate::kernel::LANES`]).
 pub(crate) const TILE: usize = 512;
 
-/// Windows solved side by side (four AVX2 registers of four).
-pub(crate) const CHAINS: usize = 16;
+/// Windows solved side by side (two AVX2 registers of four): with eight, a group's forward
+/// results (`8 (TILE + 2H)` values, 37 KB for CMM) stay in a 48 KB L1 for the backward sweep;
+/// sixteen spilled to L2 and ran slower (benches/RESULTS.md).
+pub(crate) const CHAINS: usize = 8;
 
 // The intrinsics' registers hold these windows.
 #[cfg(target_arch = "x86_64")]
@@ -94,9 +103,13 @@ pub struct HaloTiles {
     /// First row of each window, [`CHAINS`] per group (the last group padded with copies of the
     /// last window).
     starts: Vec<usize>,
-    /// Per group, per window row `k`: `l_k` of the 16 windows, then their `1/d_k` (`l` is 0 at a
-    /// window's last row).
-    factors: Vec<f64>,
+    /// Per group, where its factors are (`l` is 0 at a window's last row).
+    group_factors: Vec<GroupFactors>,
+    /// Factor sets shared by all windows of a group, each `[l_k, 1/d_k]` for `k < window`.
+    shared: Vec<f64>,
+    /// Per-window factors of the other groups, each block row-major by window row `k`: `l_k`
+    /// of the [`CHAINS`] windows, then their `1/d_k`.
+    lanes: Vec<f64>,
     /// Per group, the lowest window row whose solution a tile of the group uses (a multiple of
     /// 4): the backward sweep stops there.
     lowest: Vec<usize>,
@@ -104,6 +117,34 @@ pub struct HaloTiles {
     fixed: Vec<usize>,
     /// Whether the CPU has AVX2 and FMA (what the intrinsics need); always false elsewhere.
     simd: bool,
+}
+
+/// Where a group's factors are (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum GroupFactors {
+    /// One set for every window of the group: offset in `HaloTiles::shared`.
+    Shared(usize),
+    /// One per window, in group layout: offset in `HaloTiles::lanes`.
+    Lanes(usize),
+}
+
+/// A group's factors as the solve reads them: `l_k` of window `c` is `Shared(f)[2 k]` or
+/// `Lanes(f)[2 k CHAINS + c]`, `1/d_k` the next value or the next row of the block.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Factors<'f> {
+    Shared(&'f [f64]),
+    Lanes(&'f [f64]),
+}
+
+impl Factors<'_> {
+    /// `(l_k, 1/d_k)` of window `c`.
+    #[inline(always)]
+    fn row(self, k: usize, c: usize) -> (f64, f64) {
+        match self {
+            Factors::Shared(f) => (f[2 * k], f[2 * k + 1]),
+            Factors::Lanes(f) => (f[2 * k * CHAINS + c], f[(2 * k + 1) * CHAINS + c]),
+        }
+    }
 }
 
 /// The work arrays of one group's solve: the rows in group layout and the solution by window.
@@ -122,6 +163,12 @@ impl HaloTiles {
     /// fast there) or when it is not positive definite (a pivot of its `L D L^T` factorisation
     /// is not positive: the caller's global factor then reports it).
     pub fn new(m: &Tridiagonal, halo: usize, fixed: &[usize]) -> Option<Self> {
+        Self::with_sharing(m, halo, fixed, true)
+    }
+
+    /// [`Self::new`], with factors shared between windows of equal rows or not (`share`; the
+    /// tests compare both).
+    fn with_sharing(m: &Tridiagonal, halo: usize, fixed: &[usize], share: bool) -> Option<Self> {
         let n = m.diag.len();
         let window = TILE + 2 * halo;
         if !halo.is_multiple_of(4) || halo > MAX_HALO || n < CHAINS * TILE || n < window {
@@ -131,7 +178,9 @@ impl HaloTiles {
         let groups = tiles.div_ceil(CHAINS);
         let start_of = |tile: usize| (tile * TILE).saturating_sub(halo).min(n - window);
         let mut starts = Vec::with_capacity(groups * CHAINS);
-        let mut factors = vec![0.0; groups * window * 2 * CHAINS];
+        let (mut shared, mut lanes, mut group_factors) = (Vec::new(), Vec::new(), Vec::new());
+        // The first row of the window whose factors the last shared set holds.
+        let mut shared_from: Option<usize> = None;
         let mut lowest = Vec::with_capacity(groups);
         let (mut lower, mut pivot) = (vec![0.0; n], vec![0.0; n]);
         // Positive definite iff every pivot of the whole factorisation is positive (each window
@@ -139,37 +188,66 @@ impl HaloTiles {
         if !crate::partitioned_ldl::factor_rows(m, 0..n, &mut lower, &mut pivot) {
             return None;
         }
+        // Factor the window at `start` into the scratch rows `start..start + window`.
+        let mut factor = |start: usize| {
+            let rows = start..start + window;
+            let positive = crate::partitioned_ldl::factor_rows(m, rows, &mut lower, &mut pivot);
+            debug_assert!(positive, "a principal submatrix of an SPD matrix is SPD");
+            (
+                lower[start..start + window].to_vec(),
+                pivot[start..start + window].to_vec(),
+            )
+        };
         for g in 0..groups {
-            let mut low = window;
-            for c in 0..CHAINS {
-                let tile = (g * CHAINS + c).min(tiles - 1);
-                let start = start_of(tile);
-                starts.push(start);
-                low = low.min(tile * TILE - start);
-                let positive = crate::partitioned_ldl::factor_rows(
-                    m,
-                    start..start + window,
-                    &mut lower,
-                    &mut pivot,
-                );
-                debug_assert!(positive, "a principal submatrix of an SPD matrix is SPD");
-                let group = &mut factors[g * window * 2 * CHAINS..];
-                for k in 0..window {
-                    group[2 * k * CHAINS + c] = lower[start + k];
-                    group[(2 * k + 1) * CHAINS + c] = pivot[start + k];
-                }
-            }
+            let group_starts: [usize; CHAINS] =
+                std::array::from_fn(|c| start_of((g * CHAINS + c).min(tiles - 1)));
+            let low = (0..CHAINS)
+                .map(|c| (g * CHAINS + c).min(tiles - 1) * TILE - group_starts[c])
+                .min()
+                .unwrap_or(window);
             lowest.push(low / 4 * 4);
+            starts.extend(group_starts);
+            let first = group_starts[0];
+            if share && group_starts.iter().all(|&s| same_rows(m, window, first, s)) {
+                if !shared_from.is_some_and(|from| same_rows(m, window, from, first)) {
+                    shared_from = Some(first);
+                    let (l, p) = factor(first);
+                    shared.extend(l.iter().zip(&p).flat_map(|(&l, &p)| [l, p]));
+                }
+                group_factors.push(GroupFactors::Shared(shared.len() - 2 * window));
+            } else {
+                let offset = lanes.len();
+                lanes.resize(offset + 2 * window * CHAINS, 0.0);
+                for (c, &start) in group_starts.iter().enumerate() {
+                    let (l, p) = factor(start);
+                    for k in 0..window {
+                        lanes[offset + 2 * k * CHAINS + c] = l[k];
+                        lanes[offset + (2 * k + 1) * CHAINS + c] = p[k];
+                    }
+                }
+                group_factors.push(GroupFactors::Lanes(offset));
+            }
         }
         Some(Self {
             n,
             window,
             starts,
-            factors,
+            group_factors,
+            shared,
+            lanes,
             lowest,
             fixed: fixed.to_vec(),
             simd: crate::kernel::has_avx2() && has_fma(),
         })
+    }
+
+    /// The factors of group `g`.
+    fn factors(&self, g: usize) -> Factors<'_> {
+        let span = 2 * self.window;
+        match self.group_factors[g] {
+            GroupFactors::Shared(at) => Factors::Shared(&self.shared[at..at + span]),
+            GroupFactors::Lanes(at) => Factors::Lanes(&self.lanes[at..at + span * CHAINS]),
+        }
     }
 
     /// Number of groups of [`CHAINS`] windows.
@@ -215,7 +293,7 @@ impl HaloTiles {
         let starts: &[usize; CHAINS] = self.starts[g * CHAINS..(g + 1) * CHAINS]
             .try_into()
             .expect("CHAINS starts per group");
-        let factors = &self.factors[g * window * 2 * CHAINS..(g + 1) * window * 2 * CHAINS];
+        let factors = self.factors(g);
         let lowest = self.lowest[g];
         assert!(r.len() >= self.rows_read(g) && buffers.rows.len() == window * CHAINS);
         assert!(buffers.solution.len() == CHAINS * window && window.is_multiple_of(4));
@@ -226,7 +304,11 @@ impl HaloTiles {
             // asserted above.
             #[cfg(target_arch = "x86_64")]
             unsafe {
-                crate::halo_avx2::solve_windows(input, extent, output)
+                use crate::halo_avx2::solve_windows;
+                match input.0 {
+                    Factors::Shared(f) => solve_windows::<true>((f, starts, r), extent, output),
+                    Factors::Lanes(f) => solve_windows::<false>((f, starts, r), extent, output),
+                }
             };
         } else {
             solve_windows_portable(input, extent, output);
@@ -286,9 +368,9 @@ impl HaloTiles {
         let (tile, window) = (i / TILE, self.window);
         let (g, c) = (tile / CHAINS, tile % CHAINS);
         let start = self.starts[g * CHAINS + c];
-        let factors = &self.factors[g * window * 2 * CHAINS..];
-        let lower = |k: usize| factors[2 * k * CHAINS + c];
-        let pivot = |k: usize| factors[(2 * k + 1) * CHAINS + c];
+        let factors = self.factors(g);
+        let lower = |k: usize| factors.row(k, c).0;
+        let pivot = |k: usize| factors.row(k, c).1;
         let mut z = [0.0; TILE + 2 * MAX_HALO];
         z[0] = r[start];
         for k in 1..window {
@@ -332,12 +414,12 @@ fn has_fma() -> bool {
 /// (one rounding); the operations of
 /// [`crate::halo_avx2::solve_windows`], one lane at a time.
 fn solve_windows_portable(
-    (factors, starts, r): (&[f64], &[usize; CHAINS], &[f64]),
+    (factors, starts, r): (Factors, &[usize; CHAINS], &[f64]),
     (window, lowest): (usize, usize),
     [rows, solution]: [&mut [f64]; 2],
 ) {
-    let lower = |k: usize, c: usize| factors[2 * k * CHAINS + c];
-    let pivot = |k: usize, c: usize| factors[(2 * k + 1) * CHAINS + c];
+    let lower = |k: usize, c: usize| factors.row(k, c).0;
+    let pivot = |k: usize, c: usize| factors.row(k, c).1;
     for (c, &start) in starts.iter().enumerate() {
         let mut z = r[start];
         rows[c] = z;
@@ -355,3 +437,12 @@ fn solve_windows_portable(
 
 #[cfg(test)]
 mod tests;
+
+/// Whether the windows starting at rows `a` and `b` have the same rows of `m`, bit for bit (then
+/// they have the same factors).
+fn same_rows(m: &Tridiagonal, window: usize, a: usize, b: usize) -> bool {
+    let bits = |x: &[f64], y: &[f64]| x.iter().zip(y).all(|(x, y)| x.to_bits() == y.to_bits());
+    a == b
+        || (bits(&m.diag[a..a + window], &m.diag[b..b + window])
+            && bits(&m.off[a..a + window - 1], &m.off[b..b + window - 1]))
+}

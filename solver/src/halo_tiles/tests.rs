@@ -146,22 +146,76 @@ fn windows_give_the_global_solution_to_round_off() {
 
 #[test]
 fn intrinsics_and_portable_loops_give_the_same_bits() {
+    // Per-window factors (graded masses) and shared ones (uniform masses).
     let elements = 2 * CHAINS * TILE + 333;
     let fixed = [0, 3 * TILE + 1];
-    let m = mass(&graded_masses(elements), 0.0, &fixed);
-    let intrinsics = HaloTiles::new(&m, 36, &fixed).unwrap();
-    if !intrinsics.simd {
-        return; // no AVX2 and FMA here: only the portable loops run
+    for masses in [graded_masses(elements), vec![0.25; elements]] {
+        let m = mass(&masses, 0.0, &fixed);
+        let intrinsics = HaloTiles::new(&m, 36, &fixed).unwrap();
+        if !intrinsics.simd {
+            return; // no AVX2 and FMA here: only the portable loops run
+        }
+        let portable = HaloTiles {
+            simd: false,
+            ..intrinsics.clone()
+        };
+        let r = right_hand_side(elements + 1);
+        let solve = |tiles: &HaloTiles| {
+            let mut x = r.clone();
+            tiles.solve_in_place(&mut x);
+            x.iter().map(|x| x.to_bits()).collect::<Vec<_>>()
+        };
+        assert_eq!(solve(&portable), solve(&intrinsics));
     }
-    let portable = HaloTiles {
-        simd: false,
-        ..intrinsics.clone()
-    };
-    let r = right_hand_side(elements + 1);
-    let solve = |tiles: &HaloTiles| {
-        let mut x = r.clone();
-        tiles.solve_in_place(&mut x);
-        x.iter().map(|x| x.to_bits()).collect::<Vec<_>>()
-    };
-    assert_eq!(solve(&portable), solve(&intrinsics));
+}
+
+/// Groups whose windows have the same rows share one set of factors: `(shared groups, sets)`.
+fn sharing(tiles: &HaloTiles) -> (usize, usize) {
+    let shared = tiles
+        .group_factors
+        .iter()
+        .filter(|f| matches!(f, GroupFactors::Shared(_)))
+        .count();
+    (shared, tiles.shared.len() / (2 * tiles.window))
+}
+
+#[test]
+fn groups_of_equal_rows_share_their_factors_and_give_the_same_bits() {
+    // Uniform element mass: every group but the first (its first window holds row 0) and the
+    // last (shifted inward, holding the last row) shares one set. Two uniform layers meeting at
+    // a group edge: one set each, the two groups whose windows cross the interface keep their
+    // own. Graded: nothing to share. A fixed row inside a group's windows makes that group
+    // different; the groups after it share the set of the groups before.
+    let groups = 6;
+    let elements = groups * CHAINS * TILE - 100;
+    let layered: Vec<f64> = (0..elements)
+        .map(|e| if e < 3 * CHAINS * TILE { 0.25 } else { 2.0 })
+        .collect();
+    for (masses, fixed, expected) in [
+        (vec![0.25; elements], vec![], (groups - 2, 1)),
+        (layered, vec![], (groups - 4, 2)),
+        (graded_masses(elements), vec![], (0, 0)),
+        (
+            vec![0.25; elements],
+            vec![2 * CHAINS * TILE + 4 * TILE],
+            (groups - 3, 1),
+        ),
+    ] {
+        let m = mass(&masses, 0.0, &fixed);
+        let shared = HaloTiles::with_sharing(&m, 36, &fixed, true).unwrap();
+        let own = HaloTiles::with_sharing(&m, 36, &fixed, false).unwrap();
+        assert_eq!(sharing(&shared), expected, "fixed {fixed:?}");
+        assert_eq!(sharing(&own), (0, 0));
+        let r = right_hand_side(elements + 1);
+        let solve = |tiles: &HaloTiles| {
+            let mut x = r.clone();
+            tiles.solve_in_place(&mut x);
+            x.iter().map(|x| x.to_bits()).collect::<Vec<_>>()
+        };
+        let x = solve(&shared);
+        assert_eq!(x, solve(&own), "fixed {fixed:?}");
+        for i in (0..=elements).step_by(331) {
+            assert_eq!(shared.solution_at(i, &r).to_bits(), x[i], "row {i}");
+        }
+    }
 }
