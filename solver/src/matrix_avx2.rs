@@ -120,13 +120,14 @@ pub(crate) unsafe fn residual_rows(
 /// `1 <= chunks.start`, `chunks.end <= n - 1`) of
 /// [`crate::matrix_passes::reciprocal_velocity`]:
 /// `a_i = (off_{i-1} r_{i-1} + diag_i r_i) + off_i r_{i+1}`, `impulse[i % 8] += a_i r_i`,
-/// `v_i += dt a_i`; returns `chunks.end`.
+/// `v_i += dt a_i`; returns `chunks.end`. `CONSTANT`: every row's `diag_i`, `off_{i-1}` and
+/// `off_i` are `constant` (`[diag, off]`, broadcast; the arrays are not read).
 ///
 /// # Safety
 /// The CPU must support AVX2.
 #[target_feature(enable = "avx2")]
-pub(crate) unsafe fn reciprocal_velocity(
-    (diag, off): (&[f64], &[f64]),
+pub(crate) unsafe fn reciprocal_velocity<const CONSTANT: bool>(
+    ((diag, off), constant): ((&[f64], &[f64]), [f64; 2]),
     r: &[f64],
     v: &mut [f64],
     (dt, chunks): (f64, std::ops::Range<usize>),
@@ -145,18 +146,29 @@ pub(crate) unsafe fn reciprocal_velocity(
             _mm256_loadu_pd(impulse.as_ptr()),
             _mm256_loadu_pd(impulse.as_ptr().add(4)),
         ];
+        let (constant_diag, constant_off) =
+            (_mm256_set1_pd(constant[0]), _mm256_set1_pd(constant[1]));
+        let coefficient = |p: *const f64, i: usize, value| {
+            if CONSTANT {
+                value
+            } else {
+                _mm256_loadu_pd(p.add(i))
+            }
+        };
         let mut base = chunks.start;
         while base < chunks.end {
             for (h, lane) in product.iter_mut().enumerate() {
                 let i = base + 4 * h;
                 let ri = _mm256_loadu_pd(rp.add(i));
                 let left = _mm256_mul_pd(
-                    _mm256_loadu_pd(op.add(i - 1)),
+                    coefficient(op, i - 1, constant_off),
                     _mm256_loadu_pd(rp.add(i - 1)),
                 );
-                let centre = _mm256_mul_pd(_mm256_loadu_pd(dp.add(i)), ri);
-                let right =
-                    _mm256_mul_pd(_mm256_loadu_pd(op.add(i)), _mm256_loadu_pd(rp.add(i + 1)));
+                let centre = _mm256_mul_pd(coefficient(dp, i, constant_diag), ri);
+                let right = _mm256_mul_pd(
+                    coefficient(op, i, constant_off),
+                    _mm256_loadu_pd(rp.add(i + 1)),
+                );
                 let a = _mm256_add_pd(_mm256_add_pd(left, centre), right);
                 *lane = _mm256_add_pd(*lane, _mm256_mul_pd(a, ri));
                 let vi = _mm256_loadu_pd(vp.add(i));

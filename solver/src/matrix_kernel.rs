@@ -37,7 +37,8 @@ use crate::mass::MassOperator;
 #[cfg(test)]
 use crate::matrix_passes::lane_sums;
 use crate::matrix_passes::{
-    BLOCK, EnergyLanes, ResidualFront, inverse_row, reciprocal_velocity, velocity_lanes,
+    BLOCK, EnergyLanes, ResidualFront, constant_blocks, inverse_row, reciprocal_velocity,
+    velocity_lanes,
 };
 
 /// The state a run starts from, after the start procedure.
@@ -73,6 +74,9 @@ pub struct MatrixCentralDifference {
     r_previous: Vec<f64>,
     /// CMM/AMM with windows: one group's work arrays (empty otherwise).
     group: GroupBuffers,
+    /// RMM: per block of [`BLOCK`] rows, `M^-1`'s coefficients where they are constant over
+    /// the block ([`constant_blocks`]; empty otherwise).
+    constant: Vec<Option<[f64; 2]>>,
     scratch: Vec<f64>,
     staggered: f64,
     /// Whether the CPU has AVX2 (the blocked step then runs its AVX2-compiled copy).
@@ -101,6 +105,12 @@ impl MatrixCentralDifference {
         let group = mass
             .windows()
             .map_or_else(GroupBuffers::default, |t| t.buffers());
+        let constant = match &mass {
+            MassOperator::Reciprocal { inverse, .. } => {
+                constant_blocks(&inverse.diag, &inverse.off)
+            }
+            _ => Vec::new(),
+        };
         Self {
             dt,
             stiffness: padded,
@@ -116,6 +126,7 @@ impl MatrixCentralDifference {
             r: Vec::new(),
             r_previous: r0.to_vec(),
             group,
+            constant,
             scratch: vec![0.0; n],
             staggered: staggered0,
             avx2: has_avx2(),
@@ -268,6 +279,7 @@ impl MatrixCentralDifference {
             u,
             v,
             r_previous: r,
+            constant,
             ..
         } = self
         else {
@@ -282,7 +294,8 @@ impl MatrixCentralDifference {
             let v_to = (v_done + BLOCK).min(n);
             front.advance::<AVX2>(v_to + 1, (dt, k), (u, v), r, forces, lanes);
             let rows = (dt, (v_done, v_to));
-            reciprocal_velocity::<AVX2>((diag, off), r, v, rows, &mut lanes.impulse);
+            let coefficients = (diag, off, constant[v_done / BLOCK]);
+            reciprocal_velocity::<AVX2>(coefficients, r, v, rows, &mut lanes.impulse);
             v_done = v_to;
         }
     }

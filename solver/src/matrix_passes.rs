@@ -159,14 +159,36 @@ pub(crate) fn residual_rows<const AVX2: bool>(
     (lanes.strain, lanes.increment) = (strain, increment);
 }
 
+/// Per block of [`BLOCK`] rows (block `b` is rows `b BLOCK..(b + 1) BLOCK`), the coefficients
+/// `[diag, off]` of the symmetric tridiagonal `(diag, off)` where the block's rows read only
+/// those two values, bit for bit (`diag_i` of every row, `off_{i-1}` and `off_i` of every
+/// interior row): a bar of uniform element mass `rho A h` has them away from its ends and fixed
+/// nodes. The sweep then broadcasts them instead of streaming two arrays (the same values enter
+/// the same operations: the same bits).
+pub(crate) fn constant_blocks(diag: &[f64], off: &[f64]) -> Vec<Option<[f64; 2]>> {
+    let n = diag.len();
+    let equal = |x: &[f64]| x.iter().all(|v| v.to_bits() == x[0].to_bits());
+    (0..n.div_ceil(BLOCK))
+        .map(|b| {
+            let (from, to) = (b * BLOCK, ((b + 1) * BLOCK).min(n));
+            // The couplings the rows read: off[from - 1] (row from > 0) to off[to - 1] (row to - 1
+            // < n - 1).
+            let couplings = &off[from.saturating_sub(1)..to.min(n - 1)];
+            let constant = !couplings.is_empty() && equal(&diag[from..to]) && equal(couplings);
+            constant.then(|| [diag[from], couplings[0]])
+        })
+        .collect()
+}
+
 /// The reciprocal mass's velocity rows `from..to` (`from` a multiple of [`LANES`]):
 /// `a_i = (M^-1 r)_i` formed as [`inverse_row`] forms it, `a_i r_i` added to impulse lane
 /// `i % LANES`, then `v_i += dt a_i` (`a` is never stored). `AVX2`: the whole chunks of
 /// [`LANES`] interior rows run [`crate::matrix_avx2::reciprocal_velocity`] (the same
-/// operations).
+/// operations), with the coefficients broadcast where `constant` gives them (the rows' entries
+/// of `diag` and `off`, from [`constant_blocks`]).
 #[inline(always)]
 pub(crate) fn reciprocal_velocity<const AVX2: bool>(
-    (diag, off): (&[f64], &[f64]),
+    (diag, off, constant): (&[f64], &[f64], Option<[f64; 2]>),
     r: &[f64],
     v: &mut [f64],
     (dt, (from, to)): (f64, (usize, usize)),
@@ -187,7 +209,23 @@ pub(crate) fn reciprocal_velocity<const AVX2: bool>(
         // SAFETY: `AVX2` is true only in the step compiled for AVX2, run when the CPU has it.
         unsafe {
             let rows = (dt, chunks.clone());
-            crate::matrix_avx2::reciprocal_velocity((diag, off), r, v, rows, &mut product)
+            let coefficients = (diag, off);
+            match constant {
+                Some(c) => crate::matrix_avx2::reciprocal_velocity::<true>(
+                    (coefficients, c),
+                    r,
+                    v,
+                    rows,
+                    &mut product,
+                ),
+                None => crate::matrix_avx2::reciprocal_velocity::<false>(
+                    (coefficients, [0.0; 2]),
+                    r,
+                    v,
+                    rows,
+                    &mut product,
+                ),
+            }
         }
     } else {
         chunks.start
@@ -290,4 +328,38 @@ pub(crate) fn lane_sums<const K: usize, D: Copy>(
         }
     }
     lanes.map(|lane| lane.iter().sum())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn constant_blocks_are_those_whose_rows_read_one_diagonal_and_one_coupling() {
+        // Uniform interior, half-weight end rows (as an assembled bar's), one odd coupling.
+        let n = 4 * BLOCK + 10;
+        let assembled = |odd: usize| {
+            let mut diag = vec![2.0; n];
+            (diag[0], diag[n - 1]) = (1.0, 1.0);
+            let mut off = vec![0.5; n - 1];
+            off[odd] = 0.25;
+            (diag, off)
+        };
+        let uniform = Some([2.0, 0.5]);
+        // Block 0 holds row 0, the last block row n - 1; the odd coupling inside block 1.
+        let (diag, off) = assembled(BLOCK + 7);
+        assert_eq!(
+            constant_blocks(&diag, &off),
+            [None, None, uniform, uniform, None]
+        );
+        // A coupling read across a block edge: off[2 BLOCK - 1] is row 2 BLOCK - 1's right
+        // coupling and row 2 BLOCK's left one.
+        let (diag, off) = assembled(2 * BLOCK - 1);
+        assert_eq!(
+            constant_blocks(&diag, &off),
+            [None, None, None, uniform, None]
+        );
+        // One node: nothing to broadcast.
+        assert_eq!(constant_blocks(&[1.0], &[]), [None]);
+    }
 }
