@@ -139,8 +139,11 @@ pub enum MassOperator {
     Reciprocal {
         /// `M^-1` with fixed rows and columns zero.
         inverse: Tridiagonal,
-        /// Factor of `C` with fixed nodes decoupled.
-        c_factor: PartitionedLdl,
+        /// How `C y = b` is solved (`C` with fixed nodes decoupled): windows where they apply,
+        /// else the global factor. `C`'s element matrices have lumped-scaled eigenvalue ratios
+        /// 1 and `3/(1 + 2 beta)`, the reciprocals of AMM(beta)'s, so the same spectral ratio
+        /// and halo ([`crate::halo_tiles`]).
+        c_solve: TridiagonalSolve,
         /// Lumped masses `A`.
         lumped: Vec<f64>,
         /// Fixed-node flags.
@@ -171,6 +174,23 @@ fn element_mass(me: f64, beta: f64) -> (f64, f64) {
 fn element_reciprocal(me: f64, beta: f64) -> (f64, f64) {
     let f = me / (2.0 * (1.0 + 2.0 * beta));
     ((2.0 + beta) * f, (beta - 1.0) * f)
+}
+
+/// The solve of the SPD tridiagonal `m` (fixed rows decoupled) whose lumped-scaled spectral
+/// ratio is that of `(1 - beta) CMM + beta LMM`: windows where they apply, else the global
+/// factor; `None` when `m` is not positive definite (windows refuse such a matrix, and the
+/// global factor then reports it).
+fn tridiagonal_solve(
+    m: &Tridiagonal,
+    beta: f64,
+    fixed_nodes: &[usize],
+) -> Option<TridiagonalSolve> {
+    match halo_rows(scaled_spectral_ratio(beta))
+        .and_then(|halo| HaloTiles::new(m, halo, fixed_nodes))
+    {
+        Some(tiles) => Some(TridiagonalSolve::Windows(tiles)),
+        None => m.factor_spd().map(TridiagonalSolve::Global),
+    }
 }
 
 fn assemble(element: &[(f64, f64)]) -> Tridiagonal {
@@ -218,15 +238,7 @@ impl MassOperator {
                     .filter(|(_, f)| **f)
                     .for_each(|(i, _)| matrix.decouple(i));
                 let fixed_nodes: Vec<usize> = (0..n).filter(|&i| fixed[i]).collect();
-                // Windows where they apply, else the global factor; either checks that the
-                // whole matrix is positive definite (windows refuse one that is not, and the
-                // global factor then reports it).
-                let solve = match halo_rows(scaled_spectral_ratio(beta))
-                    .and_then(|halo| HaloTiles::new(&matrix, halo, &fixed_nodes))
-                {
-                    Some(tiles) => TridiagonalSolve::Windows(tiles),
-                    None => TridiagonalSolve::Global(matrix.factor_spd().ok_or_else(not_spd)?),
-                };
+                let solve = tridiagonal_solve(&matrix, beta, &fixed_nodes).ok_or_else(not_spd)?;
                 MassOperator::Tridiagonal {
                     matrix,
                     solve,
@@ -255,10 +267,11 @@ impl MassOperator {
                     inverse.decouple(i);
                     inverse.diag[i] = 0.0;
                 }
-                let c_factor = c.factor_spd().ok_or_else(not_spd)?;
+                let fixed_nodes: Vec<usize> = (0..n).filter(|&i| fixed[i]).collect();
+                let c_solve = tridiagonal_solve(&c, beta, &fixed_nodes).ok_or_else(not_spd)?;
                 MassOperator::Reciprocal {
                     inverse,
-                    c_factor,
+                    c_solve,
                     lumped,
                     fixed,
                 }
@@ -318,6 +331,17 @@ impl MassOperator {
         }
     }
 
+    /// The windowed solve of the reciprocal mass's `C` (its `M v = A C^-1 A v`), if it has one.
+    pub fn reciprocal_windows(&self) -> Option<&HaloTiles> {
+        match self {
+            MassOperator::Reciprocal {
+                c_solve: TridiagonalSolve::Windows(tiles),
+                ..
+            } => Some(tiles),
+            _ => None,
+        }
+    }
+
     /// `y = M v` for a velocity field that vanishes at fixed nodes.
     pub fn apply(&self, v: &[f64], y: &mut [f64]) {
         match self {
@@ -328,7 +352,7 @@ impl MassOperator {
             }
             MassOperator::Tridiagonal { matrix, .. } => matrix.apply(v, y),
             MassOperator::Reciprocal {
-                c_factor,
+                c_solve,
                 lumped,
                 fixed,
                 ..
@@ -336,7 +360,10 @@ impl MassOperator {
                 for i in 0..v.len() {
                     y[i] = if fixed[i] { 0.0 } else { lumped[i] * v[i] };
                 }
-                c_factor.solve_in_place(y);
+                match c_solve {
+                    TridiagonalSolve::Windows(tiles) => tiles.solve_in_place(y),
+                    TridiagonalSolve::Global(factor) => factor.solve_in_place(y),
+                }
                 for i in 0..v.len() {
                     y[i] *= lumped[i];
                 }

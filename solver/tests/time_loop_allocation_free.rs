@@ -110,16 +110,18 @@ fn every_time_stepping_kernel_steps_without_allocating() {
         "{per_block} allocations per block on two threads"
     );
 
-    // CMM, AMM and RMM on the 1000-element bar (CMM and AMM: the global factor), and CMM and
-    // AMM on a bar long enough for windows (two groups of 16 x 512 rows), with the mass check
-    // (`staggered_kinetic_from_mass`) and one node's acceleration as a time loop asks for them.
-    let long = graded_seed_bar(2 * 16 * 512).unwrap();
+    // CMM, AMM and RMM on the 1000-element bar (CMM and AMM: the global factor; RMM's `C` too),
+    // and on a bar long enough for windows (two groups of 8 x 512 rows; RMM's `C` in windows
+    // for its mass check), with the mass check (`staggered_kinetic_from_mass`) and one node's
+    // acceleration as a time loop asks for them.
+    let long = graded_seed_bar(2 * 8 * 512).unwrap();
     for (model, kind) in [
         (&model, MassKind::Consistent),
         (&model, MassKind::Averaged { beta: 0.5 }),
         (&model, MassKind::Reciprocal { beta: 0.5 }),
         (&long, MassKind::Consistent),
         (&long, MassKind::Averaged { beta: 0.5 }),
+        (&long, MassKind::Reciprocal { beta: 0.5 }),
     ] {
         let n = model.bar().element_count();
         let element_dt = model.bar().stiffest_element().1;
@@ -133,7 +135,10 @@ fn every_time_stepping_kernel_steps_without_allocating() {
         };
         let operator = MassOperator::new(model, kind).unwrap();
         let dt = 0.5 * kind.critical_courant() * element_dt;
-        let windows = operator.windows().is_some();
+        let windows = operator
+            .windows()
+            .or(operator.reciprocal_windows())
+            .is_some();
         assert_eq!(
             windows,
             n > 1000,
