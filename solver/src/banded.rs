@@ -69,9 +69,13 @@ impl SymmetricBanded {
         let n = self.order();
         let b = self.bandwidth.max(other.bandwidth);
         let entry = |i: usize, j: usize| self.get(i, j) - x * other.get(i, j);
-        // Rows of L (strictly lower part, by distance from the diagonal) and pivots d.
-        let mut d = vec![0.0; n];
-        let mut l = vec![vec![0.0; b + 1]; n]; // l[i][k] = L[i][i - k], k = 1..=b
+        // Row i of L reads rows and pivots i - b..i only: the last b + 1 rows of L (strictly
+        // lower part, by distance from the diagonal) and pivots d, row r in slot r % (b + 1).
+        // No allocation per row (a bisection calls this many times on long bars).
+        let slots = b + 1;
+        let mut d = vec![0.0; slots];
+        let mut l = vec![0.0; slots * slots]; // L[r][r - k] at (r % slots) * slots + k
+        let at = |r: usize, k: usize| (r % slots) * slots + k;
         let mut count = 0;
         let scale = x.abs().max(f64::MIN_POSITIVE);
         for i in 0..n {
@@ -80,18 +84,18 @@ impl SymmetricBanded {
                 // L[i][j] = (A[i][j] - sum_{m < j, i - m <= b} L[i][m] L[j][m] d[m]) / d[j]
                 let mut s = entry(i, j);
                 for m in i.saturating_sub(b)..j {
-                    s -= l[i][i - m] * l[j][j - m] * d[m];
+                    s -= l[at(i, i - m)] * l[at(j, j - m)] * d[m % slots];
                 }
-                l[i][k] = s / d[j];
+                l[at(i, k)] = s / d[j % slots];
             }
             let mut s = entry(i, i);
             for m in i.saturating_sub(b)..i {
-                s -= l[i][i - m] * l[i][i - m] * d[m];
+                s -= l[at(i, i - m)] * l[at(i, i - m)] * d[m % slots];
             }
             if s == 0.0 {
                 s = -f64::EPSILON * scale;
             }
-            d[i] = s;
+            d[i % slots] = s;
             if s < 0.0 {
                 count += 1;
             }
