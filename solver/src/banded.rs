@@ -10,13 +10,16 @@
 pub use crate::partitioned_ldl::PartitionedLdl;
 pub use crate::tridiagonal::Tridiagonal;
 
-/// Symmetric banded matrix stored by rows: `rows[i][j]` is `A[i][i + j]` for `j = 0..=bandwidth`.
+/// Symmetric banded matrix stored by rows in one array: `A[i][i + j]` at `i (bandwidth + 1) + j`
+/// for `j = 0..=bandwidth`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SymmetricBanded {
     /// Half-bandwidth.
     pub bandwidth: usize,
+    /// Order.
+    order: usize,
     /// Upper band by rows.
-    pub rows: Vec<Vec<f64>>,
+    band: Vec<f64>,
 }
 
 impl SymmetricBanded {
@@ -24,13 +27,14 @@ impl SymmetricBanded {
     pub fn zeros(n: usize, bandwidth: usize) -> Self {
         Self {
             bandwidth,
-            rows: vec![vec![0.0; bandwidth + 1]; n],
+            order: n,
+            band: vec![0.0; n * (bandwidth + 1)],
         }
     }
 
     /// Order.
     pub fn order(&self) -> usize {
-        self.rows.len()
+        self.order
     }
 
     /// `A[i][j]` for `|i - j| <= bandwidth` (0 outside the band).
@@ -39,14 +43,20 @@ impl SymmetricBanded {
         if j - i > self.bandwidth {
             0.0
         } else {
-            self.rows[i][j - i]
+            self.band[i * (self.bandwidth + 1) + j - i]
         }
     }
 
     /// Add `value` to `A[i][j]` (and its mirror).
     pub fn add(&mut self, i: usize, j: usize, value: f64) {
         let (i, j) = if i <= j { (i, j) } else { (j, i) };
-        self.rows[i][j - i] += value;
+        self.band[i * (self.bandwidth + 1) + j - i] += value;
+    }
+
+    /// Set `A[i][j]` (and its mirror) to `value`.
+    pub fn set(&mut self, i: usize, j: usize, value: f64) {
+        let (i, j) = if i <= j { (i, j) } else { (j, i) };
+        self.band[i * (self.bandwidth + 1) + j - i] = value;
     }
 
     /// Largest absolute row sum `max_i sum_j |A_ij|` (bounds the spectral radius).
@@ -70,12 +80,14 @@ impl SymmetricBanded {
         let b = self.bandwidth.max(other.bandwidth);
         let entry = |i: usize, j: usize| self.get(i, j) - x * other.get(i, j);
         // Row i of L reads rows and pivots i - b..i only: the last b + 1 rows of L (strictly
-        // lower part, by distance from the diagonal) and pivots d, row r in slot r % (b + 1).
-        // No allocation per row (a bisection calls this many times on long bars).
-        let slots = b + 1;
+        // lower part, by distance from the diagonal) and pivots d, row r in slot r & mask (a
+        // ring of a power of two >= b + 1 slots). No allocation per row (a bisection calls
+        // this many times on long bars).
+        let slots = (b + 1).next_power_of_two();
+        let mask = slots - 1;
         let mut d = vec![0.0; slots];
-        let mut l = vec![0.0; slots * slots]; // L[r][r - k] at (r % slots) * slots + k
-        let at = |r: usize, k: usize| (r % slots) * slots + k;
+        let mut l = vec![0.0; slots * slots]; // L[r][r - k] at (r & mask) * slots + k
+        let at = |r: usize, k: usize| (r & mask) * slots + k;
         let mut count = 0;
         let scale = x.abs().max(f64::MIN_POSITIVE);
         for i in 0..n {
@@ -84,18 +96,18 @@ impl SymmetricBanded {
                 // L[i][j] = (A[i][j] - sum_{m < j, i - m <= b} L[i][m] L[j][m] d[m]) / d[j]
                 let mut s = entry(i, j);
                 for m in i.saturating_sub(b)..j {
-                    s -= l[at(i, i - m)] * l[at(j, j - m)] * d[m % slots];
+                    s -= l[at(i, i - m)] * l[at(j, j - m)] * d[m & mask];
                 }
-                l[at(i, k)] = s / d[j % slots];
+                l[at(i, k)] = s / d[j & mask];
             }
             let mut s = entry(i, i);
             for m in i.saturating_sub(b)..i {
-                s -= l[at(i, i - m)] * l[at(i, i - m)] * d[m % slots];
+                s -= l[at(i, i - m)] * l[at(i, i - m)] * d[m & mask];
             }
             if s == 0.0 {
                 s = -f64::EPSILON * scale;
             }
-            d[i % slots] = s;
+            d[i & mask] = s;
             if s < 0.0 {
                 count += 1;
             }

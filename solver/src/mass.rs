@@ -405,9 +405,7 @@ impl MassOperator {
             MassOperator::Tridiagonal { matrix, .. } => (k, tridiagonal(matrix)),
             MassOperator::Reciprocal { inverse, .. } => {
                 let mut q = tridiagonal(inverse);
-                (0..n)
-                    .filter(|&i| fixed(i))
-                    .for_each(|i| q.rows[i][0] = 1.0);
+                (0..n).filter(|&i| fixed(i)).for_each(|i| q.set(i, i, 1.0));
                 // P = Q K Q with Q = M^-1 tridiagonal: bandwidth 3.
                 let mut p = SymmetricBanded::zeros(n, 3);
                 for i in 0..n {

@@ -13,9 +13,11 @@ use std::time::Instant;
 /// inconsistent input).
 pub fn run_case(case: &Case) -> Result<CaseRecord, RunError> {
     let started = Instant::now();
+    // The critical steps were computed when the scene was read.
+    let (steps, request) = (case.plan.steps, &case.request);
     let outcome = case
         .integrator
-        .run(&case.model, case.plan.steps, &case.request);
+        .run_with_critical(&case.model, steps, request, case.critical);
     let wall_time = started.elapsed();
     let (output, status) = match outcome {
         Ok(output) => (output, Status::Completed),

@@ -58,6 +58,8 @@ pub(super) fn build(
             // The scheme's own limit on this mesh, once per (scheme, mass), when the Courant
             // numbers are multiples of it (from the exact critical steps of the mass: a Sturm
             // bisection).
+            // The mass's critical steps (a bisection over the whole bar), once per pair.
+            let mut critical_of_mass: Option<CriticalStep> = None;
             let exact_limit = match (stepping.by_courant, stepping.unit) {
                 (true, RawCourantUnit::Exact) => {
                     let operator =
@@ -67,6 +69,7 @@ pub(super) fn build(
                     let critical = CriticalStep::of(&model, mass, &operator).map_err(|e| {
                         src.error(Some(stepping.span.clone()), stepping.key, e.to_string())
                     })?;
+                    critical_of_mass = Some(critical);
                     Some(named.scheme.limit(&model, &critical).dt())
                 }
                 _ => None,
@@ -121,7 +124,11 @@ pub(super) fn build(
                     stability: stepping.stability,
                     scheme: named.scheme.clone(),
                 };
-                let critical = integrator.check_stability(&model).map_err(|e| match &e {
+                let checked = match critical_of_mass {
+                    Some(critical) => integrator.check_stability_given(&model, critical),
+                    None => integrator.check_stability(&model),
+                };
+                let critical = checked.map_err(|e| match &e {
                     courant_solver::RunError::Unstable(u) => {
                         let asked = if stepping.by_courant {
                             format!("courant = {value}")
@@ -149,6 +156,7 @@ pub(super) fn build(
                     }
                     _ => fail(e.to_string()),
                 })?;
+                critical_of_mass = Some(critical);
                 let node_steps = plan.steps as f64 * model.bar().element_count() as f64;
                 if node_steps > MAX_NODE_STEPS {
                     return Err(fail(format!(

@@ -124,12 +124,41 @@ impl Integration {
         self.scheme.limit(model, critical)
     }
 
+    /// [`Self::check_stability`] with the critical steps of the mass already computed (what
+    /// `check_stability` returned for this model and mass, e.g. for another step): the same
+    /// checks without the bisection again.
+    ///
+    /// # Errors
+    /// As [`Self::check_stability`]; [`RunError::Input`] when `critical` is another mass's.
+    pub fn check_stability_given(
+        &self,
+        model: &Model,
+        critical: CriticalStep,
+    ) -> Result<CriticalStep, RunError> {
+        self.scheme.check_settings(self.mass, self.start)?;
+        self.check_step(model, critical)
+    }
+
     fn check_stability_with(
         &self,
         model: &Model,
         operator: &MassOperator,
     ) -> Result<CriticalStep, RunError> {
         let critical = CriticalStep::of(model, self.mass, operator).map_err(InputError::from)?;
+        self.check_step(model, critical)
+    }
+
+    /// Refuse `dt` above the scheme's limit given the mass's critical steps (see
+    /// [`Self::check_stability`]).
+    fn check_step(&self, model: &Model, critical: CriticalStep) -> Result<CriticalStep, RunError> {
+        if critical.mass != self.mass {
+            return Err(InputError::Other(format!(
+                "critical steps of the {} mass given for a run with the {} mass",
+                critical.mass.label(),
+                self.mass.label()
+            ))
+            .into());
+        }
         if self.stability.allow_unstable {
             return Ok(critical);
         }
@@ -168,6 +197,26 @@ impl Integration {
         self.run_assembled(model, steps, request, operator)
     }
 
+    /// [`Self::run`] with the critical steps of the mass already computed (as
+    /// [`Self::check_stability`] returned them for this model and mass; a scene computes them
+    /// when it is read): the same checks and run, without the bisection again.
+    ///
+    /// # Errors
+    /// As [`Self::run`]; [`RunError::Input`] when `critical` is another mass's.
+    pub fn run_with_critical(
+        &self,
+        model: &Model,
+        steps: usize,
+        request: &OutputRequest,
+        critical: CriticalStep,
+    ) -> Result<RunOutput, RunError> {
+        crate::mesh::positive("dt", self.dt)?;
+        validate_request(model, steps, request)?;
+        self.check_stability_given(model, critical)?;
+        let operator = MassOperator::new(model, self.mass)?;
+        self.run_assembled(model, steps, request, operator)
+    }
+
     /// The time loop of [`Self::run`] with the mass already assembled (`MassOperator::new(model,
     /// self.mass)`) and the request and step already checked: what the benchmarks time, the
     /// assembly and the critical step left out.
@@ -202,5 +251,55 @@ pub fn lumped_only(scheme: &str, mass: MassKind) -> Result<(), InputError> {
             "{scheme} runs with the lumped mass only, not {}",
             mass.label()
         )))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{CentralDifference, MassKind, RunError};
+
+    /// CMM central difference at `courant` times the element estimate of its limit.
+    fn consistent(model: &Model, courant: f64) -> Integration {
+        let mass = MassKind::Consistent;
+        let element_dt = model.bar().stiffest_element().1;
+        CentralDifference {
+            mass,
+            ..CentralDifference::new(courant * mass.critical_courant() * element_dt)
+        }
+        .integration()
+    }
+
+    #[test]
+    fn given_critical_steps_check_and_run_as_the_computed_ones() {
+        let model = crate::fixtures::graded_seed_bar(200).unwrap();
+        let stable = consistent(&model, 0.5);
+        let critical = stable.check_stability(&model).unwrap();
+        assert_eq!(
+            stable.check_stability_given(&model, critical).unwrap(),
+            critical
+        );
+        let request = OutputRequest::default();
+        let run = stable.run(&model, 50, &request).unwrap();
+        let given = stable
+            .run_with_critical(&model, 50, &request, critical)
+            .unwrap();
+        assert_eq!(given, run);
+        // Above the limit: the same refusal as with the bisection.
+        let unstable = consistent(&model, 1.2);
+        let computed = unstable.check_stability(&model).unwrap_err();
+        let checked = unstable
+            .check_stability_given(&model, critical)
+            .unwrap_err();
+        assert!(matches!(checked, RunError::Unstable(_)));
+        assert_eq!(checked.to_string(), computed.to_string());
+        // Another mass's critical steps are refused.
+        let lumped = CentralDifference::new(stable.dt).integration();
+        let refused = lumped.check_stability_given(&model, critical).unwrap_err();
+        assert!(matches!(refused, RunError::Input(_)), "{refused}");
+        assert_eq!(
+            refused.to_string(),
+            "critical steps of the cmm mass given for a run with the lmm mass"
+        );
     }
 }
