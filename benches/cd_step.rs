@@ -146,12 +146,37 @@ fn lumped_cd_block(c: &mut Criterion) {
     group.finish();
 }
 
+/// The matrix-mass step of `kind` on `model` at half its critical Courant number, from rest with
+/// the smooth half-step velocity.
+fn matrix_step(
+    model: &courant_solver::Model,
+    kind: courant_solver::MassKind,
+) -> courant_solver::matrix_kernel::MatrixCentralDifference {
+    let n = model.bar().element_count();
+    let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
+    let operator = courant_solver::MassOperator::new(model, kind).unwrap();
+    let (v_half, zeros) = (smooth_half_velocity(n), vec![0.0; n + 1]);
+    let start = courant_solver::matrix_kernel::StartState {
+        displacement: &zeros,
+        half_step_velocity: &v_half,
+        acceleration: &zeros,
+        residual: &zeros,
+        kinetic_staggered: 0.0,
+    };
+    courant_solver::matrix_kernel::MatrixCentralDifference::new(
+        dt,
+        model.stiffness(),
+        operator,
+        &start,
+    )
+}
+
 /// One run step (with energies, as runs take it) per mass kind on the graded bar, N = 1e3, 1e5, 1e6, at half
-/// of each kind's critical Courant number. Targets: issue 3, RMM within 2x of LMM, CMM and AMM
+/// of each kind's critical Courant number, and CMM on a bar of graded density too (each window
+/// with its own factors). Targets: issue 3, RMM within 2x of LMM, CMM and AMM
 /// within 3x; issue 17 (target 3), each within 1.5x at N = 1e5 and 1e6 (benches/RESULTS.md).
 fn mass_kind_step(c: &mut Criterion) {
-    use courant_solver::matrix_kernel::MatrixCentralDifference;
-    use courant_solver::{MassKind, MassOperator};
+    use courant_solver::MassKind;
     let forces = [(0usize, 1.0f64)];
     let mut group = c.benchmark_group("mass_kind_step");
     group
@@ -166,34 +191,8 @@ fn mass_kind_step(c: &mut Criterion) {
             b.iter(|| lumped.step_with_energy(black_box(&forces)))
         });
         assert_finite(&lumped);
-        for kind in [
-            MassKind::Consistent,
-            MassKind::Averaged { beta: 0.5 },
-            MassKind::Reciprocal { beta: 0.5 },
-        ] {
-            let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
-            let operator = MassOperator::new(&model, kind).unwrap();
-            let v_half = smooth_half_velocity(n);
-            let zeros = vec![0.0; n + 1];
-            let start = courant_solver::matrix_kernel::StartState {
-                displacement: &zeros,
-                half_step_velocity: &v_half,
-                acceleration: &zeros,
-                residual: &zeros,
-                kinetic_staggered: 0.0,
-            };
-            let mut kernel = MatrixCentralDifference::new(dt, model.stiffness(), operator, &start);
-            let name = kind.label().replace(['(', ')'], "");
-            group.bench_function(BenchmarkId::new(name, n), |b| {
-                b.iter(|| kernel.step_with_energy(black_box(&forces)))
-            });
-            assert!(
-                kernel.displacement().iter().all(|x| x.is_finite()),
-                "{kind:?} blew up"
-            );
-        }
-        // CMM on the bar with its density graded too (4 to 1): every window's rows differ, so
-        // each keeps its own factors (`halo_tiles`), streamed every step.
+        // CMM also on the bar with its density graded too (4 to 1): every window's rows differ,
+        // so each keeps its own factors (`halo_tiles`), streamed every step.
         let graded_density = courant_solver::Model::unloaded(
             courant_solver::Bar::new(
                 courant_solver::Mesh::uniform(1.0, n).unwrap(),
@@ -210,23 +209,21 @@ fn mass_kind_step(c: &mut Criterion) {
             .unwrap(),
             courant_solver::Supports::FREE_FIXED,
         );
-        let kind = MassKind::Consistent;
-        let dt = 0.5 * kind.critical_courant() * graded_density.bar().stiffest_element().1;
-        let operator = MassOperator::new(&graded_density, kind).unwrap();
-        let (v_half, zeros) = (smooth_half_velocity(n), vec![0.0; n + 1]);
-        let start = courant_solver::matrix_kernel::StartState {
-            displacement: &zeros,
-            half_step_velocity: &v_half,
-            acceleration: &zeros,
-            residual: &zeros,
-            kinetic_staggered: 0.0,
-        };
-        let stiffness = graded_density.stiffness();
-        let mut kernel = MatrixCentralDifference::new(dt, stiffness, operator, &start);
-        group.bench_function(BenchmarkId::new("cmm-graded-density", n), |b| {
-            b.iter(|| kernel.step_with_energy(black_box(&forces)))
-        });
-        assert!(kernel.displacement().iter().all(|x| x.is_finite()));
+        for (name, model, kind) in [
+            ("cmm", &model, MassKind::Consistent),
+            ("amm0.5", &model, MassKind::Averaged { beta: 0.5 }),
+            ("rmm0.5", &model, MassKind::Reciprocal { beta: 0.5 }),
+            ("cmm-graded-density", &graded_density, MassKind::Consistent),
+        ] {
+            let mut kernel = matrix_step(model, kind);
+            group.bench_function(BenchmarkId::new(name, n), |b| {
+                b.iter(|| kernel.step_with_energy(black_box(&forces)))
+            });
+            assert!(
+                kernel.displacement().iter().all(|x| x.is_finite()),
+                "{kind:?} blew up"
+            );
+        }
     }
     group.finish();
 }
