@@ -189,14 +189,10 @@ impl HaloTiles {
             return None;
         }
         // Factor the window at `start` into the scratch rows `start..start + window`.
-        let mut factor = |start: usize| {
+        let factor = |start: usize, lower: &mut [f64], pivot: &mut [f64]| {
             let rows = start..start + window;
-            let positive = crate::partitioned_ldl::factor_rows(m, rows, &mut lower, &mut pivot);
+            let positive = crate::partitioned_ldl::factor_rows(m, rows, lower, pivot);
             debug_assert!(positive, "a principal submatrix of an SPD matrix is SPD");
-            (
-                lower[start..start + window].to_vec(),
-                pivot[start..start + window].to_vec(),
-            )
         };
         for g in 0..groups {
             let group_starts: [usize; CHAINS] =
@@ -211,18 +207,19 @@ impl HaloTiles {
             if share && group_starts.iter().all(|&s| same_rows(m, window, first, s)) {
                 if !shared_from.is_some_and(|from| same_rows(m, window, from, first)) {
                     shared_from = Some(first);
-                    let (l, p) = factor(first);
-                    shared.extend(l.iter().zip(&p).flat_map(|(&l, &p)| [l, p]));
+                    factor(first, &mut lower, &mut pivot);
+                    let rows = first..first + window;
+                    shared.extend(rows.flat_map(|i| [lower[i], pivot[i]]));
                 }
                 group_factors.push(GroupFactors::Shared(shared.len() - 2 * window));
             } else {
                 let offset = lanes.len();
                 lanes.resize(offset + 2 * window * CHAINS, 0.0);
                 for (c, &start) in group_starts.iter().enumerate() {
-                    let (l, p) = factor(start);
+                    factor(start, &mut lower, &mut pivot);
                     for k in 0..window {
-                        lanes[offset + 2 * k * CHAINS + c] = l[k];
-                        lanes[offset + (2 * k + 1) * CHAINS + c] = p[k];
+                        lanes[offset + 2 * k * CHAINS + c] = lower[start + k];
+                        lanes[offset + (2 * k + 1) * CHAINS + c] = pivot[start + k];
                     }
                 }
                 group_factors.push(GroupFactors::Lanes(offset));
@@ -435,9 +432,6 @@ fn solve_windows_portable(
     }
 }
 
-#[cfg(test)]
-mod tests;
-
 /// Whether the windows starting at rows `a` and `b` have the same rows of `m`, bit for bit (then
 /// they have the same factors).
 fn same_rows(m: &Tridiagonal, window: usize, a: usize, b: usize) -> bool {
@@ -446,3 +440,6 @@ fn same_rows(m: &Tridiagonal, window: usize, a: usize, b: usize) -> bool {
         || (bits(&m.diag[a..a + window], &m.diag[b..b + window])
             && bits(&m.off[a..a + window - 1], &m.off[b..b + window - 1]))
 }
+
+#[cfg(test)]
+mod tests;

@@ -342,6 +342,28 @@ impl MassOperator {
         }
     }
 
+    /// RMM: `y = A v` (0 at fixed nodes), the right-hand side of `C x = A v` in
+    /// `M v = A C^-1 A v`; nothing for the other masses.
+    pub(crate) fn lumped_scaled(&self, v: &[f64], y: &mut [f64]) {
+        if let MassOperator::Reciprocal { lumped, fixed, .. } = self {
+            for i in 0..v.len() {
+                y[i] = if fixed[i] { 0.0 } else { lumped[i] * v[i] };
+            }
+        }
+    }
+
+    /// RMM: `x <- C^-1 x` with `C`'s windows or global factor (the windows allocate their
+    /// copy of `x` here; the step's mass check uses them tile by tile instead); nothing for the
+    /// other masses.
+    pub(crate) fn solve_reciprocal_in_place(&self, x: &mut [f64]) {
+        if let MassOperator::Reciprocal { c_solve, .. } = self {
+            match c_solve {
+                TridiagonalSolve::Windows(tiles) => tiles.solve_in_place(x),
+                TridiagonalSolve::Global(factor) => factor.solve_in_place(x),
+            }
+        }
+    }
+
     /// `y = M v` for a velocity field that vanishes at fixed nodes.
     pub fn apply(&self, v: &[f64], y: &mut [f64]) {
         match self {
@@ -351,19 +373,9 @@ impl MassOperator {
                 }
             }
             MassOperator::Tridiagonal { matrix, .. } => matrix.apply(v, y),
-            MassOperator::Reciprocal {
-                c_solve,
-                lumped,
-                fixed,
-                ..
-            } => {
-                for i in 0..v.len() {
-                    y[i] = if fixed[i] { 0.0 } else { lumped[i] * v[i] };
-                }
-                match c_solve {
-                    TridiagonalSolve::Windows(tiles) => tiles.solve_in_place(y),
-                    TridiagonalSolve::Global(factor) => factor.solve_in_place(y),
-                }
+            MassOperator::Reciprocal { lumped, .. } => {
+                self.lumped_scaled(v, y);
+                self.solve_reciprocal_in_place(y);
                 for i in 0..v.len() {
                     y[i] *= lumped[i];
                 }

@@ -345,51 +345,43 @@ impl MatrixCentralDifference {
     /// solve): compared with the running `T*` it checks `M^-1` against `M`.
     pub fn staggered_kinetic_from_mass(&mut self) -> f64 {
         let dt = self.dt;
-        // RMM with windows for `C`: `M v = A C^-1 A v` tile by tile, consumed as it comes.
-        if let (
-            MassOperator::Reciprocal {
-                inverse,
-                lumped,
-                fixed,
-                ..
-            },
-            Some(tiles),
-        ) = (&self.mass, self.mass.reciprocal_windows())
+        let (v, r) = (&self.v, &self.r_previous);
+        // Sum of (v_i - dt a_i) (M v)_i in increasing i, `a = M^-1 r^n` formed as the step
+        // formed it: row by row of `M^-1` (RMM), window by window, or the kept `a`.
+        let mut sum = 0.0;
+        if let MassOperator::Reciprocal {
+            inverse, lumped, ..
+        } = &self.mass
         {
-            let (v, r, scaled) = (&self.v, &self.r_previous, &mut self.scratch);
-            for i in 0..v.len() {
-                scaled[i] = if fixed[i] { 0.0 } else { lumped[i] * v[i] };
-            }
+            // `M v = A C^-1 A v`: `C^-1 A v` tile by tile with windows (consumed as it comes,
+            // no second array), else from the global factor.
             let (diag, off) = (&inverse.diag[..], &inverse.off[..]);
-            let mut sum = 0.0;
-            tiles.for_each_tile(scaled, &mut self.group, |rows, x| {
+            let mut add = |rows: std::ops::Range<usize>, x: &[f64]| {
                 for (i, xi) in rows.zip(x) {
                     sum += (v[i] - dt * inverse_row(diag, off, r, i)) * (xi * lumped[i]);
                 }
-            });
+            };
+            let scaled = &mut self.scratch;
+            self.mass.lumped_scaled(v, scaled);
+            match self.mass.reciprocal_windows() {
+                Some(tiles) => tiles.for_each_tile(scaled, &mut self.group, add),
+                None => {
+                    self.mass.solve_reciprocal_in_place(scaled);
+                    add(0..v.len(), scaled);
+                }
+            }
             return 0.5 * sum;
         }
-        self.mass.apply(&self.v, &mut self.scratch);
-        let (v, my, r) = (&self.v, &self.scratch, &self.r_previous);
-        // Sum of (v_i - dt a_i) (M v)_i in increasing i, `a = M^-1 r^n` formed as the step
-        // formed it: window by window, row by row of `M^-1` (RMM), or the kept `a`.
-        let mut sum = 0.0;
+        self.mass.apply(v, &mut self.scratch);
+        let my = &self.scratch;
         let mut add = |rows: std::ops::Range<usize>, a: &[f64]| {
             for (i, ai) in rows.zip(a) {
                 sum += (v[i] - dt * ai) * my[i];
             }
         };
-        match &self.mass {
-            MassOperator::Reciprocal { inverse, .. } => {
-                let (diag, off) = (&inverse.diag[..], &inverse.off[..]);
-                for i in 0..v.len() {
-                    sum += (v[i] - dt * inverse_row(diag, off, r, i)) * my[i];
-                }
-            }
-            mass => match mass.windows() {
-                Some(tiles) => tiles.for_each_tile(r, &mut self.group, add),
-                None => add(0..v.len(), &self.a),
-            },
+        match self.mass.windows() {
+            Some(tiles) => tiles.for_each_tile(r, &mut self.group, add),
+            None => add(0..v.len(), &self.a),
         }
         0.5 * sum
     }

@@ -55,11 +55,10 @@ pub(super) fn build(
             .iter()
             .flat_map(|s| stepping.masses.iter().map(move |m| (s, m)))
         {
-            // The scheme's own limit on this mesh, once per (scheme, mass), when the Courant
-            // numbers are multiples of it (from the exact critical steps of the mass: a Sturm
-            // bisection).
-            // The mass's critical steps (a bisection over the whole bar), once per pair.
+            // The mass's critical steps (a Sturm bisection over the whole bar), computed once per
+            // (scheme, mass) and given to every case's check and run.
             let mut critical_of_mass: Option<CriticalStep> = None;
+            // The scheme's own limit on this mesh, when the Courant numbers are multiples of it.
             let exact_limit = match (stepping.by_courant, stepping.unit) {
                 (true, RawCourantUnit::Exact) => {
                     let operator =
