@@ -346,8 +346,9 @@ impl MassOperator {
     /// `M v = A C^-1 A v`; nothing for the other masses.
     pub(crate) fn lumped_scaled(&self, v: &[f64], y: &mut [f64]) {
         if let MassOperator::Reciprocal { lumped, fixed, .. } = self {
-            for i in 0..v.len() {
-                y[i] = if fixed[i] { 0.0 } else { lumped[i] * v[i] };
+            let rows = (y.iter_mut().zip(v)).zip(lumped.iter().zip(fixed));
+            for ((y, v), (m, fixed)) in rows {
+                *y = if *fixed { 0.0 } else { m * v };
             }
         }
     }

@@ -90,12 +90,11 @@ pub(crate) fn half_step_start(state: &InitialState<'_>) -> (Vec<f64>, f64) {
         .collect();
     let mut m_times = vec![0.0; v0.len()];
     state.mass.apply(&v_half, &mut m_times);
-    let v_before: Vec<f64> = (0..v0.len()).map(|i| v_half[i] - dt * a0[i]).collect();
+    // `v^{-1/2}_i (M v^{1/2})_i` summed in increasing i, `v^{-1/2}` formed as it is read.
     let staggered = 0.5
-        * v_before
-            .iter()
+        * (v_half.iter().zip(a0))
             .zip(&m_times)
-            .map(|(a, b)| a * b)
+            .map(|((v, a), m)| (v - dt * a) * m)
             .sum::<f64>();
     (v_half, staggered)
 }
@@ -179,12 +178,12 @@ impl CentralDifferenceKernel for MatrixCentralDifference {
     fn build(state: InitialState<'_>, half_step_velocity: Vec<f64>, staggered0: f64) -> Self {
         let start = StartState {
             displacement: state.displacement,
-            half_step_velocity: &half_step_velocity,
+            half_step_velocity,
             acceleration: state.acceleration,
             residual: state.residual,
             kinetic_staggered: staggered0,
         };
-        Self::new(state.dt, state.model.stiffness(), state.mass, &start)
+        Self::new(state.dt, state.model.stiffness(), state.mass, start)
     }
     fn dt(&self) -> f64 {
         self.dt()
