@@ -158,7 +158,7 @@ fn matrix_step(
     let (v_half, zeros) = (smooth_half_velocity(n), vec![0.0; n + 1]);
     let start = courant_solver::matrix_kernel::StartState {
         displacement: &zeros,
-        half_step_velocity: v_half,
+        half_step_velocity: &v_half,
         acceleration: &zeros,
         residual: &zeros,
         kinetic_staggered: 0.0,
@@ -167,7 +167,7 @@ fn matrix_step(
         dt,
         model.stiffness(),
         operator,
-        start,
+        &start,
     )
 }
 

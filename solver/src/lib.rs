@@ -52,6 +52,7 @@ pub mod model;
 pub mod output;
 pub mod park;
 pub mod partitioned_ldl;
+mod placed_arrays;
 pub mod schemes;
 pub mod spectrum;
 pub mod stability;

@@ -40,14 +40,15 @@ use crate::matrix_passes::{
     BLOCK, EnergyLanes, ResidualFront, constant_blocks, interior_row, inverse_row,
     reciprocal_velocity, velocity_lanes,
 };
+use crate::placed_arrays::PlacedArrays;
 
 /// The state a run starts from, after the start procedure.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Copy)]
 pub struct StartState<'a> {
     /// `u^0`.
     pub displacement: &'a [f64],
-    /// `v^{1/2}` (taken: the kernel keeps it as its velocity, no copy).
-    pub half_step_velocity: Vec<f64>,
+    /// `v^{1/2}`.
+    pub half_step_velocity: &'a [f64],
     /// `a^0 = M^-1 r^0`.
     pub acceleration: &'a [f64],
     /// `r^0 = F^0 - K u^0`.
@@ -56,22 +57,25 @@ pub struct StartState<'a> {
     pub kinetic_staggered: f64,
 }
 
+/// Where `u`, `v` and `r^n` are in [`MatrixCentralDifference`]'s state (the padded
+/// stiffnesses are the fourth array).
+const U: usize = 0;
+const V: usize = 1;
+const R: usize = 2;
+
 /// Central difference with a tridiagonal mass or inverse mass.
 #[derive(Debug, Clone)]
 pub struct MatrixCentralDifference {
     dt: f64,
-    /// Element stiffnesses padded with a zero at both ends (length N + 2).
-    stiffness: Vec<f64>,
+    /// The arrays every step streams, placed apart in their pages ([`PlacedArrays`]): `u`, `v`,
+    /// `r^n` (the residual of the last step) and the element stiffnesses padded with a zero at
+    /// both ends (length N + 2 for N elements), at [`U`], [`V`], [`R`] and 3.
+    state: PlacedArrays<4>,
     mass: MassOperator,
-    u: Vec<f64>,
-    v: Vec<f64>,
     a: Vec<f64>,
-    /// Scratch of the whole-pass reference step (the blocked step overwrites `r_previous` in
-    /// place).
+    /// Scratch of the whole-pass reference step (the blocked step overwrites `r^n` in place).
     #[cfg(test)]
     r: Vec<f64>,
-    /// `r^n`: the residual of the last step.
-    r_previous: Vec<f64>,
     /// CMM/AMM with windows: one group's work arrays (empty otherwise).
     group: GroupBuffers,
     /// RMM: per block of [`BLOCK`] rows, `M^-1`'s coefficients where they are constant over
@@ -89,14 +93,14 @@ impl MatrixCentralDifference {
     /// reciprocal mass or a windowed solve `a^0` is not kept: [`Self::acceleration_at`] forms
     /// `(M^-1 r^0)_i`, which is the time loop's `a^0` (`MassOperator::apply_inverse` of `r^0`,
     /// the same operations).
-    pub fn new(dt: f64, stiffness: &[f64], mass: MassOperator, start: StartState) -> Self {
+    pub fn new(dt: f64, stiffness: &[f64], mass: MassOperator, start: &StartState) -> Self {
         let StartState {
             displacement: u0,
             half_step_velocity: v_half,
             acceleration: a0,
             residual: r0,
             kinetic_staggered: staggered0,
-        } = start;
+        } = *start;
         let n = u0.len();
         let reciprocal = matches!(mass, MassOperator::Reciprocal { .. });
         let windows = mass.windows().is_some();
@@ -112,10 +116,8 @@ impl MatrixCentralDifference {
         };
         Self {
             dt,
-            stiffness: padded,
+            state: PlacedArrays::new([u0, v_half, r0, &padded]),
             mass,
-            u: u0.to_vec(),
-            v: v_half,
             a: if reciprocal || windows {
                 Vec::new()
             } else {
@@ -123,7 +125,6 @@ impl MatrixCentralDifference {
             },
             #[cfg(test)]
             r: Vec::new(),
-            r_previous: r0.to_vec(),
             group,
             constant,
             scratch: vec![0.0; n],
@@ -139,12 +140,12 @@ impl MatrixCentralDifference {
 
     /// `u^n`.
     pub fn displacement(&self) -> &[f64] {
-        &self.u
+        self.state.get(U)
     }
 
     /// `v^{n+1/2}`.
     pub fn half_step_velocity(&self) -> &[f64] {
-        &self.v
+        self.state.get(V)
     }
 
     /// `a^n` at node `i`: the kept solve for CMM and AMM; with windows, whose step does not
@@ -155,10 +156,10 @@ impl MatrixCentralDifference {
     pub fn acceleration_at(&self, i: usize) -> f64 {
         match &self.mass {
             MassOperator::Reciprocal { inverse, .. } => {
-                inverse_row(&inverse.diag, &inverse.off, &self.r_previous, i)
+                inverse_row(&inverse.diag, &inverse.off, self.state.get(R), i)
             }
             mass => match mass.windows() {
-                Some(tiles) => tiles.solution_at(i, &self.r_previous),
+                Some(tiles) => tiles.solution_at(i, self.state.get(R)),
                 None => self.a[i],
             },
         }
@@ -183,18 +184,19 @@ impl MatrixCentralDifference {
     #[cfg(test)]
     fn whole_pass_step(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
         let dt = self.dt;
-        self.r.resize(self.u.len(), 0.0);
-        self.a.resize(self.u.len(), 0.0);
+        let [u, v, r_previous, k] = self.state.split_mut();
+        let n = u.len();
+        self.r.resize(n, 0.0);
+        self.a.resize(n, 0.0);
         // Element forces padded with a zero at both ends (length N + 2).
-        let mut element_force = vec![0.0; self.u.len() + 1];
-        for (u, v) in self.u.iter_mut().zip(&self.v) {
+        let mut element_force = vec![0.0; n + 1];
+        for (u, v) in u.iter_mut().zip(v.iter()) {
             *u += dt * v;
         }
         // Element forces N_e = k_e (u_{e+1} - u_e) at padded index e + 1 (ghosts stay 0).
-        let n = self.u.len();
         let [strain] = lane_sums(
             &mut element_force[1..n],
-            (&self.stiffness[1..n], &self.u[..]),
+            (&k[1..n], &u[..]),
             |e, force, (k, u)| {
                 let du = u[e + 1] - u[e];
                 *force = k[e] * du;
@@ -210,8 +212,8 @@ impl MatrixCentralDifference {
         }
         self.mass.apply_inverse(&self.r, &mut self.a);
         let [increment, impulse] = lane_sums(
-            &mut self.v,
-            (&self.a[..], (&self.r_previous[..], &self.r[..])),
+            v,
+            (&self.a[..], (&r_previous[..], &self.r[..])),
             |i, v, (a, (r_previous, r))| {
                 let terms = [*v * (r_previous[i] + r[i]), a[i] * r[i]];
                 *v += dt * a[i];
@@ -219,7 +221,7 @@ impl MatrixCentralDifference {
             },
         );
         self.staggered += 0.5 * dt * increment;
-        std::mem::swap(&mut self.r, &mut self.r_previous);
+        r_previous.copy_from_slice(&self.r);
         StepEnergy {
             kinetic_staggered: self.staggered,
             kinetic: self.staggered + 0.125 * dt * dt * impulse,
@@ -273,17 +275,16 @@ impl MatrixCentralDifference {
     ) {
         let Self {
             dt,
-            stiffness: k,
+            state,
             mass: MassOperator::Reciprocal { inverse, .. },
-            u,
-            v,
-            r_previous: r,
             constant,
             ..
         } = self
         else {
             return;
         };
+        let [u, v, r, k] = state.split_mut();
+        let (k, r) = (&*k, r);
         let (dt, n, diag, off) = (*dt, u.len(), &inverse.diag[..], &inverse.off[..]);
         // `a = M^-1 r` is formed in the velocity sweep, not stored (`Self::acceleration_at`
         // forms it from `r`); the residual runs one row ahead (the product reads it).
@@ -310,16 +311,14 @@ impl MatrixCentralDifference {
     fn solved_step<const AVX2: bool>(&mut self, forces: &[(usize, f64)], lanes: &mut EnergyLanes) {
         let Self {
             dt,
-            stiffness: k,
+            state,
             mass,
-            u,
-            v,
             a,
-            r_previous: r,
             group,
             ..
         } = self;
-        let dt = *dt;
+        let [u, v, r, k] = state.split_mut();
+        let (dt, k) = (*dt, &*k);
         let mut front = ResidualFront::default();
         if let Some(tiles) = mass.windows() {
             for g in 0..tiles.groups() {
@@ -345,7 +344,7 @@ impl MatrixCentralDifference {
     /// solve): compared with the running `T*` it checks `M^-1` against `M`.
     pub fn staggered_kinetic_from_mass(&mut self) -> f64 {
         let dt = self.dt;
-        let (v, r) = (&self.v, &self.r_previous);
+        let (v, r) = (self.state.get(V), self.state.get(R));
         // Sum of (v_i - dt a_i) (M v)_i in increasing i, `a = M^-1 r^n` formed as the step
         // formed it: row by row of `M^-1` (RMM), window by window, or the kept `a`.
         let mut sum = 0.0;
@@ -429,13 +428,13 @@ mod tests {
         let zeros = vec![0.0; n + 1];
         let start = StartState {
             displacement: &zeros,
-            half_step_velocity: v,
+            half_step_velocity: &v,
             acceleration: &zeros,
             residual: &zeros,
             kinetic_staggered: 0.0,
         };
         let mass = MassOperator::new(&model, kind).unwrap();
-        MatrixCentralDifference::new(dt, model.stiffness(), mass, start)
+        MatrixCentralDifference::new(dt, model.stiffness(), mass, &start)
     }
 
     #[test]
@@ -505,12 +504,13 @@ mod tests {
                     let b = whole.whole_pass_step(&forces);
                     assert_eq!(a, b, "{kind:?}, n = {n}, {supports:?}");
                 }
-                assert_eq!((&blocked.u, &blocked.v), (&whole.u, &whole.v));
+                for a in [U, V, R] {
+                    assert_eq!(blocked.state.get(a), whole.state.get(a), "u, v and r^n");
+                }
                 assert!(
-                    blocked.u.iter().any(|&u| u != 0.0),
+                    blocked.displacement().iter().any(|&u| u != 0.0),
                     "{kind:?}: the bar moved"
                 );
-                assert_eq!(&blocked.r_previous, &whole.r_previous);
                 // Every node; with windows (each node's own solve) every 7th and the tile edges.
                 let check = |i: usize| n < CHAINS * TILE || i.is_multiple_of(7) || i % TILE < 2;
                 for i in (0..=n).filter(|&i| check(i)) {
@@ -540,20 +540,21 @@ mod tests {
             assert_eq!(kernel.mass.reciprocal_windows().is_some(), n == long);
             // A consistent start: at rest at the fixed nodes, `T* = 1/2 v M v` (`a^0 = 0`, the
             // fixture's `r^0` is 0).
-            kernel.v[n] = 0.0;
+            let [_, v, ..] = kernel.state.split_mut();
+            v[n] = 0.0;
             if supports.left == Support::Fixed {
-                kernel.v[0] = 0.0;
+                v[0] = 0.0;
             }
             kernel.staggered = kernel.staggered_kinetic_from_mass();
             for _ in 0..20 {
                 kernel.step_with_energy(&[(1, 1.0), (n / 2, -0.5)]);
             }
             let mut my = vec![0.0; n + 1];
-            kernel.mass.apply(&kernel.v, &mut my);
+            kernel.mass.apply(kernel.half_step_velocity(), &mut my);
             let MassOperator::Reciprocal { inverse, .. } = &kernel.mass else {
                 unreachable!()
             };
-            let (dt, v, r) = (kernel.dt, &kernel.v, &kernel.r_previous);
+            let (dt, v, r) = (kernel.dt, kernel.state.get(V), kernel.state.get(R));
             let expected = 0.5
                 * (0..=n).fold(0.0, |sum, i| {
                     let a = inverse_row(&inverse.diag, &inverse.off, r, i);

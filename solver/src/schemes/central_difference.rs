@@ -178,12 +178,12 @@ impl CentralDifferenceKernel for MatrixCentralDifference {
     fn build(state: InitialState<'_>, half_step_velocity: Vec<f64>, staggered0: f64) -> Self {
         let start = StartState {
             displacement: state.displacement,
-            half_step_velocity,
+            half_step_velocity: &half_step_velocity,
             acceleration: state.acceleration,
             residual: state.residual,
             kinetic_staggered: staggered0,
         };
-        Self::new(state.dt, state.model.stiffness(), state.mass, start)
+        Self::new(state.dt, state.model.stiffness(), state.mass, &start)
     }
     fn dt(&self) -> f64 {
         self.dt()
