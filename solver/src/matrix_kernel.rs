@@ -113,8 +113,13 @@ impl MatrixCentralDifference {
         let n = u0.len();
         let reciprocal = matches!(mass, MassOperator::Reciprocal { .. });
         let windows = mass.windows().is_some();
-        let mut padded = vec![0.0; n + 1];
-        padded[1..n].copy_from_slice(stiffness);
+        // u, v, r^n, and the stiffnesses padded with a zero at both ends (written in place).
+        let mut state = PlacedArrays::zeroed([n, n, n, n + 1], PLACEMENT);
+        let [u, v, r, k] = state.split_mut();
+        u.copy_from_slice(u0);
+        v.copy_from_slice(v_half);
+        r.copy_from_slice(r0);
+        k[1..n].copy_from_slice(stiffness);
         let group = (mass.windows().or(mass.reciprocal_windows()))
             .map_or_else(GroupBuffers::default, |t| t.buffers());
         let constant = match &mass {
@@ -125,7 +130,7 @@ impl MatrixCentralDifference {
         };
         Self {
             dt,
-            state: PlacedArrays::new([u0, v_half, r0, &padded], PLACEMENT),
+            state,
             mass,
             a: if reciprocal || windows {
                 Vec::new()

@@ -30,14 +30,23 @@ impl<const K: usize> PlacedArrays<K> {
     /// The arrays, copied in (lengths as given), array `k` at byte `offsets[k]` (a multiple of
     /// 8) modulo 4096.
     pub(crate) fn new(arrays: [&[f64]; K], offsets: [usize; K]) -> Self {
+        let mut placed = Self::zeroed(arrays.map(<[f64]>::len), offsets);
+        for (to, from) in placed.split_mut().into_iter().zip(arrays) {
+            to.copy_from_slice(from);
+        }
+        placed
+    }
+
+    /// Arrays of the given lengths, zero, array `k` at byte `offsets[k]` (a multiple of 8)
+    /// modulo 4096.
+    pub(crate) fn zeroed(lens: [usize; K], offsets: [usize; K]) -> Self {
         assert!(
             offsets.iter().all(|o| o.is_multiple_of(8)),
             "offsets of words"
         );
-        let lens = arrays.map(<[f64]>::len);
         // Room for every array and a page of padding before each.
         let words = lens.iter().sum::<usize>() + K * PAGE / 8;
-        let mut buffer = vec![0.0; words];
+        let buffer = vec![0.0; words];
         let base = buffer.as_ptr() as usize;
         let mut starts = [0; K];
         let mut next = 0;
@@ -49,9 +58,6 @@ impl<const K: usize> PlacedArrays<K> {
             let gap = (target + PAGE - address % PAGE) % PAGE;
             *start = next + gap / 8;
             next = *start + lens[k];
-        }
-        for ((array, &start), &len) in arrays.iter().zip(&starts).zip(&lens) {
-            buffer[start..start + len].copy_from_slice(array);
         }
         Self {
             buffer,
