@@ -146,31 +146,6 @@ fn lumped_cd_block(c: &mut Criterion) {
     group.finish();
 }
 
-/// The matrix-mass step of `kind` on `model` at half its critical Courant number, from rest with
-/// the smooth half-step velocity.
-fn matrix_step(
-    model: &courant_solver::Model,
-    kind: courant_solver::MassKind,
-) -> courant_solver::matrix_kernel::MatrixCentralDifference {
-    let n = model.bar().element_count();
-    let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
-    let operator = courant_solver::MassOperator::new(model, kind).unwrap();
-    let (v_half, zeros) = (smooth_half_velocity(n), vec![0.0; n + 1]);
-    let start = courant_solver::matrix_kernel::StartState {
-        displacement: &zeros,
-        half_step_velocity: &v_half,
-        acceleration: &zeros,
-        residual: &zeros,
-        kinetic_staggered: 0.0,
-    };
-    courant_solver::matrix_kernel::MatrixCentralDifference::new(
-        dt,
-        model.stiffness(),
-        operator,
-        &start,
-    )
-}
-
 /// One run step (with energies, as runs take it) per mass kind on the graded bar, N = 1e3, 1e5, 1e6, at half
 /// of each kind's critical Courant number, and CMM on a bar of graded density too (each window
 /// with its own factors). Targets: issue 3, RMM within 2x of LMM, CMM and AMM
@@ -215,7 +190,7 @@ fn mass_kind_step(c: &mut Criterion) {
             ("rmm0.5", &model, MassKind::Reciprocal { beta: 0.5 }),
             ("cmm-graded-density", &graded_density, MassKind::Consistent),
         ] {
-            let mut kernel = matrix_step(model, kind);
+            let mut kernel = courant_solver::fixtures::matrix_step(model, kind).unwrap();
             group.bench_function(BenchmarkId::new(name, n), |b| {
                 b.iter(|| kernel.step_with_energy(black_box(&forces)))
             });

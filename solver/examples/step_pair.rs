@@ -10,9 +10,9 @@
 //!   WHICH: both (default) | matrix | lumped | check (the mass check alone, ms)
 //! ```
 
+use courant_solver::MassKind;
+use courant_solver::fixtures::smooth_half_velocity;
 use courant_solver::kernel::LumpedCentralDifference;
-use courant_solver::matrix_kernel::{MatrixCentralDifference, StartState};
-use courant_solver::{MassKind, MassOperator};
 use std::time::Instant;
 
 fn median(mut times: Vec<f64>) -> f64 {
@@ -34,18 +34,8 @@ fn main() {
     let which = arg(4).unwrap_or("both");
     let model = courant_solver::fixtures::graded_seed_bar(n).expect("bar");
     let element_dt = model.bar().stiffest_element().1;
-    let dt = 0.5 * kind.critical_courant() * element_dt;
-    let mass = MassOperator::new(&model, kind).expect("mass");
-    let v = courant_solver::fixtures::smooth_half_velocity(n);
-    let zeros = vec![0.0; n + 1];
-    let start = StartState {
-        displacement: &zeros,
-        half_step_velocity: &v,
-        acceleration: &zeros,
-        residual: &zeros,
-        kinetic_staggered: 0.0,
-    };
-    let mut matrix = MatrixCentralDifference::new(dt, model.stiffness(), mass, &start);
+    let mut matrix = courant_solver::fixtures::matrix_step(&model, kind).expect("mass");
+    let (v, zeros) = (smooth_half_velocity(n), vec![0.0; n + 1]);
     let mut lumped = LumpedCentralDifference::new(&model, 0.5 * element_dt, &zeros, &v);
     let forces = [(0usize, 1.0f64)];
     for _ in 0..steps / 10 {

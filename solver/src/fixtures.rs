@@ -99,6 +99,31 @@ pub fn smooth_half_velocity(elements: usize) -> Vec<f64> {
         .collect()
 }
 
+/// The matrix-mass step of `model` with mass `kind` at half the kind's critical Courant number
+/// (of the stiffest element), at rest in `u` and `r` with [`smooth_half_velocity`] as `v^{1/2}`:
+/// the step the benchmarks (`mass_kind_step`), the harness `step_pair` and the kernel's unit
+/// tests time and check.
+pub fn matrix_step(
+    model: &Model,
+    kind: crate::mass::MassKind,
+) -> Result<crate::matrix_kernel::MatrixCentralDifference, InputError> {
+    let n = model.bar().element_count();
+    let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
+    let mass = crate::mass::MassOperator::new(model, kind)?;
+    let (v_half, zeros) = (smooth_half_velocity(n), vec![0.0; n + 1]);
+    let start = crate::matrix_kernel::StartState {
+        displacement: &zeros,
+        half_step_velocity: &v_half,
+        acceleration: &zeros,
+        residual: &zeros,
+        kinetic_staggered: 0.0,
+    };
+    let stiffness = model.stiffness();
+    Ok(crate::matrix_kernel::MatrixCentralDifference::new(
+        dt, stiffness, mass, &start,
+    ))
+}
+
 /// A lumped kernel on [`graded_seed_bar`] of `n` elements at half its stiffest element's step,
 /// from rest with the half-step velocity `sin(0.37 i)` (0 at the fixed end): the lumped kernels'
 /// unit-test bar.

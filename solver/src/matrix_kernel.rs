@@ -436,19 +436,7 @@ mod tests {
     /// The graded seed bar of `n` elements with the given supports.
     fn matrix_kernel(n: usize, kind: MassKind, supports: Supports) -> MatrixCentralDifference {
         let bar = crate::fixtures::graded_bar(n).unwrap();
-        let model = crate::Model::unloaded(bar, supports);
-        let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
-        let v = crate::fixtures::smooth_half_velocity(n);
-        let zeros = vec![0.0; n + 1];
-        let start = StartState {
-            displacement: &zeros,
-            half_step_velocity: &v,
-            acceleration: &zeros,
-            residual: &zeros,
-            kinetic_staggered: 0.0,
-        };
-        let mass = MassOperator::new(&model, kind).unwrap();
-        MatrixCentralDifference::new(dt, model.stiffness(), mass, &start)
+        crate::fixtures::matrix_step(&crate::Model::unloaded(bar, supports), kind).unwrap()
     }
 
     #[test]
