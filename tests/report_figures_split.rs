@@ -136,7 +136,7 @@ fn assert_every_case_accounted_for(scene: &Scene, expected_kinds: &[&str]) {
     let cases: Vec<&str> = outcome
         .results
         .iter()
-        .map(|r| r.case.as_str())
+        .map(|r| r.run.case.as_str())
         .chain(outcome.contact.iter().map(|c| c.case.as_str()))
         .collect();
     assert!(cases.len() > MAX_CASES, "{}: too few cases", scene.name);

@@ -156,11 +156,11 @@ fn theta_zero_equals_central_difference_on_the_fig2_bar() {
     let cd = outcome
         .results
         .iter()
-        .find(|r| r.case == "cd-co0.5")
+        .find(|r| r.run.case == "cd-co0.5")
         .unwrap();
     for name in ["park-lts-theta0-co0.5", "park-global-theta0-co0.5"] {
-        let park = outcome.results.iter().find(|r| r.case == name).unwrap();
-        assert_eq!(park.steps, cd.steps, "{name}: same plan");
+        let park = outcome.results.iter().find(|r| r.run.case == name).unwrap();
+        assert_eq!(park.run.steps, cd.run.steps, "{name}: same plan");
         for (a, b) in park.profiles.iter().zip(&cd.profiles) {
             let peak = b.stress.iter().fold(0.0_f64, |m, s| m.max(s.abs()));
             let worst = a

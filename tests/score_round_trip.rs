@@ -42,12 +42,12 @@ fn an_exported_run_scores_as_the_run_itself() {
         let dir = scratch(&format!("export-{name}"));
         let scored = score_set(&s, &through_files(&set, &dir)).unwrap();
         for r in &outcome.results {
-            let c = scored.cases.iter().find(|c| c.case == r.case).unwrap();
+            let c = scored.cases.iter().find(|c| c.case == r.run.case).unwrap();
             let Scored::Profiles { profiles, points } = &c.scored else {
                 panic!()
             };
             assert!(!points);
-            assert_eq!(profiles.len(), r.profiles.len(), "{name} {}", r.case);
+            assert_eq!(profiles.len(), r.profiles.len(), "{name} {}", r.run.case);
             for (p, q) in profiles.iter().zip(&r.profiles) {
                 let own = q.norms.unwrap();
                 assert_eq!(p.time, q.time);
@@ -60,16 +60,16 @@ fn an_exported_run_scores_as_the_run_itself() {
                     assert!(
                         close(a, b, 1e-12),
                         "{name} {} t = {}: {a} vs {b}",
-                        r.case,
+                        r.run.case,
                         q.time
                     );
                 }
                 // Undefined (no variation of the exact profile) in both or in neither.
                 match (p.norms.tv_ratio, own.tv_ratio) {
                     (Some(a), Some(b)) => {
-                        assert!(close(a, b, 1e-12), "{name} {}: tv_ratio", r.case)
+                        assert!(close(a, b, 1e-12), "{name} {}: tv_ratio", r.run.case)
                     }
-                    (a, b) => assert_eq!(a, b, "{name} {}: tv_ratio defined", r.case),
+                    (a, b) => assert_eq!(a, b, "{name} {}: tv_ratio defined", r.run.case),
                 }
             }
         }
@@ -206,11 +206,15 @@ fn several_meshes_give_the_orders_of_the_report_study() {
         let s = derived("fig1", "elements = 100", &format!("elements = {n}"));
         let (outcome, set) = courant_set(&s);
         sets.push(through_files(&set, &scratch(&format!("mesh{n}"))));
-        let r = outcome.results.iter().find(|r| r.case == "co0.5").unwrap();
+        let r = outcome
+            .results
+            .iter()
+            .find(|r| r.run.case == "co0.5")
+            .unwrap();
         let first = r.profiles[0].norms.unwrap();
         own.push(Level {
             elements: n,
-            dt: r.dt,
+            dt: r.run.dt,
             steps: r.profiles[0].step,
             l1: first.l1,
             l2: first.l2,

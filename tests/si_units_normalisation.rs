@@ -17,9 +17,9 @@ fn steel_bar_gives_the_unit_bar_normalised_errors() {
     let steel = run_scene(&builtin_scene("fig1_si").unwrap().unwrap()).unwrap();
     assert_eq!(unit.results.len(), steel.results.len());
     for (u, s) in unit.results.iter().zip(&steel.results) {
-        assert_eq!(u.case, s.case);
-        assert_eq!(u.steps, s.steps);
-        assert!((u.courant - s.courant).abs() < 1e-12);
+        assert_eq!(u.run.case, s.run.case);
+        assert_eq!(u.run.steps, s.run.steps);
+        assert!((u.run.courant - s.run.courant).abs() < 1e-12);
         for (pu, ps) in u.profiles.iter().zip(&s.profiles) {
             let (a, b) = (pu.norms.unwrap(), ps.norms.unwrap());
             for (name, x, y) in [
@@ -31,7 +31,7 @@ fn steel_bar_gives_the_unit_bar_normalised_errors() {
                 assert!(
                     (x - y).abs() <= 1e-9 * x.abs().max(y.abs()) + 1e-12,
                     "{} {name}: unit {x} vs SI {y}",
-                    u.case
+                    u.run.case
                 );
             }
         }

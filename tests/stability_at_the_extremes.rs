@@ -79,8 +79,8 @@ fn park_at_its_own_limit_is_stable_marginal_then_caught() {
         assert_eq!(row.limit, "alpha_e <= 1", "{row:?}");
         // Park's limit is the stiffest element's transit time h/c = 0.05, not CD's 2/omega_max
         // (1.0000771 h/c on this mesh).
-        assert_eq!(r.limit.dt(), r.critical.element_transit);
-        assert!(r.critical.exact > 1.00007 * r.limit.dt());
+        assert_eq!(r.run.limit.dt(), r.run.critical.element_transit);
+        assert!(r.run.critical.exact > 1.00007 * r.run.limit.dt());
         let fraction = match &row.case[row.case.rfind("-co").unwrap() + 3..] {
             "0.99" => 0.99,
             "1" => 1.0,
@@ -92,20 +92,20 @@ fn park_at_its_own_limit_is_stable_marginal_then_caught() {
         match fraction {
             0.99 => {
                 assert_eq!(row.predicted, "stable");
-                assert_eq!(r.steps, r.steps_planned);
+                assert_eq!(r.run.steps, r.run.steps_planned);
                 assert_eq!(row.observed(), "stable");
             }
             1.0 => {
                 assert_eq!(row.predicted, "marginal");
-                assert_eq!(r.steps, r.steps_planned);
+                assert_eq!(r.run.steps, r.run.steps_planned);
                 assert_eq!(row.observed(), "stable");
                 // alpha = 1 in every element: Park is CD, whose discrete energy is conserved.
                 assert!(r.energy.relative_balance_error() < 1e-12, "{row:?}");
             }
             _ => {
                 assert_eq!(row.predicted, "unstable");
-                assert!(matches!(r.status, Status::Diverged(_)), "{row:?}");
-                assert!(r.steps < r.steps_planned / 10, "{row:?}");
+                assert!(matches!(r.run.status, Status::Diverged(_)), "{row:?}");
+                assert!(r.run.steps < r.run.steps_planned / 10, "{row:?}");
                 assert!(row.caught.as_deref().unwrap().starts_with("step "));
             }
         }
@@ -124,7 +124,7 @@ fn central_difference_at_exactly_its_critical_step_reads_marginal() {
         assert_eq!(row.limit, "2/omega_max");
         assert!((row.ratio - 1.0).abs() <= 1e-15, "{row:?}");
         assert_eq!(row.predicted, "marginal", "{row:?}");
-        assert_eq!(r.steps, r.steps_planned, "{row:?}");
+        assert_eq!(r.run.steps, r.run.steps_planned, "{row:?}");
         assert_eq!(row.agrees(), Some(true));
     }
     // The closed-form unit does not reach the finite mesh's limit; without keep_step the plan

@@ -47,14 +47,14 @@ fn stability_extremes_rows_agree_with_the_critical_step() {
         if row.predicted == "unstable" {
             assert!(row.ratio > 1.009 && row.ratio < 1.011, "{row:?}");
             assert!(
-                r.steps < r.steps_planned / 10,
+                r.run.steps < r.run.steps_planned / 10,
                 "{}: caught at {} of {}",
                 row.case,
-                r.steps,
-                r.steps_planned
+                r.run.steps,
+                r.run.steps_planned
             );
         } else {
-            assert_eq!(r.steps, r.steps_planned, "{}", row.case);
+            assert_eq!(r.run.steps, r.run.steps_planned, "{}", row.case);
         }
     }
     let csv = stability_table(&rows).to_csv(courant::results::table::Precision::RoundTrip);

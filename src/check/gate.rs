@@ -74,7 +74,7 @@ pub fn check_scene(
     let case_times = outcome
         .results
         .iter()
-        .map(|r| (r.case.clone(), r.wall_time.as_secs_f64()))
+        .map(|r| (r.run.case.clone(), r.run.wall_time.as_secs_f64()))
         .chain(
             outcome
                 .contact

@@ -298,22 +298,22 @@ pub fn print_cases(results: &[CaseResult]) {
     ]);
     for r in results {
         let n = r.worst_norms();
-        let status = match &r.status {
+        let status = match &r.run.status {
             Status::Completed => "completed".to_string(),
             Status::Diverged(d) => format!("DIVERGED: {d}"),
         };
         t.push(vec![
-            r.case.as_str().into(),
+            r.run.case.as_str().into(),
             r.elements.into(),
-            r.courant.into(),
-            r.dt.into(),
-            r.steps.into(),
+            r.run.courant.into(),
+            r.run.dt.into(),
+            r.run.steps.into(),
             n.map(|n| n.l1).into(),
             n.map(|n| n.l2).into(),
             n.map(|n| n.linf).into(),
             n.map(|n| n.overshoot).into(),
             r.energy.relative_balance_error().into(),
-            r.wall_time.as_secs_f64().into(),
+            r.run.wall_time.as_secs_f64().into(),
             status.into(),
         ]);
     }

@@ -4,11 +4,10 @@
 use super::cache::ProfileCache;
 use super::exact::ExactSolution;
 use super::norms::ErrorNorms;
-use crate::results::case::{CaseRecord, Status};
+use crate::results::case::{CaseRecord, RunFacts};
 use crate::scene::reference::Reference;
 use courant_references::Energies;
-use courant_solver::{CriticalStep, EnergyLog, NodeHistory, SchemeLimit};
-use std::time::Duration;
+use courant_solver::{EnergyLog, NodeHistory};
 
 /// A stress profile beside its reference.
 #[derive(Debug, Clone, PartialEq)]
@@ -39,27 +38,10 @@ pub struct HistoryComparison {
 /// A time-stepping case's record compared with its reference.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CaseResult {
-    /// Case name.
-    pub case: String,
-    /// The time-stepping scheme that ran: `cd`, or Park's with its stepping, element-acceleration
-    /// variant and blend, e.g. `park-lts-free theta=0.5` (methods.md §6).
-    pub scheme: String,
+    /// The case, scheme, step, cost and end of the run (as recorded).
+    pub run: RunFacts,
     /// Number of elements.
     pub elements: usize,
-    /// Courant number relative to the stiffest element.
-    pub courant: f64,
-    /// Time step.
-    pub dt: f64,
-    /// Steps planned.
-    pub steps_planned: usize,
-    /// Steps taken.
-    pub steps: usize,
-    /// Critical-step estimates.
-    pub critical: CriticalStep,
-    /// The stability limit of the scheme that ran (CD's `2/omega_max`, Park's `alpha_e <= 1`).
-    pub limit: SchemeLimit,
-    /// Number of distinct profile times requested.
-    pub profiles_requested: usize,
     /// Profiles recorded (fewer than requested when the run diverged first).
     pub profiles: Vec<ProfileComparison>,
     /// Histories.
@@ -70,10 +52,6 @@ pub struct CaseResult {
     pub energy_reference: Option<Vec<Energies>>,
     /// Reference name, if any.
     pub reference: Option<&'static str>,
-    /// Completed or diverged.
-    pub status: Status,
-    /// Wall time of the integration (not of the comparison).
-    pub wall_time: Duration,
 }
 
 impl CaseResult {
@@ -103,21 +81,11 @@ pub fn compare_case(
     cache: &ProfileCache,
 ) -> CaseResult {
     let CaseRecord {
-        case,
-        scheme,
+        run,
         mesh,
-        courant,
-        dt,
-        steps_planned,
-        steps,
-        critical,
-        limit,
-        profiles_requested,
         profiles,
         histories,
         energy,
-        status,
-        wall_time,
     } = record;
     // The midpoints are made per profile (not one array cloned): with one profile a run holds
     // them once.
@@ -171,22 +139,12 @@ pub fn compare_case(
             .collect::<Option<Vec<_>>>()
     });
     CaseResult {
-        case,
-        scheme,
+        run,
         elements: mesh.element_count(),
-        courant,
-        dt,
-        steps_planned,
-        steps,
-        critical,
-        limit,
-        profiles_requested,
         profiles,
         histories,
         energy,
         energy_reference,
         reference: reference.map(|r| r.name()),
-        status,
-        wall_time,
     }
 }

@@ -111,8 +111,13 @@ fn measure_all(e: &Expectation, outcome: &SceneOutcome) -> Vec<(String, Measured
     outcome
         .results
         .iter()
-        .filter(|r| wanted(&r.case))
-        .map(|r| (r.case.clone(), relative(e, r, &outcome.results, case_value)))
+        .filter(|r| wanted(&r.run.case))
+        .map(|r| {
+            (
+                r.run.case.clone(),
+                relative(e, r, &outcome.results, case_value),
+            )
+        })
         .collect()
 }
 
@@ -123,7 +128,7 @@ trait Named {
 
 impl Named for CaseResult {
     fn name(&self) -> &str {
-        &self.case
+        &self.run.case
     }
 }
 
@@ -173,13 +178,13 @@ fn case_value(e: &Expectation, result: &CaseResult, other: Option<&CaseResult>) 
         let selected: Vec<Option<f64>> = result
             .profiles
             .iter()
-            .filter(|p| at_time(e.at, p.time, result.dt))
+            .filter(|p| at_time(e.at, p.time, result.run.dt))
             .filter_map(|p| p.norms.as_ref().map(pick))
             .collect();
         let expected = if e.at.is_some() {
             1
         } else {
-            result.profiles_requested
+            result.run.profiles_requested
         };
         if selected.len() < expected {
             return Measured::Missing("the run ended before every profile time".into());
@@ -201,17 +206,19 @@ fn case_value(e: &Expectation, result: &CaseResult, other: Option<&CaseResult>) 
         Metric::TvRatio => norm_of(|n| n.tv_ratio),
         Metric::EnergyLost => Measured::Value(result.energy_lost()),
         Metric::EnergyBalance => Measured::Value(result.energy.relative_balance_error()),
-        Metric::Diverged => Measured::Flag(matches!(result.status, Status::Diverged(_))),
+        Metric::Diverged => Measured::Flag(matches!(result.run.status, Status::Diverged(_))),
         Metric::ElementBoundRatio => {
-            Measured::Value(result.critical.element / result.critical.exact)
+            Measured::Value(result.run.critical.element / result.run.critical.exact)
         }
-        Metric::CriticalCourant => Measured::Value(result.courant * result.limit.dt() / result.dt),
+        Metric::CriticalCourant => {
+            Measured::Value(result.run.courant * result.run.limit.dt() / result.run.dt)
+        }
         Metric::StressDifference => match other {
             Some(other) => {
                 fn views(r: &CaseResult, at: Option<f64>) -> Vec<ProfileView<'_>> {
                     r.profiles
                         .iter()
-                        .filter(|p| at_time(at, p.time, r.dt))
+                        .filter(|p| at_time(at, p.time, r.run.dt))
                         .map(|p| ProfileView {
                             time: p.time,
                             x: &p.x,
@@ -219,8 +226,12 @@ fn case_value(e: &Expectation, result: &CaseResult, other: Option<&CaseResult>) 
                         })
                         .collect()
                 }
-                stress_difference(&views(result, e.at), &views(other, e.at), 0.5 * result.dt)
-                    .map_or_else(Measured::Missing, Measured::Value)
+                stress_difference(
+                    &views(result, e.at),
+                    &views(other, e.at),
+                    0.5 * result.run.dt,
+                )
+                .map_or_else(Measured::Missing, Measured::Value)
             }
             None => Measured::Missing("needs relative_to".into()),
         },

@@ -82,7 +82,7 @@ pub fn write_profile_csv(result: &CaseResult, out: &mut dyn std::io::Write) -> s
 }
 
 fn profile_file(result: &CaseResult) -> String {
-    format!("{}.csv", result.case)
+    format!("{}.csv", result.run.case)
 }
 
 fn files(outcome: &SceneOutcome, with_profiles: bool) -> Vec<(String, String)> {
@@ -98,12 +98,12 @@ fn files(outcome: &SceneOutcome, with_profiles: bool) -> Vec<(String, String)> {
         }
         if !r.histories.is_empty() {
             files.push((
-                format!("{}.history.csv", r.case),
+                format!("{}.history.csv", r.run.case),
                 history_table(r).to_csv(full),
             ));
         }
         files.push((
-            format!("{}.energy.csv", r.case),
+            format!("{}.energy.csv", r.run.case),
             energy_table(r).to_csv(full),
         ));
     }

@@ -140,8 +140,8 @@ pub struct StabilityRow {
 impl StabilityRow {
     /// Build a row from a case result; `dt_crit` is the limit of the case's scheme.
     pub fn new(scene: &str, r: &CaseResult) -> Self {
-        let ratio = r.dt / r.limit.dt();
-        let caught = match &r.status {
+        let ratio = r.run.dt / r.run.limit.dt();
+        let caught = match &r.run.status {
             Status::Completed => None,
             Status::Diverged(d) => Some(format!(
                 "step {}, node {}, Co {:.4}",
@@ -150,17 +150,17 @@ impl StabilityRow {
         };
         Self {
             scene: scene.to_string(),
-            case: r.case.clone(),
-            limit: r.limit.name(),
+            case: r.run.case.clone(),
+            limit: r.run.limit.name(),
             ratio,
-            predicted: if r.limit.sufficient_only() {
+            predicted: if r.run.limit.sufficient_only() {
                 predicted_by_bound(ratio)
             } else {
                 predicted(ratio)
             },
             completed: caught.is_none(),
             caught,
-            steps: r.steps,
+            steps: r.run.steps,
             energy_balance: Some(r.energy.relative_balance_error()),
             energy_ratio: time_stepping_energy_ratio(&r.energy),
             energy_created: (-r.energy_lost()).max(0.0),

@@ -130,22 +130,22 @@ pub fn summary_table(results: &[CaseResult]) -> Table {
     ]);
     for r in results {
         let norms = r.worst_norms();
-        let status = match &r.status {
+        let status = match &r.run.status {
             Status::Completed => "completed".to_string(),
             Status::Diverged(d) => format!("diverged at step {}", d.step),
         };
         table.push(vec![
-            r.case.as_str().into(),
+            r.run.case.as_str().into(),
             r.elements.into(),
-            r.scheme.as_str().into(),
-            r.critical.mass.label().into(),
-            r.courant.into(),
-            (r.courant * r.critical.exact / r.dt).into(),
-            r.dt.into(),
-            r.critical.exact.into(),
-            r.critical.element.into(),
-            r.critical.gershgorin.into(),
-            r.steps.into(),
+            r.run.scheme.as_str().into(),
+            r.run.critical.mass.label().into(),
+            r.run.courant.into(),
+            (r.run.courant * r.run.critical.exact / r.run.dt).into(),
+            r.run.dt.into(),
+            r.run.critical.exact.into(),
+            r.run.critical.element.into(),
+            r.run.critical.gershgorin.into(),
+            r.run.steps.into(),
             norms.map(|n| n.l1).into(),
             norms.map(|n| n.l2).into(),
             norms.map(|n| n.linf).into(),
@@ -154,7 +154,7 @@ pub fn summary_table(results: &[CaseResult]) -> Table {
             r.energy.relative_balance_error().into(),
             r.energy_lost().into(),
             status.into(),
-            r.wall_time.as_secs_f64().into(),
+            r.run.wall_time.as_secs_f64().into(),
         ]);
     }
     table
@@ -166,7 +166,7 @@ pub fn norms_table(results: &[CaseResult]) -> Table {
     for r in results {
         for p in &r.profiles {
             if let Some(n) = p.norms {
-                table.push(norms_cells(&r.case, p.time, &n));
+                table.push(norms_cells(&r.run.case, p.time, &n));
             }
         }
     }

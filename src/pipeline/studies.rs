@@ -32,12 +32,12 @@ pub fn run_convergence(study: &ConvergenceStudy) -> Result<ConvergenceResult, St
                 .ok_or("no profile norms")?;
             Ok(Level {
                 elements: r.elements,
-                dt: r.dt,
-                steps: r.steps,
+                dt: r.run.dt,
+                steps: r.run.steps,
                 l1: n.l1,
                 l2: n.l2,
                 linf: n.linf,
-                wall_time: r.wall_time.as_secs_f64(),
+                wall_time: r.run.wall_time.as_secs_f64(),
             })
         })
         .collect::<Vec<Result<_, String>>>();
@@ -81,15 +81,15 @@ pub fn run_work_precision(study: &WorkPrecisionStudy) -> Result<Vec<WorkPoint>, 
             Ok(WorkPoint {
                 method,
                 setting,
-                courant: r.courant,
+                courant: r.run.courant,
                 // Co_crit = Co dt_crit/dt with dt_crit the limit of the case's scheme (CD:
                 // 2/omega_max; Park: alpha_e <= 1; Noh-Bathe: Omega_crit(p)/omega_max).
-                critical_courant: r.courant * r.limit.dt() / r.dt,
+                critical_courant: r.run.courant * r.run.limit.dt() / r.run.dt,
                 elements: r.elements,
-                steps: r.steps,
+                steps: r.run.steps,
                 force_evaluations: case.integrator.scheme.force_evaluations(),
                 l1,
-                wall_time: r.wall_time.as_secs_f64(),
+                wall_time: r.run.wall_time.as_secs_f64(),
             })
         })
         .collect::<Vec<Result<_, String>>>();

@@ -103,8 +103,8 @@ fn profile_figures(
         // they get figures of their own, after the others.
         let (completed, diverged): (Vec<_>, Vec<_>) = shown
             .into_iter()
-            .partition(|r| !matches!(r.status, Status::Diverged(_)));
-        let key = |r: &&CaseResult| format!("{} {}", r.scheme, r.critical.mass.label());
+            .partition(|r| !matches!(r.run.status, Status::Diverged(_)));
+        let key = |r: &&CaseResult| format!("{} {}", r.run.scheme, r.run.critical.mass.label());
         let calm = split(completed.iter().map(|r| (key(r), *r)).collect(), MAX_CASES);
         let calm_parts = calm.len();
         let mut parts = calm;
@@ -153,7 +153,7 @@ fn profile_figures(
                 notes.push(format!(
                     "not shown, diverged before {}: {}",
                     time_label(scene, longest, profile.time),
-                    names(missing.iter().map(|r| r.case.as_str()))
+                    names(missing.iter().map(|r| r.run.case.as_str()))
                 ));
             }
             let part_title = numbered(&title, j, parts.len());
@@ -167,7 +167,7 @@ fn profile_figures(
                 let file = part_file(&format!("profile_{k}"), j, parts.len());
                 let caption = caption(
                     &part_title,
-                    part.iter().map(|r| r.case.as_str()),
+                    part.iter().map(|r| r.run.case.as_str()),
                     &parts,
                     outcome.results.len(),
                     &notes,
@@ -393,7 +393,7 @@ pub fn stability_charts(sweep: &SweepResult) -> Vec<(Vec<String>, Vec<Series>)> 
 
 /// A profile time as the scene states it: `t = 0.5 T` (transit times) or `t = 0.005`.
 fn time_label(scene: &Scene, result: &CaseResult, t: f64) -> String {
-    match scene.cases.iter().find(|c| c.name == result.case) {
+    match scene.cases.iter().find(|c| c.name == result.run.case) {
         Some(case) if case.times_in_transits => {
             format!("t = {:.4} T", t / case.transit_time)
         }
@@ -407,7 +407,7 @@ fn scales(scene: &Scene, r: &CaseResult) -> (f64, f64) {
     scene
         .cases
         .iter()
-        .find(|c| c.name == r.case)
+        .find(|c| c.name == r.run.case)
         .map_or((1.0, 1.0), |c| {
             (
                 c.model.bar().mesh().length(),
@@ -420,11 +420,12 @@ fn scales(scene: &Scene, r: &CaseResult) -> (f64, f64) {
 /// another unit (`cmm-co1 (Co = 0.5747)`: 1 of CMM's critical Courant number).
 fn case_label(r: &CaseResult) -> String {
     let named = r
+        .run
         .case
         .rsplit_once("co")
         .and_then(|(_, v)| v.parse::<f64>().ok());
     match named {
-        Some(v) if (v - r.courant).abs() <= 1e-6 * v.abs() => r.case.clone(),
-        _ => format!("{} (Co = {:.4})", r.case, r.courant),
+        Some(v) if (v - r.run.courant).abs() <= 1e-6 * v.abs() => r.run.case.clone(),
+        _ => format!("{} (Co = {:.4})", r.run.case, r.run.courant),
     }
 }

@@ -166,7 +166,7 @@ fn overlay(
     let own = outcome
         .results
         .iter()
-        .find(|r| r.case == case.case)
+        .find(|r| r.run.case == case.case)
         .and_then(|r| {
             r.profiles
                 .iter()

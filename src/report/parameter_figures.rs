@@ -97,8 +97,8 @@ fn figure(
     // Curves: (group, profile index) -> points sorted by the parameter.
     let mut groups: Vec<String> = Vec::new();
     for r in &outcome.results {
-        if let Some(v) = value_of(scene, &r.case, key) {
-            let g = group_of(&r.case, key, v);
+        if let Some(v) = value_of(scene, &r.run.case, key) {
+            let g = group_of(&r.run.case, key, v);
             if !groups.contains(&g) {
                 groups.push(g);
             }
@@ -107,7 +107,7 @@ fn figure(
     let range = outcome
         .results
         .iter()
-        .filter_map(|r| value_of(scene, &r.case, key))
+        .filter_map(|r| value_of(scene, &r.run.case, key))
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
             (lo.min(v), hi.max(v))
         });
@@ -119,8 +119,8 @@ fn figure(
                 .results
                 .iter()
                 .filter_map(|r| {
-                    let v = value_of(scene, &r.case, key)?;
-                    (group_of(&r.case, key, v) == *group).then_some((v, at(r, k)?))
+                    let v = value_of(scene, &r.run.case, key)?;
+                    (group_of(&r.run.case, key, v) == *group).then_some((v, at(r, k)?))
                 })
                 .collect();
             if points.is_empty() {
@@ -144,13 +144,13 @@ fn figure(
     for r in outcome
         .results
         .iter()
-        .filter(|r| value_of(scene, &r.case, key).is_none())
+        .filter(|r| value_of(scene, &r.run.case, key).is_none())
     {
         for (k, &t) in times.iter().enumerate() {
             if let Some(y) = at(r, k) {
                 series.push(
                     Series::new(
-                        format!("{} (no {key}), {}", r.case, time_label(t)),
+                        format!("{} (no {key}), {}", r.run.case, time_label(t)),
                         vec![(range.0, y), (range.1, y)],
                         SeriesStyle::Dashed,
                     )

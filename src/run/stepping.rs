@@ -1,6 +1,6 @@
 //! Running a time-stepping case with courant's solver.
 
-use crate::results::case::{CaseRecord, Status};
+use crate::results::case::{CaseRecord, RunFacts, Status};
 use crate::scene::cases::Case;
 use courant_solver::RunError;
 use std::time::Instant;
@@ -28,21 +28,23 @@ pub fn run_case(case: &Case) -> Result<CaseRecord, RunError> {
     profile_steps.sort_unstable();
     profile_steps.dedup();
     Ok(CaseRecord {
-        case: case.name.clone(),
-        // The scheme and its parameters: `cd`, `park-lts-free theta=0.5`, `noh-bathe p=0.54`.
-        scheme: case.integrator.scheme.label(),
+        run: RunFacts {
+            case: case.name.clone(),
+            // The scheme and its parameters: `cd`, `park-lts-free theta=0.5`, `noh-bathe p=0.54`.
+            scheme: case.integrator.scheme.label(),
+            courant: output.courant,
+            dt: output.dt,
+            steps_planned: case.plan.steps,
+            steps: output.steps,
+            critical: case.critical,
+            limit: case.limit,
+            profiles_requested: profile_steps.len(),
+            status,
+            wall_time,
+        },
         mesh: std::sync::Arc::new(case.model.bar().mesh().clone()),
-        courant: output.courant,
-        dt: output.dt,
-        steps_planned: case.plan.steps,
-        steps: output.steps,
-        critical: case.critical,
-        limit: case.limit,
-        profiles_requested: profile_steps.len(),
         profiles: output.profiles,
         histories: output.histories,
         energy: output.energy,
-        status,
-        wall_time,
     })
 }

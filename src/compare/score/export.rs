@@ -46,13 +46,13 @@ pub fn exchange_set(scene: &Scene, outcome: &SceneOutcome, label: &str) -> Optio
                 lines: Vec::new(),
             })
             .collect();
-        cases.push(case_file(&r.case, CaseData::Profiles(profiles)));
+        cases.push(case_file(&r.run.case, CaseData::Profiles(profiles)));
         meta.insert(
-            r.case.clone(),
+            r.run.case.clone(),
             CaseMeta {
-                scheme: Some(r.scheme.clone()),
-                mass: Some((r.critical.mass.label(), 0, 0)),
-                dt: Some(r.dt),
+                scheme: Some(r.run.scheme.clone()),
+                mass: Some((r.run.critical.mass.label(), 0, 0)),
+                dt: Some(r.run.dt),
                 elements: Some((r.elements, 0)),
                 line: 0,
             },

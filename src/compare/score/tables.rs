@@ -343,7 +343,7 @@ pub fn beside_courant_table(set: &ScoredSet, courant: &SceneOutcome, scale: f64)
         let Scored::Profiles { profiles, .. } = &c.scored else {
             continue;
         };
-        let own = courant.results.iter().find(|r| r.case == c.case);
+        let own = courant.results.iter().find(|r| r.run.case == c.case);
         let (n, m) = (c.worst_norms(), own.and_then(|r| r.worst_norms()));
         let difference = own.and_then(|r| {
             let differences: Vec<f64> = profiles
