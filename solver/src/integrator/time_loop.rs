@@ -55,10 +55,8 @@ pub fn run<I: Integrator>(
 ) -> Result<RunOutput, RunError> {
     // Kept to repeat the run by single steps if the guard trips inside a block (only a lumped
     // run that must stay stable takes blocks; its mass is shared, so the copy is cheap).
-    let single_steps = match &setup.mass {
-        MassOperator::Diagonal { .. } if !setup.stability.allow_unstable => Some(setup.clone()),
-        _ => None,
-    };
+    let lumped = matches!(setup.mass, MassOperator::Diagonal { .. });
+    let single_steps = takes_blocks(lumped, setup.stability.allow_unstable).then(|| setup.clone());
     match run_steps::<I>(parameters, setup, true) {
         Stop::Finished(result) => result,
         Stop::TrippedInsideBlock(error) => match single_steps {
@@ -69,6 +67,15 @@ pub fn run<I: Integrator>(
             None => Err(error),
         },
     }
+}
+
+/// Whether a run steps in blocks of steps: its stepper has them (`stepper_has_blocks`: the
+/// lumped central-difference kernel) and the run must stay stable (an allowed unstable run
+/// steps singly, so a divergence names the node of its own step). The one statement of the
+/// rule: the loop, and [`crate::integrator::Scheme::threads`] (blocks are what run on several
+/// threads), ask it.
+pub fn takes_blocks(stepper_has_blocks: bool, allow_unstable: bool) -> bool {
+    stepper_has_blocks && !allow_unstable
 }
 
 /// How [`run_steps`] ended: with the run's result, or with a guard trip inside a block of
@@ -221,8 +228,9 @@ fn run_steps_result<I: Integrator>(
     let mut after = vec![0.0; forces.len()];
     // Temporal blocking where the stepper has it, for runs that must stay stable (an allowed
     // unstable run steps singly, so a divergence names the node of its own step).
-    let mut blocks = (allow_blocks && integrator.steps_in_blocks() && !stability.allow_unstable)
-        .then(|| BlockBuffers::new(model, &load_nodes, request));
+    let mut blocks = (allow_blocks
+        && takes_blocks(integrator.steps_in_blocks(), stability.allow_unstable))
+    .then(|| BlockBuffers::new(model, &load_nodes, request));
     let mut step = 0;
     while step < steps {
         let depth = match &blocks {

@@ -57,10 +57,10 @@ impl Scheme for CentralDifferenceScheme {
         SchemeLimit::central_difference(critical)
     }
 
-    /// Lumped runs that must stay stable take blocks of steps on
-    /// [`crate::kernel::default_threads`] threads; every other run one.
+    /// Runs that take blocks of steps ([`time_loop::takes_blocks`]: the lumped kernel has them)
+    /// run them on [`crate::kernel::default_threads`] threads; every other run on one.
     fn threads(&self, model: &Model, mass: MassKind, allow_unstable: bool) -> usize {
-        if mass == MassKind::Lumped && !allow_unstable {
+        if time_loop::takes_blocks(mass == MassKind::Lumped, allow_unstable) {
             crate::kernel::default_threads(model.bar().node_count())
         } else {
             1
