@@ -37,8 +37,8 @@ use crate::mass::MassOperator;
 #[cfg(test)]
 use crate::matrix_passes::lane_sums;
 use crate::matrix_passes::{
-    BLOCK, EnergyLanes, ResidualFront, constant_blocks, interior_row, inverse_row,
-    reciprocal_velocity, velocity_lanes,
+    BLOCK, EnergyLanes, ResidualFront, constant_blocks, inverse_row, reciprocal_velocity,
+    velocity_lanes,
 };
 use crate::placed_arrays::PlacedArrays;
 
@@ -298,7 +298,7 @@ impl MatrixCentralDifference {
             return;
         };
         let [u, v, r, k] = state.split_mut();
-        let (k, r) = (&*k, r);
+        let k = &*k;
         let (dt, n, diag, off) = (*dt, u.len(), &inverse.diag[..], &inverse.off[..]);
         // `a = M^-1 r` is formed in the velocity sweep, not stored (`Self::acceleration_at`
         // forms it from `r`); the residual runs one row ahead (the product reads it).
@@ -368,33 +368,13 @@ impl MatrixCentralDifference {
         {
             // `M v = A C^-1 A v`: `C^-1 A v` tile by tile with windows (consumed as it comes,
             // no second array), else from the global factor.
-            let (diag, off, n) = (&inverse.diag[..], &inverse.off[..], v.len());
+            let (diag, off) = (&inverse.diag[..], &inverse.off[..]);
             let mut add = |rows: std::ops::Range<usize>, x: &[f64]| {
                 // The running sum in a register (captured, it was stored and reloaded every row),
                 // added to in increasing rows.
                 let mut running = sum;
-                let term = |i: usize, a: f64, xi: f64| (v[i] - dt * a) * (xi * lumped[i]);
-                // Interior rows by `interior_row`, as `inverse_row` forms them, read from
-                // slices (no branch or bound check per row); the end rows by `inverse_row`.
-                let (from, to) = (rows.start, rows.end);
-                let lo = from.max(1).min(to);
-                let hi = to.min(n.saturating_sub(1)).max(lo);
-                for i in from..lo {
-                    running += term(i, inverse_row(diag, off, r, i), x[i - from]);
-                }
-                if lo < hi {
-                    let coefficients =
-                        (off[lo - 1..hi - 1].iter().zip(&off[lo..hi])).zip(&diag[lo..hi]);
-                    let values = r[lo - 1..hi + 1].windows(3).zip(&x[lo - from..hi - from]);
-                    for (i, (((left, right), centre), (r3, xi))) in
-                        (lo..hi).zip(coefficients.zip(values))
-                    {
-                        let a = interior_row([*left, *centre, *right], [r3[0], r3[1], r3[2]]);
-                        running += term(i, a, *xi);
-                    }
-                }
-                for i in hi..to {
-                    running += term(i, inverse_row(diag, off, r, i), x[i - from]);
+                for (i, xi) in rows.zip(x) {
+                    running += (v[i] - dt * inverse_row(diag, off, r, i)) * (xi * lumped[i]);
                 }
                 sum = running;
             };

@@ -248,16 +248,8 @@ pub(crate) fn inverse_row(diag: &[f64], off: &[f64], r: &[f64], i: usize) -> f64
     } else if i == n - 1 {
         off[n - 2] * r[n - 2] + diag[n - 1] * r[n - 1]
     } else {
-        interior_row([off[i - 1], diag[i], off[i]], [r[i - 1], r[i], r[i + 1]])
+        off[i - 1] * r[i - 1] + diag[i] * r[i] + off[i] * r[i + 1]
     }
-}
-
-/// An interior row of `M^-1 r`: `off_{i-1} r_{i-1} + diag_i r_i + off_i r_{i+1}`, from the row's
-/// coefficients `[off_{i-1}, diag_i, off_i]` and `[r_{i-1}, r_i, r_{i+1}]` (the operations of
-/// [`inverse_row`], which calls it).
-#[inline(always)]
-pub(crate) fn interior_row([left, centre, right]: [f64; 3], r: [f64; 3]) -> f64 {
-    left * r[0] + centre * r[1] + right * r[2]
 }
 
 /// The energy lanes of one step: strain `N_e du_e`, increment `v^{n+1/2} (r^n + r^{n+1})`,
