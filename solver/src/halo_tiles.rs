@@ -19,7 +19,7 @@
 //! AMM(1/2) (`q = 0.101`). Fixed nodes are decoupled rows; they only cut the matrix into
 //! blocks, each with the same bound.
 //!
-//! A tile of `TILE` (512) rows is solved on a window of `TILE + 2H` rows, `H` (the halo) more on
+//! A tile of `TILE` (1024) rows is solved on a window of `TILE + 2H` rows, `H` (the halo) more on
 //! each side, shifted inward at the bar's ends. The window's solution differs from the whole
 //! solution by the response to the two couplings it cuts, at least `H` rows from any row of the
 //! tile:
@@ -41,7 +41,7 @@
 //! **Shared factors.** A window's factors depend only on its rows of the matrix. Where every
 //! window of a group has the same rows, bit for bit (a bar of uniform element mass `rho A h`,
 //! whatever its stiffness), the group uses one set of factors, `2 (TILE + 2H)` values that stay
-//! in L1 and are broadcast to every lane; consecutive such groups with the same rows share one
+//! in cache and are broadcast to every lane; consecutive such groups with the same rows share one
 //! set. Other groups keep a block of per-window factors in group layout (row `k`: `l_k` of the
 //! 8 windows, then their `1/d_k`). Both give the same bits (the same values enter the same
 //! operations); sharing only removes a stream of 16 B per row from every step (measured in
@@ -49,21 +49,27 @@
 
 use crate::tridiagonal::Tridiagonal;
 
-/// Rows whose solution a window gives (a multiple of 4 and of [`crate::kernel::LANES`]).
-pub(crate) const TILE: usize = 512;
+/// Rows whose solution a window gives (a multiple of 4 and of [`crate::kernel::LANES`]). Chosen
+/// by measurement (benches/RESULTS.md, sixth session; CMM steps, ns per node-step): 1024
+/// against 512 took N = 1e6 from 1.06-1.25 to 0.97-1.02 and left N = 1e5 at 0.84-0.86. A
+/// group's forward results (`8 (TILE + 2H)` values, 70 KB for CMM) no longer fit a 48 KB L1, as
+/// 512's did, but the longer, fewer interruptions of the residual sweep and the halo's smaller
+/// share (7 % of the rows, 14 % with 512) gain more; 1536-2560 were no faster at 1e6 and
+/// slower at 1e5 (a short last group is padded to [`CHAINS`] windows).
+pub(crate) const TILE: usize = 1024;
 
-/// Windows solved side by side (two AVX2 registers of four): with eight, a group's forward
-/// results (`8 (TILE + 2H)` values, 37 KB for CMM) stay in a 48 KB L1 for the backward sweep;
-/// sixteen spilled to L2 and ran slower (benches/RESULTS.md).
+/// Windows solved side by side (two AVX2 registers of four). Sixteen (four AVX2 registers or two
+/// AVX-512 ones) were no faster: the solve is not bound by its recurrences' latency
+/// (benches/RESULTS.md).
 pub(crate) const CHAINS: usize = 8;
 
 // The intrinsics' registers hold these windows.
 #[cfg(target_arch = "x86_64")]
 const _: () = assert!(CHAINS == crate::halo_avx2::CHAINS);
 
-/// The largest halo worth the overlap (half a tile on each side); masses whose inverse decays
-/// more slowly (AMM or RMM-like `beta` near `-1/2`) keep the global factor.
-const MAX_HALO: usize = TILE / 2;
+/// The largest halo worth the overlap (a quarter of a tile on each side); masses whose inverse
+/// decays more slowly (AMM or RMM-like `beta` near `-1/2`) keep the global factor.
+const MAX_HALO: usize = TILE / 4;
 
 /// The truncation bound `C q^H` a halo must reach (see the module docs).
 const TRUNCATION: f64 = 1.0 / (1u128 << 66) as f64;
@@ -158,7 +164,7 @@ pub(crate) struct GroupBuffers {
 
 impl HaloTiles {
     /// Tiles for `m` (fixed rows decoupled: unit diagonal, zero couplings, listed in `fixed`)
-    /// with halo `halo` (a multiple of 4 up to `TILE / 2`, from `halo_rows`); `None` for any
+    /// with halo `halo` (a multiple of 4 up to `TILE / 4`, from `halo_rows`); `None` for any
     /// other halo, when the matrix is shorter than a group of windows (the global factor is as
     /// fast there) or when it is not positive definite (a pivot of its `L D L^T` factorisation
     /// is not positive: the caller's global factor then reports it).

@@ -26,7 +26,7 @@
 //! `k`. RMM adds the two diagonals of `M^-1` (9 words against the lumped step's 7: `u`, `v`
 //! read and written, `k`, `dt/m`, `m`); `a` is formed in the velocity sweep and never stored (a
 //! history forms `(M^-1 r^n)_i` at its node). CMM and AMM with windows add the windows' factors
-//! (2 words and the halo's share, 14 % for CMM) and keep the group's residual and solve in cache
+//! (2 words and the halo's share, 7 % for CMM) and keep the group's residual and solve in cache
 //! (about 9.3 words; `a` not stored either); with the global factor they also copy the residual
 //! out, run the factor's two sweeps over it and a separate velocity pass (about 18 words).
 //! Measured ratios to the lumped step: benches/RESULTS.md, target 3.

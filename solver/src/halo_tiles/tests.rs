@@ -51,7 +51,7 @@ fn halo_is_the_least_multiple_of_four_meeting_the_decay_bound() {
     assert_eq!(halo_rows(scaled_spectral_ratio(0.5)), Some(24));
     // LMM: kappa 1, the inverse is diagonal.
     assert_eq!(halo_rows(scaled_spectral_ratio(1.0)), Some(4));
-    // beta = -0.49: kappa 150, q = 0.849, H = 307 > TILE / 2: no tiles.
+    // beta = -0.49: kappa 150, q = 0.849, H = 307 > TILE / 4: no tiles.
     assert_eq!(halo_rows(scaled_spectral_ratio(-0.49)), None);
     for kappa in [1.0, 1.5, 3.0, 30.0] {
         let h = halo_rows(kappa).unwrap();
