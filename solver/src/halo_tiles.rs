@@ -19,8 +19,8 @@
 //! AMM(1/2) (`q = 0.101`). Fixed nodes are decoupled rows; they only cut the matrix into
 //! blocks, each with the same bound.
 //!
-//! A tile of `TILE` (1024) rows is solved on a window of `TILE + 2H` rows, `H` (the halo) more on
-//! each side, shifted inward at the bar's ends. The window's solution differs from the whole
+//! A tile of `T` rows (512 to 1024, as [`tile_rows`] fits them to the bar) is solved on a
+//! window of `T + 2H` rows, `H` (the halo) more on each side, shifted inward at the bar's ends. The window's solution differs from the whole
 //! solution by the response to the two couplings it cuts, at least `H` rows from any row of the
 //! tile:
 //! `|x_i - x~_i| <= C q^H s sqrt(m_cut/m_i) |x_cut|`, `s = |1 - beta|/3` the largest scaled
@@ -40,7 +40,7 @@
 //!
 //! **Shared factors.** A window's factors depend only on its rows of the matrix. Where every
 //! window of a group has the same rows, bit for bit (a bar of uniform element mass `rho A h`,
-//! whatever its stiffness), the group uses one set of factors, `2 (TILE + 2H)` values that stay
+//! whatever its stiffness), the group uses one set of factors, `2 (T + 2H)` values that stay
 //! in cache and are broadcast to every lane; consecutive such groups with the same rows share one
 //! set. Other groups keep a block of per-window factors in group layout (row `k`: `l_k` of the
 //! 8 windows, then their `1/d_k`). Both give the same bits (the same values enter the same
@@ -49,14 +49,31 @@
 
 use crate::tridiagonal::Tridiagonal;
 
-/// Rows whose solution a window gives (a multiple of 4 and of [`crate::kernel::LANES`]). Chosen
-/// by measurement (benches/RESULTS.md, sixth session; CMM steps, ns per node-step): 1024
-/// against 512 took N = 1e6 from 1.06-1.25 to 0.97-1.02 and left N = 1e5 at 0.84-0.86. A
-/// group's forward results (`8 (TILE + 2H)` values, 70 KB for CMM) no longer fit a 48 KB L1, as
-/// 512's did, but the longer, fewer interruptions of the residual sweep and the halo's smaller
-/// share (7 % of the rows, 14 % with 512) gain more; 1536-2560 were no faster at 1e6 and
-/// slower at 1e5 (a short last group is padded to [`CHAINS`] windows).
-pub(crate) const TILE: usize = 1024;
+/// The longest tile (rows whose solution a window gives). A bar's tiles are as long as
+/// [`tile_rows`] makes them, at most this. Chosen by measurement (benches/RESULTS.md, sixth
+/// session; CMM steps, ns per node-step): tiles of 1024 against 512 took N = 1e6 from 1.06-1.25
+/// to 0.97-1.02 and left N = 1e5 at 0.84-0.86. A group's forward results (`8 (T + 2H)` values,
+/// 70 KB for CMM) no longer fit a 48 KB L1, as 512's did, but the longer, fewer interruptions of
+/// the residual sweep and the halo's smaller share (7 % of the rows, 14 % with 512) gain more;
+/// 1536-2560 were no faster at 1e6.
+pub(crate) const MAX_TILE: usize = 1024;
+
+/// The shortest tile: a matrix shorter than [`CHAINS`] of them keeps the global factor (as fast
+/// there).
+const MIN_TILE: usize = 512;
+
+/// The tile length for a matrix of order `n`: as many groups of [`CHAINS`] tiles as tiles of
+/// [`MAX_TILE`] need, and tiles just long enough (a multiple of [`crate::kernel::LANES`]) for
+/// those groups to cover the rows, so a short last group is not padded with copies of its last
+/// window (with a fixed 1024, a bar of 20 000 nodes solved 24 windows for 20 tiles and its CMM
+/// step ran 0.97-0.99 ns against 0.87-0.90 with 512; benches/RESULTS.md). Between
+/// `CHAINS MIN_TILE` and `CHAINS MAX_TILE` rows it is one group; beyond, between `MAX_TILE / 2`
+/// and `MAX_TILE`.
+pub(crate) fn tile_rows(n: usize) -> usize {
+    let groups = n.div_ceil(CHAINS * MAX_TILE).max(1);
+    n.div_ceil(CHAINS * groups)
+        .next_multiple_of(crate::kernel::LANES)
+}
 
 /// Windows solved side by side (two AVX2 registers of four). Sixteen (four AVX2 registers or two
 /// AVX-512 ones) were no faster: the solve is not bound by its recurrences' latency
@@ -67,9 +84,9 @@ pub(crate) const CHAINS: usize = 8;
 #[cfg(target_arch = "x86_64")]
 const _: () = assert!(CHAINS == crate::halo_avx2::CHAINS);
 
-/// The largest halo worth the overlap (a quarter of a tile on each side); masses whose inverse
-/// decays more slowly (AMM or RMM-like `beta` near `-1/2`) keep the global factor.
-const MAX_HALO: usize = TILE / 4;
+/// The largest halo worth the overlap (a quarter of the longest tile on each side); masses whose
+/// inverse decays more slowly (AMM or RMM-like `beta` near `-1/2`) keep the global factor.
+const MAX_HALO: usize = MAX_TILE / 4;
 
 /// The truncation bound `C q^H` a halo must reach (see the module docs).
 const TRUNCATION: f64 = 1.0 / (1u128 << 66) as f64;
@@ -104,7 +121,9 @@ pub(crate) fn halo_rows(kappa: f64) -> Option<usize> {
 pub struct HaloTiles {
     /// Order of the matrix.
     n: usize,
-    /// Rows of a window, `TILE + 2 H`.
+    /// Rows of a tile ([`tile_rows`]).
+    tile: usize,
+    /// Rows of a window, `tile + 2 H`.
     window: usize,
     /// First row of each window, [`CHAINS`] per group (the last group padded with copies of the
     /// last window).
@@ -164,7 +183,7 @@ pub(crate) struct GroupBuffers {
 
 impl HaloTiles {
     /// Tiles for `m` (fixed rows decoupled: unit diagonal, zero couplings, listed in `fixed`)
-    /// with halo `halo` (a multiple of 4 up to `TILE / 4`, from `halo_rows`); `None` for any
+    /// with halo `halo` (a multiple of 4 up to `MAX_TILE / 4`, from `halo_rows`); `None` for any
     /// other halo, when the matrix is shorter than a group of windows (the global factor is as
     /// fast there) or when it is not positive definite (a pivot of its `L D L^T` factorisation
     /// is not positive: the caller's global factor then reports it).
@@ -176,13 +195,14 @@ impl HaloTiles {
     /// tests compare both).
     fn with_sharing(m: &Tridiagonal, halo: usize, fixed: &[usize], share: bool) -> Option<Self> {
         let n = m.diag.len();
-        let window = TILE + 2 * halo;
-        if !halo.is_multiple_of(4) || halo > MAX_HALO || n < CHAINS * TILE || n < window {
+        let tile = tile_rows(n);
+        let window = tile + 2 * halo;
+        if !halo.is_multiple_of(4) || halo > MAX_HALO || n < CHAINS * MIN_TILE || n < window {
             return None;
         }
-        let tiles = n.div_ceil(TILE);
+        let tiles = n.div_ceil(tile);
         let groups = tiles.div_ceil(CHAINS);
-        let start_of = |tile: usize| (tile * TILE).saturating_sub(halo).min(n - window);
+        let start_of = |t: usize| (t * tile).saturating_sub(halo).min(n - window);
         let mut starts = Vec::with_capacity(groups * CHAINS);
         let (mut shared, mut lanes, mut group_factors) = (Vec::new(), Vec::new(), Vec::new());
         // The first row of the window whose factors the last shared set holds.
@@ -204,7 +224,7 @@ impl HaloTiles {
             let group_starts: [usize; CHAINS] =
                 std::array::from_fn(|c| start_of((g * CHAINS + c).min(tiles - 1)));
             let low = (0..CHAINS)
-                .map(|c| (g * CHAINS + c).min(tiles - 1) * TILE - group_starts[c])
+                .map(|c| (g * CHAINS + c).min(tiles - 1) * tile - group_starts[c])
                 .min()
                 .unwrap_or(window);
             lowest.push(low / 4 * 4);
@@ -233,6 +253,7 @@ impl HaloTiles {
         }
         Some(Self {
             n,
+            tile,
             window,
             starts,
             group_factors,
@@ -258,7 +279,13 @@ impl HaloTiles {
         self.lowest.len()
     }
 
-    /// Rows of a window (`TILE + 2 H`).
+    /// Rows of a tile.
+    #[cfg(test)]
+    pub(crate) fn tile(&self) -> usize {
+        self.tile
+    }
+
+    /// Rows of a window (tile + `2 H`).
     pub fn window(&self) -> usize {
         self.window
     }
@@ -275,8 +302,9 @@ impl HaloTiles {
         g: usize,
     ) -> impl Iterator<Item = (usize, std::ops::Range<usize>)> {
         let (n, first) = (self.n, g * CHAINS);
-        (first..n.div_ceil(TILE).min(first + CHAINS))
-            .map(move |tile| (tile - first, tile * TILE..((tile + 1) * TILE).min(n)))
+        let tile = self.tile;
+        (first..n.div_ceil(tile).min(first + CHAINS))
+            .map(move |t| (t - first, t * tile..((t + 1) * tile).min(n)))
     }
 
     /// Work arrays for [`Self::solve_group`].
@@ -368,13 +396,13 @@ impl HaloTiles {
         if self.fixed.binary_search(&i).is_ok() {
             return 0.0;
         }
-        let (tile, window) = (i / TILE, self.window);
+        let (tile, window) = (i / self.tile, self.window);
         let (g, c) = (tile / CHAINS, tile % CHAINS);
         let start = self.starts[g * CHAINS + c];
         let factors = self.factors(g);
         let lower = |k: usize| factors.row(k, c).0;
         let pivot = |k: usize| factors.row(k, c).1;
-        let mut z = [0.0; TILE + 2 * MAX_HALO];
+        let mut z = [0.0; MAX_TILE + 2 * MAX_HALO];
         z[0] = r[start];
         for k in 1..window {
             z[k] = (-lower(k - 1)).mul_add(z[k - 1], r[start + k]);
@@ -389,10 +417,10 @@ impl HaloTiles {
     /// `+0` at the fixed rows of group `g`'s tiles (a decoupled row's window value is its
     /// right-hand side, not 0).
     fn zero_fixed(&self, g: usize, buffers: &mut GroupBuffers) {
-        let rows = g * CHAINS * TILE..((g + 1) * CHAINS * TILE).min(self.n);
+        let rows = g * CHAINS * self.tile..((g + 1) * CHAINS * self.tile).min(self.n);
         let from = self.fixed.partition_point(|&i| i < rows.start);
         for &i in self.fixed[from..].iter().take_while(|&&i| i < rows.end) {
-            let c = i / TILE - g * CHAINS;
+            let c = i / self.tile - g * CHAINS;
             let offset = i - self.starts[g * CHAINS + c];
             buffers.solution[c * self.window + offset] = 0.0;
         }

@@ -409,7 +409,7 @@ impl MatrixCentralDifference {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::halo_tiles::{CHAINS, TILE};
+    use crate::halo_tiles::{CHAINS, MAX_TILE, tile_rows};
     use crate::mass::MassKind;
     use crate::{Support, Supports};
 
@@ -424,7 +424,10 @@ mod tests {
         // Several blocks, loads inside a block, at a block edge and at the last node; and a
         // mesh shorter than a block. The lumped (diagonal) operator too: the kernel accepts any
         // mass (a step with it once did nothing at all).
-        let windowed = 2 * CHAINS * TILE + 333;
+        let windowed = 2 * CHAINS * MAX_TILE + 333;
+        // Its tiles: three groups of 704 rows.
+        let tile = tile_rows(windowed + 1);
+        assert_eq!(tile, 704);
         for (n, forces) in [
             (
                 3 * BLOCK + 37,
@@ -446,23 +449,23 @@ mod tests {
             (2, vec![(0, 1.0), (1, 0.5), (2, -1.0)]),
             // n elements, n + 1 nodes: the last node alone in the last block.
             (2 * BLOCK, vec![(0, 1.0)]),
-            // CMM and AMM solve in windows ([`crate::halo_tiles`]): two groups and a short
-            // one, loads on a tile edge, a group edge, inside the short last tile and at the
-            // last two nodes.
+            // CMM and AMM solve in windows ([`crate::halo_tiles`]): two groups and a shorter
+            // one, loads on a tile edge, a group edge, inside the last group and at the last
+            // two nodes (in its short last tile).
             (
                 windowed,
                 vec![
                     (0, 1.0),
-                    (TILE - 1, -0.5),
-                    (TILE, 0.5),
-                    (CHAINS * TILE, -1.0),
-                    (2 * CHAINS * TILE + 300, 2.0),
+                    (tile - 1, -0.5),
+                    (tile, 0.5),
+                    (CHAINS * tile, -1.0),
+                    (2 * CHAINS * tile + 300, 2.0),
                     (windowed - 1, 0.25),
                     (windowed, 1.0), // the last node
                 ],
             ),
         ] {
-            let steps = if n > CHAINS * TILE { 40 } else { 200 };
+            let steps = if n == windowed { 40 } else { 200 };
             let both_fixed = Supports {
                 left: Support::Fixed,
                 right: Support::Fixed,
@@ -494,7 +497,7 @@ mod tests {
                     "{kind:?}: the bar moved"
                 );
                 // Every node; with windows (each node's own solve) every 7th and the tile edges.
-                let check = |i: usize| n < CHAINS * TILE || i.is_multiple_of(7) || i % TILE < 2;
+                let check = |i: usize| n != windowed || i.is_multiple_of(7) || i % tile < 2;
                 for i in (0..=n).filter(|&i| check(i)) {
                     assert_eq!(blocked.acceleration_at(i), whole.a[i], "node {i}");
                 }
@@ -512,7 +515,7 @@ mod tests {
             left: Support::Fixed,
             right: Support::Fixed,
         };
-        let (long, short) = (2 * CHAINS * TILE + 333, 50);
+        let (long, short) = (2 * CHAINS * MAX_TILE + 333, 50);
         for (n, supports) in [long, short]
             .into_iter()
             .flat_map(|n| [(n, Supports::FREE_FIXED), (n, both_fixed)])

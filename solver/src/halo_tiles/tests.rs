@@ -70,13 +70,18 @@ fn halo_is_the_least_multiple_of_four_meeting_the_decay_bound() {
 
 #[test]
 fn short_matrices_and_slow_decay_keep_the_global_factor() {
-    let m = mass(&vec![1.0; CHAINS * TILE - 2], 0.0, &[]);
+    let m = mass(&vec![1.0; CHAINS * MIN_TILE - 2], 0.0, &[]);
     assert!(
         HaloTiles::new(&m, 36, &[]).is_none(),
-        "shorter than a group"
+        "shorter than a group of the shortest tiles"
     );
-    let m = mass(&vec![1.0; CHAINS * TILE], 0.0, &[]);
-    assert!(HaloTiles::new(&m, 36, &[]).is_some());
+    let m = mass(&vec![1.0; CHAINS * MIN_TILE], 0.0, &[]);
+    let tiles = HaloTiles::new(&m, 36, &[]).unwrap();
+    assert_eq!(
+        tiles.tile(),
+        MIN_TILE + 8,
+        "one group, tiles just long enough"
+    );
     assert!(
         HaloTiles::new(&m, 34, &[]).is_none(),
         "halo not a multiple of 4"
@@ -85,18 +90,19 @@ fn short_matrices_and_slow_decay_keep_the_global_factor() {
 
 #[test]
 fn windows_give_the_global_solution_to_round_off() {
-    // One whole group; a partial last group whose last tile is short and whose window is
-    // shifted inward; fixed rows at both ends, inside a tile and on a tile edge.
+    // One whole group of the longest tiles; four groups of shorter ones (800 rows: the rows
+    // spread over whole groups) with fixed rows at both ends, inside a tile and on a tile edge;
+    // two groups whose last row is fixed; and the longest tiles again, sixteen groups whose last
+    // tile is one fixed row (the seed bar's fixed right end), a fixed row ending a tile.
+    let (short, tiled) = (3 * CHAINS * MAX_TILE + 777, 800);
+    let single = 16 * CHAINS * MAX_TILE - MAX_TILE;
+    assert_eq!(tile_rows(short + 1), tiled);
+    assert_eq!(tile_rows(single + 1), MAX_TILE);
     for (elements, fixed) in [
-        (CHAINS * TILE - 1, vec![]),
-        (3 * CHAINS * TILE + 777, vec![0, 5 * TILE, 7 * TILE + 100]),
-        (CHAINS * TILE + 40, vec![CHAINS * TILE + 40]),
-        // The last tile is one fixed row (the seed bar's fixed right end); a fixed row ends a
-        // tile.
-        (
-            CHAINS * TILE + TILE,
-            vec![3 * TILE - 1, CHAINS * TILE + TILE],
-        ),
+        (CHAINS * MAX_TILE - 1, vec![]),
+        (short, vec![0, 5 * tiled, 7 * tiled + 100]),
+        (CHAINS * MAX_TILE + 40, vec![CHAINS * MAX_TILE + 40]),
+        (single, vec![3 * MAX_TILE - 1, single]),
     ] {
         for (beta, uniform) in [(0.0, true), (0.0, false), (0.5, false), (-0.45, false)] {
             let masses = if uniform {
@@ -108,6 +114,9 @@ fn windows_give_the_global_solution_to_round_off() {
             let halo = halo_rows(scaled_spectral_ratio(beta)).unwrap();
             let tiles = HaloTiles::new(&m, halo, &fixed).unwrap();
             let n = elements + 1;
+            if elements == single {
+                assert_eq!(n % tiles.tile(), 1, "the last tile is one row");
+            }
             let r = right_hand_side(n);
             let mut exact = r.clone();
             fixed.iter().for_each(|&i| exact[i] = 0.0);
@@ -131,8 +140,8 @@ fn windows_give_the_global_solution_to_round_off() {
                 assert_eq!(x[i].to_bits(), 0, "fixed row {i} is +0");
             }
             // One row's own solve: the same bits as the whole solve's.
-            for i in
-                (0..n).filter(|i| i % 97 == 0 || i % TILE < 2 || i + 2 > n || fixed.contains(i))
+            for i in (0..n)
+                .filter(|i| i % 97 == 0 || i % tiles.tile() < 2 || i + 2 > n || fixed.contains(i))
             {
                 assert_eq!(
                     tiles.solution_at(i, &r).to_bits(),
@@ -147,8 +156,8 @@ fn windows_give_the_global_solution_to_round_off() {
 #[test]
 fn intrinsics_and_portable_loops_give_the_same_bits() {
     // Per-window factors (graded masses) and shared ones (uniform masses).
-    let elements = 2 * CHAINS * TILE + 333;
-    let fixed = [0, 3 * TILE + 1];
+    let elements = 2 * CHAINS * MAX_TILE + 333;
+    let fixed = [0, 3 * MAX_TILE + 1];
     for masses in [graded_masses(elements), vec![0.25; elements]] {
         let m = mass(&masses, 0.0, &fixed);
         let intrinsics = HaloTiles::new(&m, 36, &fixed).unwrap();
@@ -187,9 +196,14 @@ fn groups_of_equal_rows_share_their_factors_and_give_the_same_bits() {
     // own. Graded: nothing to share. A fixed row inside a group's windows makes that group
     // different; the groups after it share the set of the groups before.
     let groups = 6;
-    let elements = groups * CHAINS * TILE - 100;
+    let elements = groups * CHAINS * MAX_TILE - 100;
+    assert_eq!(
+        tile_rows(elements + 1),
+        MAX_TILE,
+        "groups of the longest tiles"
+    );
     let layered: Vec<f64> = (0..elements)
-        .map(|e| if e < 3 * CHAINS * TILE { 0.25 } else { 2.0 })
+        .map(|e| if e < 3 * CHAINS * MAX_TILE { 0.25 } else { 2.0 })
         .collect();
     for (masses, fixed, expected) in [
         (vec![0.25; elements], vec![], (groups - 2, 1)),
@@ -197,7 +211,7 @@ fn groups_of_equal_rows_share_their_factors_and_give_the_same_bits() {
         (graded_masses(elements), vec![], (0, 0)),
         (
             vec![0.25; elements],
-            vec![2 * CHAINS * TILE + 4 * TILE],
+            vec![2 * CHAINS * MAX_TILE + 4 * MAX_TILE],
             (groups - 3, 1),
         ),
     ] {
