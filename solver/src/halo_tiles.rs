@@ -20,9 +20,9 @@
 //! blocks, each with the same bound.
 //!
 //! A tile of `T` rows (512 to 1024, as [`tile_rows`] fits them to the bar) is solved on a
-//! window of `T + 2H` rows, `H` (the halo) more on each side, shifted inward at the bar's ends. The window's solution differs from the whole
-//! solution by the response to the two couplings it cuts, at least `H` rows from any row of the
-//! tile:
+//! window of `T + 2H` rows, `H` (the halo) more on each side, shifted inward at the bar's ends.
+//! The window's solution differs from the whole solution by the response to the two couplings it
+//! cuts, at least `H` rows from any row of the tile:
 //! `|x_i - x~_i| <= C q^H s sqrt(m_cut/m_i) |x_cut|`, `s = |1 - beta|/3` the largest scaled
 //! coupling `M_i,i+1 / sqrt(A_i A_i+1)` and `x_cut` the solution just outside the window. `H` is
 //! the least multiple of 4 with `C q^H <= 2^-66`: with `s = 1/3` (CMM) the truncation stays below
@@ -76,8 +76,8 @@ pub(crate) fn tile_rows(n: usize) -> usize {
 }
 
 /// Windows solved side by side (two AVX2 registers of four). Sixteen (four AVX2 registers or two
-/// AVX-512 ones) were no faster: the solve is not bound by its recurrences' latency
-/// (benches/RESULTS.md).
+/// AVX-512 ones) were no faster: past eight, the solve is bound by its throughput, not by its
+/// recurrences' latency (benches/RESULTS.md, sixth session).
 pub(crate) const CHAINS: usize = 8;
 
 // The intrinsics' registers hold these windows.

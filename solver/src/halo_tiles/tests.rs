@@ -51,7 +51,7 @@ fn halo_is_the_least_multiple_of_four_meeting_the_decay_bound() {
     assert_eq!(halo_rows(scaled_spectral_ratio(0.5)), Some(24));
     // LMM: kappa 1, the inverse is diagonal.
     assert_eq!(halo_rows(scaled_spectral_ratio(1.0)), Some(4));
-    // beta = -0.49: kappa 150, q = 0.849, H = 307 > TILE / 4: no tiles.
+    // beta = -0.49: kappa 150, q = 0.849, H = 307 > MAX_TILE / 4: no tiles.
     assert_eq!(halo_rows(scaled_spectral_ratio(-0.49)), None);
     for kappa in [1.0, 1.5, 3.0, 30.0] {
         let h = halo_rows(kappa).unwrap();
@@ -91,13 +91,15 @@ fn short_matrices_and_slow_decay_keep_the_global_factor() {
 #[test]
 fn windows_give_the_global_solution_to_round_off() {
     // One whole group of the longest tiles; four groups of shorter ones (800 rows: the rows
-    // spread over whole groups) with fixed rows at both ends, inside a tile and on a tile edge;
-    // two groups whose last row is fixed; and the longest tiles again, sixteen groups whose last
-    // tile is one fixed row (the seed bar's fixed right end), a fixed row ending a tile.
+    // spread over whole groups) with fixed rows at the left end, on a tile edge and inside a
+    // tile; two groups of the shortest tiles (520 rows) whose last row is fixed; and the longest
+    // tiles again, sixteen groups whose last tile is one fixed row (the seed bar's fixed right
+    // end), a fixed row ending a tile.
     let (short, tiled) = (3 * CHAINS * MAX_TILE + 777, 800);
     let single = 16 * CHAINS * MAX_TILE - MAX_TILE;
     assert_eq!(tile_rows(short + 1), tiled);
     assert_eq!(tile_rows(single + 1), MAX_TILE);
+    assert_eq!(tile_rows(CHAINS * MAX_TILE + 41), 520);
     for (elements, fixed) in [
         (CHAINS * MAX_TILE - 1, vec![]),
         (short, vec![0, 5 * tiled, 7 * tiled + 100]),
