@@ -29,7 +29,8 @@ fn main() {
         Some("rmm") => MassKind::Reciprocal { beta: 0.5 },
         Some("amm") => MassKind::Averaged { beta: 0.5 },
         Some("lmm") => MassKind::Lumped,
-        _ => MassKind::Consistent,
+        Some("cmm") | None => MassKind::Consistent,
+        Some(other) => panic!("MASS: {other} is not one of cmm, amm, rmm, lmm"),
     };
     let which = arg(4).unwrap_or("both");
     let model = courant_solver::fixtures::graded_seed_bar(n).expect("bar");

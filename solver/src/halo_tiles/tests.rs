@@ -89,6 +89,26 @@ fn short_matrices_and_slow_decay_keep_the_global_factor() {
 }
 
 #[test]
+fn tiles_fit_the_bar_in_as_many_groups_as_the_longest_tiles_need() {
+    // `tile_rows`: a multiple of LANES between MIN_TILE and MAX_TILE from a group of the
+    // shortest tiles on; no more groups than tiles of MAX_TILE would take; and the groups' tiles
+    // cover the rows with less than LANES rows to spare per tile (a fixed 1024 spares 4576 of
+    // 24 576 at n = 20 000: a padded last group).
+    let lanes = crate::kernel::LANES;
+    for n in (CHAINS * MIN_TILE..300_000).step_by(37) {
+        let tile = tile_rows(n);
+        assert!(tile.is_multiple_of(lanes), "n {n}: {tile}");
+        assert!((MIN_TILE..=MAX_TILE).contains(&tile), "n {n}: {tile}");
+        let groups = n.div_ceil(tile).div_ceil(CHAINS);
+        assert_eq!(groups, n.div_ceil(CHAINS * MAX_TILE), "n {n}: {tile}");
+        assert!(
+            groups * CHAINS * tile < n + groups * CHAINS * lanes,
+            "n {n}: {tile}"
+        );
+    }
+}
+
+#[test]
 fn windows_give_the_global_solution_to_round_off() {
     // One whole group of the longest tiles; four groups of shorter ones (800 rows: the rows
     // spread over whole groups) with fixed rows at the left end, on a tile edge and inside a
