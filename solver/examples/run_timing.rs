@@ -11,22 +11,14 @@
 //! ```
 
 use courant_solver::integrator::OutputRequest;
-use courant_solver::{CentralDifference, MassKind, MassOperator};
+use courant_solver::{CentralDifference, MassOperator};
 use std::time::Instant;
 
+mod harness;
+
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let arg = |i: usize| args.get(i).map(String::as_str);
-    let n: usize = arg(1).map_or(1_000_000, |s| s.parse().expect("N"));
-    let steps: usize = arg(2).map_or(300, |s| s.parse().expect("STEPS"));
-    let kind = match arg(3) {
-        Some("rmm") => MassKind::Reciprocal { beta: 0.5 },
-        Some("amm") => MassKind::Averaged { beta: 0.5 },
-        Some("lmm") => MassKind::Lumped,
-        Some("cmm") | None => MassKind::Consistent,
-        Some(other) => panic!("MASS: {other} is not one of cmm, amm, rmm, lmm"),
-    };
-    let reps: usize = arg(4).map_or(5, |s| s.parse().expect("REPS"));
+    let (n, steps, kind, reps) = harness::arguments(1_000_000, 300);
+    let reps: usize = reps.map_or(5, |s| s.parse().expect("REPS: a whole number"));
     let model = courant_solver::fixtures::graded_seed_bar(n).expect("bar");
     let element_dt = model.bar().stiffest_element().1;
     let request = OutputRequest {

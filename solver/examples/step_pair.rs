@@ -10,10 +10,11 @@
 //!   WHICH: both (default) | matrix | lumped | check (the mass check alone, ms)
 //! ```
 
-use courant_solver::MassKind;
 use courant_solver::fixtures::smooth_half_velocity;
 use courant_solver::kernel::LumpedCentralDifference;
 use std::time::Instant;
+
+mod harness;
 
 fn median(mut times: Vec<f64>) -> f64 {
     times.sort_by(f64::total_cmp);
@@ -21,18 +22,8 @@ fn median(mut times: Vec<f64>) -> f64 {
 }
 
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let arg = |i: usize| args.get(i).map(String::as_str);
-    let n: usize = arg(1).map_or(100_000, |s| s.parse().expect("N"));
-    let steps: usize = arg(2).map_or(2000, |s| s.parse().expect("STEPS"));
-    let kind = match arg(3) {
-        Some("rmm") => MassKind::Reciprocal { beta: 0.5 },
-        Some("amm") => MassKind::Averaged { beta: 0.5 },
-        Some("lmm") => MassKind::Lumped,
-        Some("cmm") | None => MassKind::Consistent,
-        Some(other) => panic!("MASS: {other} is not one of cmm, amm, rmm, lmm"),
-    };
-    let which = arg(4).unwrap_or("both");
+    let (n, steps, kind, which) = harness::arguments(100_000, 2000);
+    let which = which.as_deref().unwrap_or("both");
     let model = courant_solver::fixtures::graded_seed_bar(n).expect("bar");
     let element_dt = model.bar().stiffest_element().1;
     let mut matrix = courant_solver::fixtures::matrix_step(&model, kind).expect("mass");
