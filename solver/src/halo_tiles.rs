@@ -76,8 +76,10 @@ pub(crate) fn tile_rows(n: usize) -> usize {
 }
 
 /// Windows solved side by side (two AVX2 registers of four). Sixteen (four AVX2 registers or two
-/// AVX-512 ones) were no faster: past eight, the solve is bound by its throughput, not by its
-/// recurrences' latency (benches/RESULTS.md, sixth session).
+/// AVX-512 ones) were no faster (benches/RESULTS.md, sixth session), nor was a group's forward
+/// sweep interleaved with the previous group's backward one (four chains in flight, seventh
+/// session): the solve is bound by its throughput (likely its rows' traffic to L2), not by its
+/// recurrences' latency.
 pub(crate) const CHAINS: usize = 8;
 
 // The intrinsics' registers hold these windows.
