@@ -1,5 +1,5 @@
-//! The group solve of [`crate::halo_tiles`] in AVX2 intrinsics: eight windows' recurrences
-//! in two registers (lane `i` of register `q` is window `4q + i`).
+//! The group solve of [`crate::halo_tiles`] in AVX2 intrinsics: twelve windows' recurrences
+//! in three registers (lane `i` of register `q` is window `4q + i`).
 //!
 //! ```text
 //!   forward   z_k = r_k - l_{k-1} z_{k-1}          (z_0 = r_0)       rows 0 .. window
@@ -21,7 +21,7 @@ use std::arch::x86_64::{
 };
 
 /// Windows per group (`halo_tiles::CHAINS`; checked at compile time there).
-pub(crate) const CHAINS: usize = 8;
+pub(crate) const CHAINS: usize = 12;
 
 /// Registers of four windows.
 const QUADS: usize = CHAINS / 4;

@@ -1,6 +1,6 @@
 //! Tiled solves of an SPD tridiagonal mass (CMM, AMM) on overlapping windows: `M^-1 r` as
 //! independent local solves, so the step can solve each stretch of the bar while its residual is
-//! still in cache, and eight recurrences run side by side in two AVX2 registers.
+//! still in cache, and twelve recurrences run side by side in three AVX2 registers.
 //!
 //! Why a window suffices. The inverse of a banded SPD matrix decays geometrically away from its
 //! diagonal (Demko, Moss and Smith, Math. Comp. 43 (1984) 491-499, the positive definite case): for a
@@ -33,9 +33,9 @@
 //! Each window is factored once (`L D L^T`, no pivoting: its rows are a principal submatrix of
 //! an SPD matrix); a step runs, per window, the forward recurrence `z_k = r_k - l_{k-1} z_{k-1}`
 //! and the backward one `x_k = z_k / d_k - l_k x_{k+1}`, each a fused multiply-add (one
-//! rounding) per row on a chain of latencies. `CHAINS` (8) windows form a group and run
+//! rounding) per row on a chain of latencies. `CHAINS` (12) windows form a group and run
 //! interleaved; the residual rows are transposed in 4 x 4 blocks into group layout (row `k` of
-//! the 8 windows side by side) and the solution back into window-major order (`halo_avx2`).
+//! the 12 windows side by side) and the solution back into window-major order (`halo_avx2`).
 //! The portable loops do the same arithmetic: the same bits with or without AVX2.
 //!
 //! **Shared factors.** A window's factors depend only on its rows of the matrix. Where every
@@ -43,7 +43,7 @@
 //! whatever its stiffness), the group uses one set of factors, `2 (T + 2H)` values that stay
 //! in cache and are broadcast to every lane; consecutive such groups with the same rows share one
 //! set. Other groups keep a block of per-window factors in group layout (row `k`: `l_k` of the
-//! 8 windows, then their `1/d_k`). Both give the same bits (the same values enter the same
+//! 12 windows, then their `1/d_k`). Both give the same bits (the same values enter the same
 //! operations); sharing only removes a stream of 16 B per row from every step (measured in
 //! `benches/RESULTS.md`).
 
@@ -52,15 +52,19 @@ use crate::tridiagonal::Tridiagonal;
 /// The longest tile (rows whose solution a window gives). A bar's tiles are as long as
 /// [`tile_rows`] makes them, at most this. Chosen by measurement (benches/RESULTS.md, sixth
 /// session; CMM steps, ns per node-step): tiles of 1024 against 512 took N = 1e6 from 1.06-1.25
-/// to 0.97-1.02 and left N = 1e5 at 0.84-0.86. A group's forward results (`8 (T + 2H)` values,
-/// 70 KB for CMM) no longer fit a 48 KB L1, as 512's did, but the longer, fewer interruptions of
-/// the residual sweep and the halo's smaller share (7 % of the rows, 14 % with 512) gain more;
-/// 1536-2560 were no faster at 1e6.
+/// to 0.97-1.02 and left N = 1e5 at 0.84-0.86. A group's forward results (`CHAINS (T + 2H)`
+/// values: 105 KB for CMM with twelve windows, 70 KB with eight) no longer fit a 48 KB L1, as
+/// 512's did, but the longer, fewer interruptions of the residual sweep and the halo's smaller
+/// share (7 % of the rows, 14 % with 512) gain more; 1536-2560 were no faster at 1e6, nor were
+/// 768, 896 and 1280 with twelve windows (eighth session).
 pub(crate) const MAX_TILE: usize = 1024;
 
 /// The shortest tile: a matrix shorter than [`CHAINS`] of them keeps the global factor (as fast
-/// there).
-const MIN_TILE: usize = 512;
+/// there): 4096 rows shared by the windows of one group, rounded up to a multiple of
+/// [`crate::kernel::LANES`] (windows pay from 4096 rows; benches/RESULTS.md, fourth session).
+const MIN_TILE: usize = 4096usize
+    .div_ceil(CHAINS)
+    .next_multiple_of(crate::kernel::LANES);
 
 /// The tile length for a matrix of order `n`: as many groups of [`CHAINS`] tiles as tiles of
 /// [`MAX_TILE`] need, and tiles just long enough (a multiple of [`crate::kernel::LANES`]) for
@@ -75,12 +79,15 @@ pub(crate) fn tile_rows(n: usize) -> usize {
         .next_multiple_of(crate::kernel::LANES)
 }
 
-/// Windows solved side by side (two AVX2 registers of four). Sixteen (four AVX2 registers or two
-/// AVX-512 ones) were no faster (benches/RESULTS.md, sixth session), nor was a group's forward
-/// sweep interleaved with the previous group's backward one (four chains in flight, seventh
-/// session): the solve is bound by its throughput (likely its rows' traffic to L2), not by its
-/// recurrences' latency.
-pub(crate) const CHAINS: usize = 8;
+/// Windows solved side by side (three AVX2 registers of four). Chosen by measurement
+/// (benches/RESULTS.md, eighth session; criterion, ns per node-step): twelve against eight took
+/// CMM at N = 1e5 from 0.805-0.809 to 0.778-0.796 and at 1e6 from 0.938-0.965 to 0.895-0.908,
+/// AMM at 1e6 from 0.922-0.945 to 0.825-0.870; bars of 9000 and 50 000 nodes ran 7-13 %
+/// faster, 20 000 nodes 0-9 % slower, CMM on a bar of graded density at 1e6 3-5 % slower.
+/// Sixteen (four AVX2 registers) were no faster than eight (sixth and eighth sessions), nor were
+/// sixteen in two AVX-512 registers or a group's forward sweep interleaved with the previous
+/// group's backward one (seventh session).
+pub(crate) const CHAINS: usize = 12;
 
 // The intrinsics' registers hold these windows.
 #[cfg(target_arch = "x86_64")]

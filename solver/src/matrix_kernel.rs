@@ -425,9 +425,9 @@ mod tests {
         // mesh shorter than a block. The lumped (diagonal) operator too: the kernel accepts any
         // mass (a step with it once did nothing at all).
         let windowed = 2 * CHAINS * MAX_TILE + 333;
-        // Its tiles: three groups of 704 rows.
+        // Its tiles: three groups of 696 rows.
         let tile = tile_rows(windowed + 1);
-        assert_eq!(tile, 704);
+        assert_eq!(tile, 696);
         for (n, forces) in [
             (
                 3 * BLOCK + 37,

@@ -111,10 +111,10 @@ fn every_time_stepping_kernel_steps_without_allocating() {
     );
 
     // CMM, AMM and RMM on the 1000-element bar (CMM and AMM: the global factor; RMM's `C` too),
-    // and on a bar long enough for windows (two groups of 8 x 512 rows; RMM's `C` in windows
-    // for its mass check), with the mass check (`staggered_kinetic_from_mass`) and one node's
-    // acceleration as a time loop asks for them.
-    let long = graded_seed_bar(2 * 8 * 512).unwrap();
+    // and on a bar long enough for windows (two groups of 12 windows of 520 rows; RMM's `C` in
+    // windows for its mass check), with the mass check (`staggered_kinetic_from_mass`) and one
+    // node's acceleration as a time loop asks for them.
+    let long = graded_seed_bar(2 * 12 * 512).unwrap();
     for (model, kind) in [
         (&model, MassKind::Consistent),
         (&model, MassKind::Averaged { beta: 0.5 }),
