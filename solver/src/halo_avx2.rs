@@ -25,6 +25,7 @@ pub(crate) const CHAINS: usize = 12;
 
 /// Registers of four windows.
 const QUADS: usize = CHAINS / 4;
+const _: () = assert!(CHAINS.is_multiple_of(4), "whole registers of four windows");
 
 /// Rows `0..4` of `m` (four registers) become its columns.
 #[inline(always)]

@@ -53,10 +53,11 @@ use crate::tridiagonal::Tridiagonal;
 /// [`tile_rows`] makes them, at most this. Chosen by measurement (benches/RESULTS.md, sixth
 /// session; CMM steps, ns per node-step): tiles of 1024 against 512 took N = 1e6 from 1.06-1.25
 /// to 0.97-1.02 and left N = 1e5 at 0.84-0.86. A group's forward results (`CHAINS (T + 2H)`
-/// values: 105 KB for CMM with twelve windows, 70 KB with eight) no longer fit a 48 KB L1, as
-/// 512's did, but the longer, fewer interruptions of the residual sweep and the halo's smaller
-/// share (7 % of the rows, 14 % with 512) gain more; 1536-2560 were no faster at 1e6, nor were
-/// 768, 896 and 1280 with twelve windows (eighth session).
+/// values: 105 KB for CMM with twelve windows, 70 KB with eight) do not fit a 48 KB L1 (with
+/// eight windows 512's did), but the longer, fewer interruptions of the residual sweep and the
+/// halo's smaller share (7 % of the rows, 14 % with 512) gain more; 1536-2560 were no faster at
+/// 1e6. With twelve windows (eighth session) 768 and 896 were slower at both sizes, and 1280 as
+/// fast at 1e6 (0.885-0.910 against 0.896-0.917) but slower at 1e5 (0.810 against 0.771-0.778).
 pub(crate) const MAX_TILE: usize = 1024;
 
 /// The shortest tile: a matrix shorter than [`CHAINS`] of them keeps the global factor (as fast
@@ -84,9 +85,10 @@ pub(crate) fn tile_rows(n: usize) -> usize {
 /// CMM at N = 1e5 from 0.805-0.809 to 0.778-0.796 and at 1e6 from 0.938-0.965 to 0.895-0.908,
 /// AMM at 1e6 from 0.922-0.945 to 0.825-0.870; bars of 9000 and 50 000 nodes ran 7-13 %
 /// faster, 20 000 nodes 0-9 % slower, CMM on a bar of graded density at 1e6 3-5 % slower.
-/// Sixteen (four AVX2 registers) were no faster than eight (sixth and eighth sessions), nor were
-/// sixteen in two AVX-512 registers or a group's forward sweep interleaved with the previous
-/// group's backward one (seventh session).
+/// Sixteen in four AVX2 registers ran 0.842-0.848 at 1e5 against twelve's 0.771-0.778 and about
+/// as fast as twelve at 1e6 (harness, eighth session); sixteen in two AVX-512 registers (sixth
+/// session) and a group's forward sweep interleaved with the previous group's backward one
+/// (seventh session) were no faster than eight.
 pub(crate) const CHAINS: usize = 12;
 
 // The intrinsics' registers hold these windows.

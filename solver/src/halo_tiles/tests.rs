@@ -112,7 +112,8 @@ fn tiles_fit_the_bar_in_as_many_groups_as_the_longest_tiles_need() {
 fn windows_give_the_global_solution_to_round_off() {
     // One whole group of the longest tiles; four groups of shorter ones (792 rows: the rows
     // spread over whole groups) with fixed rows at the left end, on a tile edge and inside a
-    // tile; two groups of the shortest tiles (520 rows) whose last row is fixed; and the longest
+    // tile; two groups of the shortest tiles two groups can have (520 rows) whose last row is
+    // fixed; and the longest
     // tiles again, sixteen groups whose last tile is one fixed row (the seed bar's fixed right
     // end), a fixed row ending a tile.
     let (short, tiled) = (3 * CHAINS * MAX_TILE + 777, 792);
