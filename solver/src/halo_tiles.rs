@@ -19,7 +19,7 @@
 //! AMM(1/2) (`q = 0.101`). Fixed nodes are decoupled rows; they only cut the matrix into
 //! blocks, each with the same bound.
 //!
-//! A tile of `T` rows (512 to 1024, as [`tile_rows`] fits them to the bar) is solved on a
+//! A tile of `T` rows (344 to 1024, as [`tile_rows`] fits them to the bar) is solved on a
 //! window of `T + 2H` rows, `H` (the halo) more on each side, shifted inward at the bar's ends.
 //! The window's solution differs from the whole solution by the response to the two couplings it
 //! cuts, at least `H` rows from any row of the tile:

@@ -113,9 +113,8 @@ fn windows_give_the_global_solution_to_round_off() {
     // One whole group of the longest tiles; four groups of shorter ones (792 rows: the rows
     // spread over whole groups) with fixed rows at the left end, on a tile edge and inside a
     // tile; two groups of the shortest tiles two groups can have (520 rows) whose last row is
-    // fixed; and the longest
-    // tiles again, sixteen groups whose last tile is one fixed row (the seed bar's fixed right
-    // end), a fixed row ending a tile.
+    // fixed; and the longest tiles again, sixteen groups whose last tile is one fixed row (the
+    // seed bar's fixed right end), a fixed row ending a tile.
     let (short, tiled) = (3 * CHAINS * MAX_TILE + 777, 792);
     let single = 16 * CHAINS * MAX_TILE - MAX_TILE;
     assert_eq!(tile_rows(short + 1), tiled);
