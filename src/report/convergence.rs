@@ -67,8 +67,9 @@ pub fn convergence_figure(result: &ConvergenceResult) -> Option<String> {
                 .without_legend()
         })
         .collect();
-    // The slope theory expects for each norm with an order band (the band's middle), through the
-    // finest mesh, dashed in the norm's colour.
+    // For each norm with an order band, a dashed guide in the norm's colour through the finest
+    // mesh at the band's middle slope, labelled with the band itself (the middle alone would
+    // read as a prediction: "slope -0.07" for a max error that theory says does not converge).
     let guides: Vec<Series> = lines
         .iter()
         .zip(result.study.bands)
@@ -80,7 +81,7 @@ pub fn convergence_figure(result: &ConvergenceResult) -> Option<String> {
                 let &(n_0, _) = line.points.first()?;
                 Some(
                     Series::new(
-                        format!("{} slope {order:.2} (expected)", line.name),
+                        format!("{} expected order {min:.2} to {max:.2}", line.name),
                         [n_0, n_f]
                             .iter()
                             .map(|&n| (n, e_f * (n / n_f).powf(-order)))
