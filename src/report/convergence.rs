@@ -101,3 +101,40 @@ pub fn convergence_figure(result: &ConvergenceResult) -> Option<String> {
     )
     .ok()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::studies::convergence::CONVERGENCE_STUDIES;
+
+    /// The dashed guides are labelled with the band the verdict checks (the Fig. 1 CMM study:
+    /// L1 0.42-0.56, max error -0.25 to 0.10, methods.md §3), not with the band's middle alone,
+    /// which for a max error that does not converge read as a predicted slope of -0.07.
+    #[test]
+    fn convergence_guides_are_labelled_with_their_order_bands() {
+        let study = CONVERGENCE_STUDIES
+            .iter()
+            .find(|s| s.name == "fig1_cmm")
+            .expect("the Fig. 1 CMM study")
+            .clone();
+        let levels = [50, 100, 200]
+            .iter()
+            .map(|&elements| {
+                let h = 1.0 / elements as f64;
+                Level {
+                    elements,
+                    dt: h,
+                    steps: elements,
+                    l1: h.sqrt(),
+                    l2: h.cbrt(),
+                    linf: 0.6,
+                    wall_time: 0.0,
+                }
+            })
+            .collect();
+        let svg = convergence_figure(&ConvergenceResult { study, levels }).expect("a figure");
+        assert!(svg.contains("L1 expected order 0.42 to 0.56"), "{svg}");
+        assert!(svg.contains("Linf expected order -0.25 to 0.10"), "{svg}");
+        assert!(!svg.contains("slope"), "{svg}");
+    }
+}
