@@ -48,17 +48,24 @@ enum Command {
     },
     /// Grade another code's results (the exchange format: DIR/<case>.csv, results.toml) against
     /// a scene's references, with the norms and expectations of `run`, plus diagnostics
-    /// (time-level offset, sign, load convention) and, for several directories of one case at
+    /// (magnitude, time level, sign, layout) and, for several directories of one case at
     /// different N, its convergence orders.
     ///
+    /// Error bounds apply to every code; a scene's signature rows (what its case's scheme and
+    /// mass do) only where results.toml declares that scheme, its parameters and the mass.
     /// Prints one row per check as `check` does. Exit status: 0 when every check holds, 1 when
-    /// one fails, 2 on bad input (file, line, column named; nothing is written then).
+    /// one fails, 2 on bad input (every bad file, line and key named; nothing is written then).
     Score {
         /// Scene name or path.
         scene: String,
-        /// Result directories, one per set (e.g. one per mesh for a convergence study).
-        #[arg(long, value_name = "DIR", num_args = 1.., required = true)]
+        /// A result directory: DIR or DIR/<scene> (as `reference --out DIR` writes it). Repeat
+        /// the flag for several sets (e.g. one per mesh for a convergence study).
+        #[arg(long, value_name = "DIR", action = clap::ArgAction::Append, required = true)]
         results: Vec<PathBuf>,
+        /// Fail when a case of the scene has no file, or an expectation's time no profile (by
+        /// default these are "not supplied" and skipped).
+        #[arg(long)]
+        require_all: bool,
         /// Write summary.csv, norms.csv, expectations.csv, diagnostics.csv (and convergence.csv)
         /// to DIR/<scene>/.
         #[arg(long, value_name = "DIR")]
@@ -156,9 +163,16 @@ fn main() -> ExitCode {
         Command::Score {
             scene,
             results,
+            require_all,
             out,
             junit,
-        } => courant::cli::score::score(&scene, &results, out.as_deref(), junit.as_deref()),
+        } => courant::cli::score::score(
+            &scene,
+            &results,
+            require_all,
+            out.as_deref(),
+            junit.as_deref(),
+        ),
         Command::Reference { scene, at, out } => {
             courant::cli::reference::reference(&scene, at.as_deref(), &out)
         }

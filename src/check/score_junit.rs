@@ -5,7 +5,7 @@
 
 use super::junit::{Failure, TestCase, TestSuite, render};
 use super::junit_report::verdict_case;
-use crate::compare::score::outcome::ScoreOutcome;
+use crate::compare::score::outcome::{ScoreOutcome, SkipKind};
 use crate::scene::cases::Scene;
 
 /// The JUnit XML document; `started` is the ISO date the score started, `time` its wall time.
@@ -28,23 +28,49 @@ pub fn xml(scene: &Scene, outcome: &ScoreOutcome, started: &str, time: f64) -> S
             .collect();
         for s in &set.skipped {
             let at = s.at.map(|t| format!(" at {t}")).unwrap_or_default();
-            cases.push(case(
-                format!("{} {}{at}", s.case, s.label),
-                None,
-                s.source.clone(),
-                Some(s.reason.clone()),
-            ));
+            let name = format!("{} {}{at}", s.case, s.label);
+            // What is not supplied fails under --require-all; the rest is skipped.
+            let failure = (set.require_all && s.kind == SkipKind::NotSupplied).then(|| Failure {
+                message: format!("{name}: {}", s.reason),
+                kind: "not supplied".into(),
+                details: s.reason.clone(),
+            });
+            let skipped = failure.is_none().then(|| s.reason.clone());
+            cases.push(case(name, failure, s.source.clone(), skipped));
         }
         for c in &set.cases {
-            for (name, verdict, measured, note) in c.diagnostics.verdicts() {
-                let what = format!("{measured}; {note}");
-                let failure = (verdict == Some(false)).then(|| Failure {
-                    message: format!("{} {name}: {what}", c.case),
+            for row in c.diagnostics.verdicts() {
+                if row.note.starts_with("not applicable") {
+                    continue;
+                }
+                let what = format!("{}; {}", row.measured, row.note);
+                let failure = (row.verdict == Some(false)).then(|| Failure {
+                    message: format!("{} {}: {what}", c.case, row.name),
                     kind: "diagnostic".into(),
                     details: what.clone(),
                 });
-                let skipped = verdict.is_none().then(|| note.clone());
-                cases.push(case(format!("{} {name}", c.case), failure, what, skipped));
+                let skipped = row.verdict.is_none().then(|| row.note.clone());
+                cases.push(case(
+                    format!("{} {}", c.case, row.name),
+                    failure,
+                    what,
+                    skipped,
+                ));
+            }
+        }
+        if set.require_all {
+            for missing in &set.missing_cases {
+                let why = format!("not supplied: no {missing}.csv in this set");
+                cases.push(case(
+                    format!("{missing} file"),
+                    Some(Failure {
+                        message: why.clone(),
+                        kind: "not supplied".into(),
+                        details: why.clone(),
+                    }),
+                    why,
+                    None,
+                ));
             }
         }
         suites.push(TestSuite {

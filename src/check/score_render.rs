@@ -4,7 +4,7 @@
 //! convergence studies across sets and a summary line.
 
 use super::render::{render_rows, verdict_row};
-use crate::compare::score::outcome::{ScoreOutcome, Scored, ScoredCase, ScoredSet};
+use crate::compare::score::outcome::{ScoreOutcome, Scored, ScoredCase, ScoredSet, SkipKind};
 use crate::scene::cases::Scene;
 use std::fmt::Write as _;
 
@@ -13,7 +13,11 @@ use std::fmt::Write as _;
 pub struct ScoreCounts {
     /// Expectation verdicts.
     pub expectations: usize,
-    /// Expectations skipped (not measurable from files, or no file).
+    /// Signature rows of a scheme or mass the files do not declare.
+    pub not_applicable: usize,
+    /// Expectations whose case or time no file supplies, and cases with no file.
+    pub not_supplied: usize,
+    /// Expectations files cannot answer (energies, divergence).
     pub skipped: usize,
     /// Diagnostics with a verdict.
     pub diagnostics: usize,
@@ -29,10 +33,20 @@ pub fn counts(outcome: &ScoreOutcome) -> ScoreCounts {
     for set in &outcome.sets {
         c.expectations += set.verdicts.len();
         c.failed += set.verdicts.iter().filter(|v| !v.pass).count();
-        c.skipped += set.skipped.len();
+        for s in &set.skipped {
+            match s.kind {
+                SkipKind::NotApplicable => c.not_applicable += 1,
+                SkipKind::NotSupplied => c.not_supplied += 1,
+                SkipKind::NotMeasurable => c.skipped += 1,
+            }
+        }
+        c.not_supplied += set.missing_cases.len();
+        if set.require_all {
+            c.failed += set.not_supplied() + set.missing_cases.len();
+        }
         for case in &set.cases {
-            for (_, verdict, ..) in case.diagnostics.verdicts() {
-                if let Some(pass) = verdict {
+            for row in case.diagnostics.verdicts() {
+                if let Some(pass) = row.verdict {
                     c.diagnostics += 1;
                     c.failed += usize::from(!pass);
                 }
@@ -68,11 +82,12 @@ fn case_line(c: &ScoredCase) -> String {
             let n = c.worst_norms();
             let f = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.3e}"));
             format!(
-                "{}: {} {}{dt}, {} profile(s); worst L1 {}, L2 {}, Linf {}, overshoot {}",
+                "{}: {} {} x {} time(s) read ({} rows){dt}; worst L1 {}, L2 {}, Linf {}, overshoot {}",
                 c.case,
-                c.elements.map_or("?".into(), |n| n.to_string()),
+                c.read.values,
                 if *points { "points" } else { "elements" },
                 profiles.len(),
+                c.read.rows,
                 f(n.map(|n| n.l1)),
                 f(n.map(|n| n.l2)),
                 f(n.map(|n| n.linf)),
@@ -103,8 +118,13 @@ pub fn check_rows(set: &ScoredSet) -> Vec<[String; 6]> {
     let mut rows: Vec<[String; 6]> = set.verdicts.iter().map(verdict_row).collect();
     for s in &set.skipped {
         let at = s.at.map(|t| format!(" at {t}")).unwrap_or_default();
+        let word = if set.require_all && s.kind == SkipKind::NotSupplied {
+            "FAIL"
+        } else {
+            s.kind.word()
+        };
         rows.push([
-            "skip".into(),
+            word.into(),
             s.case.clone(),
             format!("{}{at}", s.label),
             "-".into(),
@@ -113,24 +133,29 @@ pub fn check_rows(set: &ScoredSet) -> Vec<[String; 6]> {
         ]);
     }
     for c in &set.cases {
-        for (name, verdict, measured, note) in c.diagnostics.verdicts() {
-            if note.starts_with("not applicable") {
+        for row in c.diagnostics.verdicts() {
+            if row.note.starts_with("not applicable") {
                 continue;
             }
-            let expected = match name {
-                "time_offset" => "== 0 steps",
-                "sign" => "tension positive",
-                _ => "H(0) = 1",
-            };
             rows.push([
-                word(verdict).into(),
+                word(row.verdict).into(),
                 c.case.clone(),
-                name.into(),
-                measured,
-                expected.into(),
-                note,
+                row.name.into(),
+                row.measured,
+                row.expected.into(),
+                row.note,
             ]);
         }
+    }
+    for missing in &set.missing_cases {
+        rows.push([
+            if set.require_all { "FAIL" } else { "missing" }.into(),
+            missing.clone(),
+            "file".into(),
+            "-".into(),
+            format!("{missing}.csv"),
+            "not supplied: the set has no file for this case of the scene".into(),
+        ]);
     }
     rows
 }
@@ -195,15 +220,22 @@ pub fn terminal(scene: &Scene, outcome: &ScoreOutcome) -> String {
     let c = counts(outcome);
     let _ = writeln!(
         out,
-        "\nscore: {}, {} set(s): {} expectation(s) ({} skipped), {} diagnostic(s), {} fitted order(s), {} failed: {}",
+        "\nscore: {}, {} set(s): {} expectation verdict(s), {} diagnostic(s), {} fitted order(s), {} failed: {}; no verdict: {} not applicable, {} not supplied{}, {} not measurable from files",
         scene.name,
         outcome.sets.len(),
         c.expectations,
-        c.skipped,
         c.diagnostics,
         c.orders,
         c.failed,
-        if c.failed == 0 { "pass" } else { "FAIL" }
+        if c.failed == 0 { "pass" } else { "FAIL" },
+        c.not_applicable,
+        c.not_supplied,
+        if outcome.sets.iter().any(|s| s.require_all) {
+            " (failed: --require-all)"
+        } else {
+            ""
+        },
+        c.skipped,
     );
     out
 }

@@ -12,10 +12,12 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// Score `results` (one or more directories) against `scene`. Exit status 0 when every check
-/// holds, 1 when one fails, 2 on bad input (nothing is written then).
+/// holds (with `require_all`, every case and time supplied), 1 when one fails, 2 on bad input
+/// (nothing is written then).
 pub fn score(
     scene: &str,
     results: &[PathBuf],
+    require_all: bool,
     out: Option<&Path>,
     junit: Option<&Path>,
 ) -> ExitCode {
@@ -34,7 +36,12 @@ pub fn score(
     }
     // Everything is read, checked and compared before anything is written.
     let outcome = match score_dirs(&scene, results) {
-        Ok(outcome) => outcome,
+        Ok(mut outcome) => {
+            for set in &mut outcome.sets {
+                set.require_all = require_all;
+            }
+            outcome
+        }
         Err(e) => {
             eprintln!("error: {e}");
             return ExitCode::from(2);

@@ -7,7 +7,7 @@ use super::document::{Block, Page};
 use super::plot::{Axes, Series, SeriesStyle, line_chart};
 use super::tally::Tally;
 use crate::compare::outcome::SceneOutcome;
-use crate::compare::score::outcome::{Scored, ScoredSet};
+use crate::compare::score::outcome::{Scored, ScoredSet, SkipKind};
 use crate::compare::score::tables::beside_courant_table;
 use crate::results::exchange::committed::CommittedSet;
 use crate::results::table::Table;
@@ -29,7 +29,7 @@ pub fn tally(scored: &ScoredSet) -> Tally {
         case.diagnostics
             .verdicts()
             .into_iter()
-            .map(|(_, verdict, _, _)| verdict)
+            .map(|row| row.verdict)
     })));
     t
 }
@@ -49,22 +49,22 @@ fn checks_table(scored: &ScoredSet) -> Table {
         ]);
     }
     for case in &scored.cases {
-        for (name, verdict, measured, note) in case.diagnostics.verdicts() {
-            if note.starts_with("not applicable") {
+        for row in case.diagnostics.verdicts() {
+            if row.note.starts_with("not applicable") {
                 continue;
             }
             t.push(vec![
                 case.case.as_str().into(),
-                name.into(),
-                measured.into(),
-                "-".into(),
-                match verdict {
+                row.name.into(),
+                row.measured.into(),
+                row.expected.into(),
+                match row.verdict {
                     Some(true) => "pass",
                     Some(false) => "FAIL",
                     None => "n/a",
                 }
                 .into(),
-                note.into(),
+                row.note.into(),
             ]);
         }
     }
@@ -80,10 +80,12 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
          and committed under `external/<code>/results/<scene>/`, graded with exactly the norms and \
          expectations of courant's own runs (`courant score <scene> --results DIR`), beside courant's \
          run of the same case. `max_difference` is the largest difference of the two codes' element \
-         stresses at the same times over |sigma0|; `time_offset_steps` the whole steps that best match \
-         the exact solution (0: the results are written at the time they claim; the least-squares shift \
-         it is rounded from is in the checks below); expectations on energies are skipped (the format \
-         carries none). SfePy's driver, its pinned requirements and the command that regenerates its \
+         stresses at the same times over |sigma0|; `time_level` what the time shift that best fits the \
+         exact solution says (on time, whole steps late or early, or a start that gives the first step \
+         the wrong impulse; the shift itself is in the checks below). Error bounds apply to every code; \
+         a scene's signature rows (what its case's scheme and mass do) only where the set's \
+         `results.toml` declares that scheme, its parameters and the mass, and are not applicable \
+         otherwise; expectations on energies are not measurable (the format carries none). SfePy's driver, its pinned requirements and the command that regenerates its \
          results are in `external/sfepy/`."
             .into(),
     ));
@@ -96,15 +98,19 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
         ));
         let checks = checks_table(scored);
         let tally = tally(scored);
+        let count = |kind| scored.skipped.iter().filter(|s| s.kind == kind).count();
         page.push(Block::Paragraph(format!(
             "`{}`: {} case file(s) of scene {}; {} verdict(s) (the scene's expectations and each case's \
-             diagnostics), {} failed; {} expectation(s) skipped (not measurable from files).",
+             diagnostics), {} failed; {} expectation(s) not applicable, {} not supplied, {} not measurable \
+             from files.",
             set.dir,
             scored.cases.len(),
             scene.name,
             tally.total(),
             tally.failed,
-            scored.skipped.len()
+            count(SkipKind::NotApplicable),
+            count(SkipKind::NotSupplied),
+            count(SkipKind::NotMeasurable),
         )));
         let scale = scene
             .cases

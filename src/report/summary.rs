@@ -60,11 +60,11 @@ pub fn failures(
                     case.diagnostics
                         .verdicts()
                         .into_iter()
-                        .filter(|(_, verdict, _, _)| *verdict == Some(false))
-                        .map(move |(name, _, measured, note)| {
+                        .filter(|row| row.verdict == Some(false))
+                        .map(move |row| {
                             format!(
-                                "other code {code} on {scene}: {}/{name} = {measured} ({note})",
-                                case.case
+                                "other code {code} on {scene}: {}/{} = {} ({})",
+                                case.case, row.name, row.measured, row.note
                             )
                         })
                 }))

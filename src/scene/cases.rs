@@ -63,4 +63,6 @@ pub struct Case {
     /// The scheme parameters the scene lists (a sweep, `theta = [0, 0.5, 1]`) with this case's
     /// value of each; empty when none is a list.
     pub swept: Vec<(String, courant_solver::integrator::ParameterValue)>,
+    /// Every scheme parameter the scene gives this case's scheme (listed or not).
+    pub parameters: Vec<(String, courant_solver::integrator::ParameterValue)>,
 }

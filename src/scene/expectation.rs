@@ -207,6 +207,25 @@ impl Metric {
         )
     }
 
+    /// True for errors against the exact answer: zero when the result is exact, larger when it
+    /// is less accurate (so an upper bound on one is met by every more accurate result).
+    pub fn is_error(self) -> bool {
+        matches!(
+            self,
+            Metric::L1
+                | Metric::L2
+                | Metric::Linf
+                | Metric::Overshoot
+                | Metric::PlateauDeviation
+                | Metric::ImpulseError
+                | Metric::DurationError
+                | Metric::ForceL1Error
+                | Metric::ClosedFormDeviation
+                | Metric::DispersionDeviation
+                | Metric::CourantDeviation
+        )
+    }
+
     /// True for metrics measured on profiles (they need a reference).
     pub fn needs_reference(self) -> bool {
         matches!(
@@ -285,8 +304,52 @@ pub struct Expectation {
     pub masses: Option<(MassKind, MassKind)>,
     /// Contact force metrics: the force measured, when not the scene's.
     pub force: Option<ForceMeasure>,
+    /// An error bound or a signature of the case's scheme and mass.
+    pub kind: RowKind,
     /// Where the bound comes from.
     pub source: String,
+}
+
+/// What an expectation says of a result: that it is accurate (a bound every code at least as
+/// accurate meets), or that it behaves as the case's scheme and mass behave (a signature).
+///
+/// courant's own runs are held to both. Another code's result set is held to every bound, and to
+/// a signature only when its `results.toml` declares the case's scheme, parameters and mass
+/// (`compare::score::applies`): a more accurate code must not fail `linf >= 0.3` (the dispersed
+/// front of lumped central difference), and a less accurate one must not pass it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RowKind {
+    /// An error bound: the exact answer meets it, and so does anything at least as accurate.
+    Bound,
+    /// A property of the case's scheme and mass (a band, a lower bound on an error, a ratio of
+    /// two cases).
+    Signature,
+}
+
+impl RowKind {
+    /// Scene-file name.
+    pub fn name(self) -> &'static str {
+        match self {
+            RowKind::Bound => "bound",
+            RowKind::Signature => "signature",
+        }
+    }
+
+    /// The kind a row has when the scene does not say: a bound when the metric is an error
+    /// (zero for the exact answer: `l1`, `l2`, `linf`, `overshoot`, the contact force errors,
+    /// the spectrum's, dispersion's and critical Courant number's deviation from their closed
+    /// forms) bounded from above only, of one case; a signature otherwise (a lower bound on an
+    /// error, a band, a ratio or a difference of two cases, an energy, divergence, a critical
+    /// step, a mass deviation, a total-variation ratio).
+    pub fn default_for(metric: Metric, bound: Bound, relative_to: Option<&str>) -> RowKind {
+        match bound {
+            Bound::Range {
+                min: None,
+                max: Some(_),
+            } if relative_to.is_none() && metric.is_error() => RowKind::Bound,
+            _ => RowKind::Signature,
+        }
+    }
 }
 
 /// What a stability run does, as a finding states it.
@@ -570,6 +633,37 @@ pub(super) fn expectation(
             )));
         }
     };
+    let kind = match raw.kind.as_deref() {
+        None => RowKind::default_for(metric, bound, relative_to.as_deref()),
+        Some("signature") => RowKind::Signature,
+        Some("bound") => {
+            if RowKind::default_for(metric, bound, relative_to.as_deref()) != RowKind::Bound {
+                return Err(src.error(
+                    Some(src.value_span(spanned.span(), "kind")),
+                    "expect.kind",
+                    format!(
+                        "kind = \"bound\" needs an error metric ({}) bounded by `max` only, of one case (no `relative_to`): an error bound is met by the exact answer and by every result at least as accurate; `{}` {} is a signature of the case's scheme",
+                        METRICS
+                            .iter()
+                            .filter(|m| m.0.is_error())
+                            .map(|m| m.1)
+                            .collect::<Vec<_>>()
+                            .join(", "),
+                        metric.name(),
+                        bound
+                    ),
+                ));
+            }
+            RowKind::Bound
+        }
+        Some(other) => {
+            return Err(src.error(
+                Some(src.value_span(spanned.span(), "kind")),
+                "expect.kind",
+                format!("kind = \"{other}\" is not one of bound, signature"),
+            ));
+        }
+    };
     if raw.source.trim().is_empty() {
         return Err(fail(
             "`source` must name the source of truth of the bound".into(),
@@ -583,6 +677,7 @@ pub(super) fn expectation(
         relative_to,
         masses,
         force,
+        kind,
         source: raw.source.clone(),
     })
 }

@@ -404,6 +404,10 @@ pub struct RawExpect {
     pub against: Option<String>,
     /// Contact force metrics: `penalty` or `transferred`, instead of the scene's `force`.
     pub force: Option<String>,
+    /// `bound` (an error bound any code at least as accurate meets) or `signature` (what the
+    /// case's scheme and mass do). Default: from the metric and the bound
+    /// (`scene::expectation::RowKind::default_for`).
+    pub kind: Option<String>,
     /// The source of truth the bound comes from.
     pub source: String,
 }

@@ -21,6 +21,9 @@ pub(super) struct NamedScheme {
     pub(super) scheme: Arc<dyn Scheme>,
     /// The values of the listed parameters it declares (a parameter sweep), in file order.
     pub(super) swept: Vec<(String, ParameterValue)>,
+    /// Every parameter the scene gives this scheme, listed or not (what `results.toml`
+    /// declares for an exported case).
+    pub(super) parameters: Vec<(String, ParameterValue)>,
 }
 
 /// The integrator settings of a time-stepping scene.
@@ -221,6 +224,7 @@ fn schemes(
                     src.error(scheme_span.clone(), "integrator.scheme", e.to_string())
                 })?;
             }
+            let parameters = combination.clone();
             let swept: Vec<(String, ParameterValue)> = combination
                 .into_iter()
                 .filter(|(k, _)| own.iter().any(|o| o.listed && &o.key == k))
@@ -237,6 +241,7 @@ fn schemes(
                 prefix: prefix.join("-"),
                 scheme,
                 swept,
+                parameters,
             });
         }
     }

@@ -184,6 +184,7 @@ pub(super) fn build(
                     reference: reference.clone(),
                     transit_time: transit,
                     swept: named.swept.clone(),
+                    parameters: named.parameters.clone(),
                     times_in_transits: raw.output.time_unit == RawTimeUnit::Transit,
                 });
             }

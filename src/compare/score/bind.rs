@@ -3,8 +3,9 @@
 //! that covers the bar, points on it, mass labels the scene knows, modes the closed forms have),
 //! every error naming file, line, column and key.
 
+use super::applies::{Applies, Declared};
 use super::outcome::ScoreError;
-use crate::results::exchange::error::ExchangeError;
+use crate::results::exchange::error::{ExchangeError, ExchangeErrors};
 use crate::results::exchange::meta::CaseMeta;
 use crate::results::exchange::reader::TOUCH;
 use crate::results::exchange::record::{CaseData, CaseFile, ExchangeSet, Positions};
@@ -98,6 +99,8 @@ pub struct Bound<'a> {
     pub dt: Option<(f64, &'static str)>,
     /// Mass kind of each spectrum row (spectra only).
     pub row_masses: Vec<MassKind>,
+    /// Whether the case's signature rows apply (what `results.toml` declares against the case).
+    pub applies: Applies,
 }
 
 /// The profile times of a time-stepping case: its profile steps times `dt`, as the solver
@@ -128,14 +131,22 @@ pub fn bar_extent(case: &Case) -> (f64, f64) {
 pub fn bind<'a>(scene: &'a Scene, set: &'a ExchangeSet) -> Result<Vec<Bound<'a>>, ScoreError> {
     let kind = SceneKind::of(scene)?;
     let names = kind.case_names(scene);
-    set.cases
-        .iter()
-        .map(|file| {
-            let meta = set.meta.as_ref().and_then(|m| m.case(&file.case));
-            let meta_file = set.meta.as_ref().map_or("", |m| m.file.as_str());
-            bind_file(scene, kind, &names, file, meta, meta_file)
-        })
-        .collect()
+    let mut bound = Vec::new();
+    let mut errors = Vec::new();
+    for file in &set.cases {
+        let meta = set.meta.as_ref().and_then(|m| m.case(&file.case));
+        let meta_file = set.meta.as_ref().map_or("", |m| m.file.as_str());
+        match bind_file(scene, kind, &names, file, meta, meta_file) {
+            Ok(b) => bound.push(b),
+            Err(ScoreError::Input(e)) => errors.extend(e.0),
+            Err(other) => return Err(other),
+        }
+    }
+    if errors.is_empty() {
+        Ok(bound)
+    } else {
+        Err(ScoreError::Input(ExchangeErrors(errors)))
+    }
 }
 
 fn bind_file<'a>(
@@ -170,6 +181,8 @@ fn bind_file<'a>(
     };
     let meta_dt = meta.and_then(|m| m.dt).map(|dt| (dt, "results.toml"));
     let mut row_masses = Vec::new();
+    // A spectrum's rows name their mass kinds, and its signatures are of those masses.
+    let mut applies = Applies::Yes;
     let (target, dt) = match (kind, &file.data) {
         (SceneKind::Stepping, CaseData::Profiles(profiles)) => {
             let case = scene
@@ -198,6 +211,9 @@ fn bind_file<'a>(
                 )
                 .into());
             }
+            let declared = Declared::stepping(meta, mass, &file.case, meta_file)?;
+            applies =
+                declared.applies_to_stepping(&case.integrator.scheme.label(), case.integrator.mass);
             (
                 Target::Stepping(case, reference),
                 meta_dt.or(Some((case.integrator.dt, "scene"))),
@@ -209,6 +225,7 @@ fn bind_file<'a>(
                 .iter()
                 .find(|c| c.name == file.case)
                 .expect("the stem names a case");
+            applies = Declared::contact(meta, &file.case, meta_file)?.applies_to_contact(case);
             (
                 Target::Contact(case),
                 meta_dt.or(Some((case.integrator.dt, "scene"))),
@@ -285,6 +302,7 @@ fn bind_file<'a>(
         mass,
         dt,
         row_masses,
+        applies,
     })
 }
 

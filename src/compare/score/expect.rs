@@ -9,26 +9,31 @@
 //! mesh may not hold there (fig1's `overshoot / co0.5 >= 1.05` of co0.1: 1.10 at N = 100, 1.02
 //! at 400, 1.00 at 800).
 
+use super::applies::Applies;
 use super::bind::profile_times;
-use super::outcome::{Scored, ScoredCase, ScoredForce, Skipped};
+use super::outcome::{Scored, ScoredCase, ScoredForce, SkipKind, Skipped};
 use crate::compare::contact::ForceErrors;
 use crate::compare::expect::{at_time, judge, ratio};
 use crate::compare::norms::ErrorNorms;
 use crate::compare::stress_difference::{ProfileView, stress_difference};
 use crate::compare::verdict::{Measured, Verdict};
 use crate::scene::cases::Scene;
-use crate::scene::expectation::{Expectation, Metric};
+use crate::scene::expectation::{Expectation, Metric, RowKind};
 
-/// Verdicts of every expectation of `scene` on `cases`, and the expectations skipped.
+/// Verdicts of every expectation of `scene` on `cases`, and the expectations skipped: a
+/// signature row ([`RowKind::Signature`]) of a case whose file does not declare its scheme,
+/// parameters and mass is not applicable; a case with no file, or a time with no profile, is
+/// not supplied; what files cannot carry is not measurable.
 pub fn evaluate(scene: &Scene, cases: &[ScoredCase]) -> (Vec<Verdict>, Vec<Skipped>) {
     let (mut verdicts, mut skipped) = (Vec::new(), Vec::new());
     let file = |name: &str| cases.iter().find(|c| c.case == name);
     for expectation in &scene.expectations {
         for name in &expectation.cases {
-            let skip = |reason: String| {
+            let skip = |kind: SkipKind, reason: String| {
                 let label = judge(expectation, name.clone(), Measured::Missing(String::new()))
                     .metric_label();
                 Skipped {
+                    kind,
                     case: name.clone(),
                     metric: expectation.metric,
                     label,
@@ -38,7 +43,10 @@ pub fn evaluate(scene: &Scene, cases: &[ScoredCase]) -> (Vec<Verdict>, Vec<Skipp
                 }
             };
             let Some(case) = file(name) else {
-                skipped.push(skip(format!("no {name}.csv in this set")));
+                skipped.push(skip(
+                    SkipKind::NotSupplied,
+                    format!("not supplied: no {name}.csv in this set"),
+                ));
                 continue;
             };
             let other = match &expectation.relative_to {
@@ -46,15 +54,41 @@ pub fn evaluate(scene: &Scene, cases: &[ScoredCase]) -> (Vec<Verdict>, Vec<Skipp
                 Some(other) => match file(other) {
                     Some(o) => Some(o),
                     None => {
-                        skipped.push(skip(format!("no {other}.csv in this set")));
+                        skipped.push(skip(
+                            SkipKind::NotSupplied,
+                            format!("not supplied: no {other}.csv in this set"),
+                        ));
                         continue;
                     }
                 },
             };
+            if expectation.kind == RowKind::Signature {
+                let why = std::iter::once(case)
+                    .chain(other)
+                    .find_map(|c| match &c.applies {
+                        Applies::Yes => None,
+                        Applies::No(why) => Some(if other.is_some() {
+                            format!("{}: {why}", c.case)
+                        } else {
+                            why.clone()
+                        }),
+                    });
+                if let Some(why) = why {
+                    skipped.push(skip(
+                        SkipKind::NotApplicable,
+                        format!(
+                            "not applicable ({why}): a signature of the case's scheme and mass"
+                        ),
+                    ));
+                    continue;
+                }
+            }
             let measured = match (other, expectation.metric) {
-                (Some(o), Metric::ForceHistoryDifference) => force_history_difference(case, o),
+                (Some(o), Metric::ForceHistoryDifference) => {
+                    force_history_difference(case, o).map_err(Unmeasured::Other)
+                }
                 (Some(o), Metric::StressDifference) => {
-                    file_stress_difference(case, o, expectation.at)
+                    file_stress_difference(case, o, expectation.at).map_err(Unmeasured::Other)
                 }
                 (Some(o), _) => measure(scene, expectation, case)
                     .and_then(|a| measure(scene, expectation, o).map(|b| ratio(a, b, &o.case))),
@@ -62,7 +96,12 @@ pub fn evaluate(scene: &Scene, cases: &[ScoredCase]) -> (Vec<Verdict>, Vec<Skipp
             };
             match measured {
                 Ok(m) => verdicts.push(judge(expectation, name.clone(), m)),
-                Err(reason) => skipped.push(skip(reason)),
+                Err(Unmeasured::NotSupplied(reason)) => {
+                    skipped.push(skip(SkipKind::NotSupplied, reason));
+                }
+                Err(Unmeasured::Other(reason)) => {
+                    skipped.push(skip(SkipKind::NotMeasurable, reason));
+                }
             }
         }
     }
@@ -115,13 +154,34 @@ fn force_history_difference(a: &ScoredCase, b: &ScoredCase) -> Result<Measured, 
     Ok(Measured::Value(worst / fa.plateau))
 }
 
+/// Why a file gives no value for an expectation.
+#[derive(Debug)]
+enum Unmeasured {
+    /// A profile time the file does not have.
+    NotSupplied(String),
+    /// Anything else (files cannot carry it, the file holds other data).
+    Other(String),
+}
+
+impl From<String> for Unmeasured {
+    fn from(why: String) -> Self {
+        Unmeasured::Other(why)
+    }
+}
+
+impl From<&str> for Unmeasured {
+    fn from(why: &str) -> Self {
+        Unmeasured::Other(why.to_string())
+    }
+}
+
 /// What a file says of the expectation's metric, or why it cannot say.
 fn measure(
     scene: &Scene,
     expectation: &Expectation,
     case: &ScoredCase,
-) -> Result<Measured, String> {
-    let norm = |pick: fn(&ErrorNorms) -> Option<f64>| -> Result<Measured, String> {
+) -> Result<Measured, Unmeasured> {
+    let norm = |pick: fn(&ErrorNorms) -> Option<f64>| -> Result<Measured, Unmeasured> {
         let Scored::Profiles { profiles, .. } = &case.scored else {
             return Err("the file holds no stress profiles".into());
         };
@@ -140,8 +200,8 @@ fn measure(
                 .map(|p| pick(&p.norms))
                 .collect();
             if at.is_empty() {
-                return Ok(Measured::Missing(format!(
-                    "the file has no profile at t = {t}"
+                return Err(Unmeasured::NotSupplied(format!(
+                    "not supplied: the file has no profile at t = {t}"
                 )));
             }
             worst = at.into_iter().flatten().fold(worst, f64::max);
@@ -159,7 +219,7 @@ fn measure(
             Measured::Missing("the force never reached half the plateau".into()),
             Measured::Value,
         )),
-        _ => Err("the file holds no force history".to_string()),
+        _ => Err(Unmeasured::from("the file holds no force history")),
     };
     let errors = |f: &ScoredForce| -> ForceErrors { f.errors };
     match expectation.metric {
@@ -183,7 +243,7 @@ fn measure(
             Scored::Spectrum(s) => Ok(Measured::Value(s.deviation)),
             _ => Err("the file holds no spectrum".into()),
         },
-        Metric::MassDeviation => mass_deviation(expectation, case),
+        Metric::MassDeviation => mass_deviation(expectation, case).map_err(Unmeasured::Other),
         Metric::EnergyBalance | Metric::EnergyLost | Metric::EnergyRatio => {
             Err("not measurable from files: format 1 carries no energies".into())
         }

@@ -4,11 +4,12 @@
 
 use crate::compare::outcome::SceneOutcome;
 use crate::results::exchange::FORMAT;
-use crate::results::exchange::meta::{CaseMeta, ResultsMeta};
+use crate::results::exchange::meta::{CaseMeta, Located, MetaValue, ResultsMeta};
 use crate::results::exchange::record::{
     CaseData, CaseFile, ExchangeSet, ForceHistory, Positions, Profile, SpectrumRow,
 };
 use crate::scene::cases::Scene;
+use courant_solver::integrator::ParameterValue;
 use std::collections::BTreeMap;
 
 /// One case file of an exported set.
@@ -50,11 +51,22 @@ pub fn exchange_set(scene: &Scene, outcome: &SceneOutcome, label: &str) -> Optio
         meta.insert(
             r.run.case.clone(),
             CaseMeta {
-                scheme: Some(r.run.scheme.clone()),
+                scheme: Some(case.integrator.scheme.name().to_string()),
+                parameters: case
+                    .parameters
+                    .iter()
+                    .map(|(k, v)| {
+                        let value = match v {
+                            ParameterValue::Number(x) => MetaValue::Number(*x),
+                            ParameterValue::Text(word) => MetaValue::Text(word.clone()),
+                        };
+                        (k.clone(), Located::unplaced(value))
+                    })
+                    .collect(),
                 mass: Some((r.run.critical.mass.label(), 0, 0)),
                 dt: Some(r.run.dt),
                 elements: Some((r.elements, 0)),
-                line: 0,
+                ..CaseMeta::default()
             },
         );
     }
@@ -74,6 +86,7 @@ pub fn exchange_set(scene: &Scene, outcome: &SceneOutcome, label: &str) -> Optio
             c.case.clone(),
             CaseMeta {
                 scheme: Some(c.run.scheme.label().to_string()),
+                parameters: contact_parameters(scene, &c.case),
                 dt: Some(c.run.dt),
                 ..CaseMeta::default()
             },
@@ -112,5 +125,26 @@ pub fn exchange_set(scene: &Scene, outcome: &SceneOutcome, label: &str) -> Optio
             version: Some(env!("CARGO_PKG_VERSION").into()),
             cases: meta,
         }),
+    })
+}
+
+/// The penalties of a contact case as `results.toml` declares them (`beta_s`, `beta_m`).
+fn contact_parameters(scene: &Scene, case: &str) -> Vec<(String, Located<MetaValue>)> {
+    let penalty = scene
+        .contact
+        .iter()
+        .find(|c| c.name == case)
+        .and_then(|c| c.penalty);
+    penalty.map_or_else(Vec::new, |(beta_s, beta_m)| {
+        vec![
+            (
+                "beta_s".into(),
+                Located::unplaced(MetaValue::Number(beta_s)),
+            ),
+            (
+                "beta_m".into(),
+                Located::unplaced(MetaValue::Number(beta_m)),
+            ),
+        ]
     })
 }

@@ -9,9 +9,10 @@
 //! Lagrange multiplier (momentum) -0.03 and a copy one step late -0.02.
 
 use super::bind::Bound;
-use super::diagnostics::{Diagnostics, SignCheck, fit_shift};
-use super::outcome::{Scored, ScoredCase, ScoredForce};
+use super::diagnostics::{Diagnostics, SignCheck};
+use super::outcome::{Read, Scored, ScoredCase, ScoredForce};
 use super::profiles::cell_lengths;
+use super::shift_fit::fit_shift;
 use crate::compare::contact::ForceErrors;
 use crate::results::exchange::record::ForceHistory;
 use crate::scene::contact::ContactCase;
@@ -98,8 +99,14 @@ pub fn score_force(bound: &Bound, case: &ContactCase, h: &ForceHistory) -> Score
         case: bound.file.case.clone(),
         file: bound.file.file.clone(),
         scheme: bound.meta.and_then(|m| m.scheme.clone()),
+        applies: bound.applies.clone(),
         mass: bound.mass.map(|m| m.label()),
         elements: bound.meta.and_then(|m| m.elements).map(|e| e.0),
+        read: Read {
+            values: h.time.len(),
+            times: 1,
+            rows: h.time.len(),
+        },
         dt: bound.dt,
         reference: "impact",
         scored: Scored::Force(ScoredForce {
@@ -112,9 +119,10 @@ pub fn score_force(bound: &Bound, case: &ContactCase, h: &ForceHistory) -> Score
             errors,
         }),
         diagnostics: Diagnostics {
+            magnitude: Err("not applicable: a force history has no stress scale".into()),
             shift: Err(shift.unwrap_or_else(|| "not measurable: no dt".into())),
             sign: Ok(sign),
-            load: Err("not applicable: a contact case has no step load".into()),
+            layout: Err("not applicable: a force history has no positions".into()),
         },
     }
 }

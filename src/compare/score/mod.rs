@@ -21,6 +21,7 @@
 //! files on disk, how the records were produced, documents, the command line.
 
 pub mod answers;
+pub mod applies;
 pub mod bind;
 pub mod convergence;
 pub mod diagnostics;
@@ -30,5 +31,6 @@ pub mod force;
 pub mod outcome;
 pub mod profiles;
 pub mod set;
+pub mod shift_fit;
 pub mod spectrum;
 pub mod tables;

@@ -2,24 +2,32 @@
 //! or spectrum measures), its diagnostics, the verdicts of the scene's expectations (and those
 //! that cannot be measured from files), and convergence studies across sets.
 
+use super::applies::Applies;
 use super::diagnostics::Diagnostics;
 use crate::compare::contact::ForceErrors;
 use crate::compare::convergence::ConvergenceResult;
 use crate::compare::norms::ErrorNorms;
 use crate::compare::verdict::Verdict;
-use crate::results::exchange::error::ExchangeError;
+use crate::results::exchange::error::{ExchangeError, ExchangeErrors};
 use crate::scene::expectation::Metric;
 use thiserror::Error;
 
 /// Why a result set cannot be scored.
 #[derive(Debug, Error)]
 pub enum ScoreError {
-    /// A file is not valid exchange data, or does not fit the scene (file, line, column, key).
+    /// Files that are not valid exchange data, or do not fit the scene (each with file, line,
+    /// column, key), all of them.
     #[error(transparent)]
-    Input(#[from] ExchangeError),
+    Input(#[from] ExchangeErrors),
     /// The scene has nothing a result file could be graded against.
     #[error("{0}")]
     Scene(String),
+}
+
+impl From<ExchangeError> for ScoreError {
+    fn from(e: ExchangeError) -> Self {
+        ScoreError::Input(e.into())
+    }
 }
 
 /// One stress profile beside the exact solution.
@@ -81,6 +89,18 @@ pub enum Scored {
     Spectrum(ScoredSpectrum),
 }
 
+/// What was read from a case file: counted from its rows, never taken from `results.toml`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Read {
+    /// Values per profile (elements or points; the most of any profile), samples of a force
+    /// history, rows of a spectrum.
+    pub values: usize,
+    /// Output times (profiles; 1 for a force history or a spectrum).
+    pub times: usize,
+    /// Data rows.
+    pub rows: usize,
+}
+
 /// One case file of a set, scored.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ScoredCase {
@@ -90,11 +110,15 @@ pub struct ScoredCase {
     pub file: String,
     /// Scheme named in `results.toml`.
     pub scheme: Option<String>,
+    /// Whether the case's signature rows apply to the file.
+    pub applies: Applies,
     /// Mass label named in `results.toml` (as the scene writes it, e.g. `amm(0.5)`).
     pub mass: Option<String>,
     /// Elements (of the file's first profile, or from `results.toml` for point values); `None`
     /// for a force history.
     pub elements: Option<usize>,
+    /// What was read from the file.
+    pub read: Read,
     /// The time step the diagnostics count in and where it came from.
     pub dt: Option<(f64, &'static str)>,
     /// The reference that produced the exact values.
@@ -117,9 +141,36 @@ impl ScoredCase {
     }
 }
 
-/// An expectation that files cannot answer (energies, divergence) or whose case has no file.
+/// Why an expectation gives no verdict on a set.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SkipKind {
+    /// A signature row of a scheme, parameters or mass the file does not declare.
+    NotApplicable,
+    /// The set has no file for the case, or the file no profile at the time (`--require-all`
+    /// makes these failures).
+    NotSupplied,
+    /// Files cannot carry it (energies, divergence, critical steps) or the data cannot decide
+    /// it.
+    NotMeasurable,
+}
+
+impl SkipKind {
+    /// How the row's verdict column reads.
+    pub fn word(self) -> &'static str {
+        match self {
+            SkipKind::NotApplicable => "n/a",
+            SkipKind::NotSupplied => "missing",
+            SkipKind::NotMeasurable => "skip",
+        }
+    }
+}
+
+/// An expectation that gives no verdict on a set: not applicable to the file, not supplied,
+/// or not measurable from files.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Skipped {
+    /// Why there is no verdict.
+    pub kind: SkipKind,
     /// Case name.
     pub case: String,
     /// Metric.
@@ -149,16 +200,32 @@ pub struct ScoredSet {
     pub verdicts: Vec<Verdict>,
     /// Expectations not measured, with the reason.
     pub skipped: Vec<Skipped>,
+    /// Cases of the scene with no file in this set.
+    pub missing_cases: Vec<String>,
+    /// Whether what is not supplied fails the set (`courant score --require-all`).
+    pub require_all: bool,
 }
 
 impl ScoredSet {
-    /// True when every expectation holds and no diagnostic fails.
+    /// Expectations skipped because their case or time is not supplied.
+    pub fn not_supplied(&self) -> usize {
+        self.skipped
+            .iter()
+            .filter(|s| s.kind == SkipKind::NotSupplied)
+            .count()
+    }
+
+    /// True when every expectation holds and no diagnostic fails (and, with `require_all`,
+    /// every case and time is supplied).
     pub fn passed(&self) -> bool {
-        self.verdicts.iter().all(|v| v.pass)
-            && self
-                .cases
-                .iter()
-                .all(|c| c.diagnostics.verdicts().iter().all(|v| v.1 != Some(false)))
+        (!self.require_all || (self.not_supplied() == 0 && self.missing_cases.is_empty()))
+            && self.verdicts.iter().all(|v| v.pass)
+            && self.cases.iter().all(|c| {
+                c.diagnostics
+                    .verdicts()
+                    .iter()
+                    .all(|v| v.verdict != Some(false))
+            })
     }
 }
 

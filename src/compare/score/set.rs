@@ -10,6 +10,7 @@ use super::outcome::{ScoreError, ScoreOutcome, ScoredCase, ScoredSet};
 use super::profiles::score_profiles;
 use super::spectrum::score_spectrum;
 use crate::io::parallel::in_order;
+use crate::results::exchange::error::ExchangeErrors;
 use crate::results::exchange::record::{CaseData, ExchangeSet};
 use crate::scene::cases::Scene;
 use rayon::prelude::*;
@@ -45,7 +46,15 @@ pub fn score_set(scene: &Scene, set: &ExchangeSet) -> Result<ScoredSet, ScoreErr
     let cases = in_order(cases)?;
     let (verdicts, skipped) = evaluate(scene, &cases);
     let meta = set.meta.as_ref();
+    let missing_cases = super::bind::SceneKind::of(scene)
+        .map(|k| k.case_names(scene))
+        .unwrap_or_default()
+        .into_iter()
+        .filter(|name| !cases.iter().any(|c| &c.case == name))
+        .collect();
     Ok(ScoredSet {
+        missing_cases,
+        require_all: false,
         label: set.label.clone(),
         code: set.code(),
         version: meta
@@ -60,12 +69,20 @@ pub fn score_set(scene: &Scene, set: &ExchangeSet) -> Result<ScoredSet, ScoreErr
 /// Score every set (in argument order) and study the convergence of cases given at several N.
 ///
 /// # Errors
-/// The first set, in order, that cannot be scored.
+/// Every file of every set that cannot be bound to the scene; or the first scene-level refusal.
 pub fn score(scene: &Scene, sets: &[ExchangeSet]) -> Result<ScoreOutcome, ScoreError> {
-    let scored = sets
-        .iter()
-        .map(|s| score_set(scene, s))
-        .collect::<Result<Vec<_>, _>>()?;
+    let mut scored = Vec::new();
+    let mut errors = Vec::new();
+    for set in sets {
+        match score_set(scene, set) {
+            Ok(s) => scored.push(s),
+            Err(ScoreError::Input(e)) => errors.extend(e.0),
+            Err(other) => return Err(other),
+        }
+    }
+    if !errors.is_empty() {
+        return Err(ScoreError::Input(ExchangeErrors(errors)));
+    }
     Ok(ScoreOutcome {
         scene: scene.name.clone(),
         convergence: convergence(scene, &scored),

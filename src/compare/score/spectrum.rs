@@ -2,7 +2,7 @@
 
 use super::bind::Bound;
 use super::diagnostics::Diagnostics;
-use super::outcome::{Scored, ScoredCase, ScoredSpectrum};
+use super::outcome::{Read, Scored, ScoredCase, ScoredSpectrum};
 use crate::compare::spectrum::closed_form_kind;
 use crate::results::exchange::record::SpectrumRow;
 use crate::scene::spectrum::SpectrumCase;
@@ -44,8 +44,14 @@ pub fn score_spectrum(bound: &Bound, case: &SpectrumCase, rows: &[SpectrumRow]) 
         case: bound.file.case.clone(),
         file: bound.file.file.clone(),
         scheme: bound.meta.and_then(|m| m.scheme.clone()),
+        applies: bound.applies.clone(),
         mass: bound.mass.map(|m| m.label()),
         elements: Some(case.model.bar().element_count()),
+        read: Read {
+            values: rows.len(),
+            times: 1,
+            rows: rows.len(),
+        },
         dt: None,
         reference: "closed-form",
         scored: Scored::Spectrum(ScoredSpectrum {

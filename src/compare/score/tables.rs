@@ -159,11 +159,11 @@ pub fn expectations_table(sets: &[ScoredSet]) -> Table {
                 s.case.as_str().into(),
                 s.label.as_str().into(),
                 s.at.into(),
-                format!("not measured: {}", s.reason).into(),
+                s.reason.as_str().into(),
                 Cell::Empty,
                 Cell::Empty,
                 Cell::Empty,
-                "skip".into(),
+                s.kind.word().into(),
                 s.source.as_str().into(),
             ]);
         }
@@ -171,9 +171,10 @@ pub fn expectations_table(sets: &[ScoredSet]) -> Table {
     table
 }
 
-/// The diagnostics of every case: the step they count in and its source, the time shift
-/// (least-squares, in steps), the offset in whole steps and its verdict, the sign and the load
-/// convention with theirs; `notes` says why a diagnostic has no verdict.
+/// The diagnostics of every case: the step they count in and its source, the time shift (in
+/// steps) and its residual, the time level read from it, the sign and the layout, the largest
+/// stress over the load's scale, each with its verdict; `notes` says why a diagnostic has no
+/// verdict or how it failed.
 pub fn diagnostics_table(sets: &[ScoredSet]) -> Table {
     let mut table = Table::new(&[
         "set",
@@ -182,25 +183,26 @@ pub fn diagnostics_table(sets: &[ScoredSet]) -> Table {
         "dt_source",
         "time_shift_steps",
         "shift_residual",
-        "time_offset_steps",
-        "time_offset_verdict",
+        "time_level",
+        "time_level_verdict",
         "sign_error",
         "sign_error_flipped",
         "sign",
         "sign_verdict",
-        "load_fraction",
-        "load_convention",
-        "load_verdict",
+        "layout",
+        "layout_verdict",
+        "max_stress_over_scale",
+        "magnitude_verdict",
         "notes",
     ]);
     for set in sets {
         for c in &set.cases {
             let d = &c.diagnostics;
-            let [offset, sign, load] = d.verdicts();
-            let notes: Vec<String> = [&offset, &sign, &load]
+            let [magnitude, level, sign, layout] = d.verdicts();
+            let notes: Vec<String> = [&magnitude, &level, &sign, &layout]
                 .iter()
-                .filter(|r| r.1.is_none())
-                .map(|r| format!("{}: {}", r.0, r.3))
+                .filter(|r| r.verdict != Some(true))
+                .map(|r| format!("{}: {}", r.name, r.note))
                 .collect();
             let text = |v: &String| {
                 if v == "-" {
@@ -216,19 +218,16 @@ pub fn diagnostics_table(sets: &[ScoredSet]) -> Table {
                 c.dt.map(|d| d.1).into(),
                 d.shift.as_ref().ok().map(|s| s.steps).into(),
                 d.shift.as_ref().ok().map(|s| s.residual).into(),
-                d.shift
-                    .as_ref()
-                    .ok()
-                    .map(|s| Cell::Text(s.offset.to_string()))
-                    .unwrap_or(Cell::Empty),
-                verdict_cell(offset.1),
+                text(&level.measured),
+                verdict_cell(level.verdict),
                 d.sign.as_ref().ok().map(|s| s.error).into(),
                 d.sign.as_ref().ok().map(|s| s.error_flipped).into(),
-                text(&sign.2),
-                verdict_cell(sign.1),
-                d.load.as_ref().ok().map(|l| l.fraction).into(),
-                text(&load.2),
-                verdict_cell(load.1),
+                text(&sign.measured),
+                verdict_cell(sign.verdict),
+                text(&layout.measured),
+                verdict_cell(layout.verdict),
+                d.magnitude.as_ref().ok().map(|m| m.max / m.scale).into(),
+                verdict_cell(magnitude.verdict),
                 notes.join("; ").into(),
             ]);
         }
@@ -319,8 +318,8 @@ pub fn score_files(outcome: &ScoreOutcome) -> Vec<(String, String)> {
 /// A scored set beside courant's own run of the same cases (`courant`: the scene's compared
 /// outcome), one row per case: the worst L1, max and overshoot of each (`*_courant`), the
 /// largest difference of the two stress profiles at their common times relative to `|sigma0|`
-/// (same elements only), and the diagnostics (time-level offset, sign, load convention; the
-/// least-squares shifts are in `diagnostics.csv`). Cases courant did not run have empty
+/// (same elements only), and the diagnostics (time level, sign, layout; the fitted shifts are
+/// in `diagnostics.csv`). Cases courant did not run have empty
 /// `*_courant` cells.
 pub fn beside_courant_table(set: &ScoredSet, courant: &SceneOutcome, scale: f64) -> Table {
     let mut table = Table::new(&[
@@ -335,9 +334,9 @@ pub fn beside_courant_table(set: &ScoredSet, courant: &SceneOutcome, scale: f64)
         "overshoot",
         "overshoot_courant",
         "max_difference",
-        "time_offset_steps",
+        "time_level",
         "sign",
-        "load_convention",
+        "layout",
     ]);
     for c in &set.cases {
         let Scored::Profiles { profiles, .. } = &c.scored else {
@@ -364,8 +363,7 @@ pub fn beside_courant_table(set: &ScoredSet, courant: &SceneOutcome, scale: f64)
                 .collect();
             (!differences.is_empty()).then(|| differences.into_iter().fold(0.0, f64::max))
         });
-        let [_, sign, load] = c.diagnostics.verdicts();
-        let shift = c.diagnostics.shift.as_ref().ok();
+        let [_, level, sign, layout] = c.diagnostics.verdicts();
         table.push(vec![
             c.case.as_str().into(),
             c.mass.clone().into(),
@@ -378,12 +376,9 @@ pub fn beside_courant_table(set: &ScoredSet, courant: &SceneOutcome, scale: f64)
             n.map(|n| n.overshoot).into(),
             m.map(|n| n.overshoot).into(),
             difference.into(),
-            shift
-                .filter(|s| s.decided())
-                .map(|s| Cell::Text(s.offset.to_string()))
-                .unwrap_or(Cell::Empty),
-            sign.2.into(),
-            load.2.into(),
+            level.measured.into(),
+            sign.measured.into(),
+            layout.measured.into(),
         ]);
     }
     table

@@ -3,7 +3,7 @@
 //! any directory and its content does not depend on the working directory. A test checks that
 //! this list holds every file of those directories.
 
-use super::error::ExchangeError;
+use super::error::ExchangeErrors;
 use super::reader::read_set;
 use super::record::ExchangeSet;
 
@@ -25,7 +25,7 @@ impl CommittedSet {
     ///
     /// # Errors
     /// A committed file is not valid exchange data (a bug caught by the tests).
-    pub fn read(&self) -> Result<ExchangeSet, ExchangeError> {
+    pub fn read(&self) -> Result<ExchangeSet, ExchangeErrors> {
         let files: Vec<(String, String)> = self
             .files
             .iter()

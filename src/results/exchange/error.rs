@@ -51,6 +51,38 @@ impl ExchangeError {
     }
 }
 
+/// Every error of a result set, in file order: a set is read whole and all of them reported at
+/// once, so that one run shows everything to fix.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("{}", render(.0))]
+pub struct ExchangeErrors(pub Vec<ExchangeError>);
+
+/// At most this many errors of one file are reported (the rest are counted).
+pub const ERRORS_PER_FILE: usize = 20;
+
+fn render(errors: &[ExchangeError]) -> String {
+    match errors {
+        [one] => one.to_string(),
+        many => {
+            let lines: Vec<String> = many.iter().map(ToString::to_string).collect();
+            format!("{} errors:\n  {}", many.len(), lines.join("\n  "))
+        }
+    }
+}
+
+impl From<ExchangeError> for ExchangeErrors {
+    fn from(e: ExchangeError) -> Self {
+        Self(vec![e])
+    }
+}
+
+impl ExchangeErrors {
+    /// The first error (in file order).
+    pub fn first(&self) -> &ExchangeError {
+        &self.0[0]
+    }
+}
+
 /// 1-based (line, column) of a byte offset of `text`.
 pub fn line_column(text: &str, offset: usize) -> (usize, usize) {
     let before = &text[..offset.min(text.len())];

@@ -7,11 +7,15 @@
 //! version = "2026.3"         # its version
 //!
 //! [cases."co0.5"]            # one table per case file (co0.5.csv), every key optional
-//! scheme = "central-difference"
+//! scheme = "central-difference"  # a name of `courant list --schemes` (or a contact scheme)
+//! parameters = { }           # the scheme's parameters, e.g. { p = 0.54 } for noh-bathe
 //! mass = "lumped"            # lmm/lumped, cmm/consistent, amm(beta), rmm(beta)
 //! dt = 0.005                 # the time step (time-level offsets are counted in steps of it)
 //! elements = 100             # the number of elements
 //! ```
+//!
+//! `scheme`, `parameters` and `mass` say which of the scene's signature rows apply to the case
+//! (`compare::score::applies`): those of a case run with the same scheme, parameters and mass.
 
 use super::FORMAT;
 use super::error::{ExchangeError, line_column};
@@ -19,11 +23,46 @@ use serde::Deserialize;
 use std::collections::BTreeMap;
 use toml::Spanned;
 
+/// A scheme parameter's value in `results.toml`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MetaValue {
+    /// A number.
+    Number(f64),
+    /// A word.
+    Text(String),
+}
+
+/// A key of `results.toml` with its value and its (line, column).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Located<T> {
+    /// The value.
+    pub value: T,
+    /// 1-based line.
+    pub line: usize,
+    /// 1-based column.
+    pub column: usize,
+}
+
+impl<T> Located<T> {
+    /// A value with no position (a set built in memory).
+    pub fn unplaced(value: T) -> Self {
+        Self {
+            value,
+            line: 0,
+            column: 0,
+        }
+    }
+}
+
 /// What `results.toml` says of one case.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct CaseMeta {
-    /// Time-stepping scheme, as the producer names it.
+    /// Time-stepping (or contact) scheme, as the registry names it.
     pub scheme: Option<String>,
+    /// Where `scheme` is (line, column), for messages.
+    pub scheme_at: (usize, usize),
+    /// The scheme's parameters, in file order (keys sorted by TOML).
+    pub parameters: Vec<(String, Located<MetaValue>)>,
     /// Mass kind, as written, with its (line, column) (checked against the scene's vocabulary
     /// by `compare::score`).
     pub mass: Option<(String, usize, usize)>,
@@ -70,7 +109,8 @@ struct RawMeta {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawCaseMeta {
-    scheme: Option<String>,
+    scheme: Option<Spanned<String>>,
+    parameters: Option<BTreeMap<String, Spanned<toml::Value>>>,
     mass: Option<Spanned<String>>,
     dt: Option<Spanned<toml::Value>>,
     elements: Option<Spanned<i64>>,
@@ -155,10 +195,43 @@ pub fn parse(file: &str, text: &str) -> Result<ResultsMeta, ExchangeError> {
             let (line, column) = line_column(text, m.span().start);
             (m.into_inner(), line, column)
         });
+        let mut parameters = Vec::new();
+        for (k, v) in raw.parameters.unwrap_or_default() {
+            let (line, column) = line_column(text, v.span().start);
+            let value = match v.get_ref() {
+                toml::Value::Float(x) if x.is_finite() => MetaValue::Number(*x),
+                toml::Value::Integer(i) => MetaValue::Number(*i as f64),
+                toml::Value::String(word) => MetaValue::Text(word.clone()),
+                other => {
+                    return Err(at(
+                        v.span().start,
+                        &format!("cases.\"{name}\".parameters.{k}"),
+                        format!("{other} is not a finite number or a word in quotes"),
+                    ));
+                }
+            };
+            parameters.push((
+                k,
+                Located {
+                    value,
+                    line,
+                    column,
+                },
+            ));
+        }
+        let (scheme, scheme_at) = match raw.scheme {
+            Some(s) => {
+                let at = line_column(text, s.span().start);
+                (Some(s.into_inner()), at)
+            }
+            None => (None, (0, 0)),
+        };
         cases.insert(
             name,
             CaseMeta {
-                scheme: raw.scheme,
+                scheme,
+                scheme_at,
+                parameters,
                 mass,
                 dt,
                 elements,
@@ -193,6 +266,17 @@ pub fn render(code: &str, version: &str, cases: &[(String, CaseMeta)]) -> String
         if let Some(s) = &meta.scheme {
             out += &format!("scheme = {}\n", quoted(s));
         }
+        if !meta.parameters.is_empty() {
+            let items: Vec<String> = meta
+                .parameters
+                .iter()
+                .map(|(k, v)| match &v.value {
+                    MetaValue::Number(x) => format!("{k} = {x:?}"),
+                    MetaValue::Text(word) => format!("{k} = {}", quoted(word)),
+                })
+                .collect();
+            out += &format!("parameters = {{ {} }}\n", items.join(", "));
+        }
         if let Some((m, ..)) = &meta.mass {
             out += &format!("mass = {}\n", quoted(m));
         }
@@ -213,11 +297,12 @@ mod tests {
     #[test]
     fn a_written_file_reads_back() {
         let case = CaseMeta {
-            scheme: Some("cd".into()),
+            scheme: Some("noh-bathe".into()),
+            parameters: vec![("p".into(), Located::unplaced(MetaValue::Number(0.54)))],
             mass: Some(("rmm(0.5)".into(), 0, 0)),
             dt: Some(0.1 + 0.2),
             elements: Some((100, 0)),
-            line: 0,
+            ..CaseMeta::default()
         };
         let text = render("courant", "0.1.0", &[("co0.5".into(), case)]);
         let meta = parse("r.toml", &text).unwrap();
@@ -227,6 +312,10 @@ mod tests {
         assert_eq!(c.dt, Some(0.1 + 0.2));
         assert_eq!(c.elements.map(|e| e.0), Some(100));
         assert_eq!(c.mass.as_ref().map(|m| m.0.as_str()), Some("rmm(0.5)"));
+        assert_eq!(c.scheme.as_deref(), Some("noh-bathe"));
+        assert_eq!(c.parameters[0].0, "p");
+        assert_eq!(c.parameters[0].1.value, MetaValue::Number(0.54));
+        assert_eq!(c.parameters[0].1.line, 7, "{text}");
     }
 
     #[test]

@@ -2,7 +2,7 @@
 //! CSV field number) and the column name, and nothing is returned half-read.
 
 use super::columns::{Header, Kind, Want};
-use super::error::ExchangeError;
+use super::error::{ERRORS_PER_FILE, ExchangeError, ExchangeErrors};
 use super::meta::{ResultsMeta, parse};
 use super::record::{
     CaseData, CaseFile, ExchangeSet, ForceHistory, Positions, Profile, SpectrumRow,
@@ -55,6 +55,19 @@ pub fn read_case(
     text: &str,
     want: Want,
 ) -> Result<CaseFile, ExchangeError> {
+    read_case_whole(file, case, text, want).map_err(|mut e| e.0.swap_remove(0))
+}
+
+/// [`read_case`], reporting every bad cell (up to [`ERRORS_PER_FILE`]) rather than the first.
+///
+/// # Errors
+/// As [`read_case`], all of them.
+pub fn read_case_whole(
+    file: &str,
+    case: &str,
+    text: &str,
+    want: Want,
+) -> Result<CaseFile, ExchangeErrors> {
     let mut reader = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());
@@ -65,13 +78,7 @@ pub fn read_case(
         .map(str::to_string)
         .collect();
     if names.iter().all(|n| n.trim().is_empty()) {
-        return Err(ExchangeError::at(
-            file,
-            1,
-            1,
-            "",
-            "no header line: the file is empty",
-        ));
+        return Err(ExchangeError::at(file, 1, 1, "", "no header line: the file is empty").into());
     }
     let header = Header::recognise(file, &names, want)?;
     let wanted: Vec<&'static str> = match want {
@@ -79,8 +86,23 @@ pub fn read_case(
         Want::Query => header.kind.keys().to_vec(),
     };
     let mut rows = Vec::new();
+    let mut errors = Vec::new();
+    let mut more = 0usize;
+    let mut note = |e: ExchangeError, errors: &mut Vec<ExchangeError>| {
+        if errors.len() < ERRORS_PER_FILE {
+            errors.push(e);
+        } else {
+            more += 1;
+        }
+    };
     for record in reader.records() {
-        let record = record.map_err(|e| csv_error(file, &e))?;
+        let record = match record {
+            Ok(r) => r,
+            Err(e) => {
+                note(csv_error(file, &e), &mut errors);
+                continue;
+            }
+        };
         let line = record.position().map_or(0, |p| p.line() as usize);
         let mut cells = Vec::new();
         for &column in &wanted {
@@ -88,18 +110,24 @@ pub fn read_case(
                 continue;
             };
             let raw = record.get(i).unwrap_or_default();
-            cells.push((column, cell(file, line, i + 1, column, raw)?));
+            match cell(file, line, i + 1, column, raw) {
+                Ok(c) => cells.push((column, c)),
+                Err(e) => note(e, &mut errors),
+            }
         }
         rows.push(Row { line, cells });
     }
-    if rows.is_empty() {
-        return Err(ExchangeError::at(
+    if more > 0 {
+        errors.push(ExchangeError::file(
             file,
-            1,
-            1,
-            "",
-            "no rows after the header",
+            format!("and {more} more bad cell(s) not listed"),
         ));
+    }
+    if !errors.is_empty() {
+        return Err(ExchangeErrors(errors));
+    }
+    if rows.is_empty() {
+        return Err(ExchangeError::at(file, 1, 1, "", "no rows after the header").into());
     }
     let column_of = |name: &str| header.field(name).map_or(1, |i| i + 1);
     let data = match header.kind {
@@ -401,52 +429,76 @@ fn spectrum(
 /// ignored. Cases are sorted by name.
 ///
 /// # Errors
-/// The first bad file in name order; no case file at all; a `results.toml` table naming a case
-/// that has no file.
+/// Every bad file in name order (every bad cell of each, up to [`ERRORS_PER_FILE`]); no case
+/// file at all; a `results.toml` table naming a case that has no file.
 pub fn read_set(
     label: &str,
     dir: &str,
     files: &[(String, String)],
-) -> Result<ExchangeSet, ExchangeError> {
+) -> Result<ExchangeSet, ExchangeErrors> {
+    match read_set_partial(label, dir, files) {
+        (Some(set), errors) if errors.is_empty() => Ok(set),
+        (_, errors) => Err(ExchangeErrors(errors)),
+    }
+}
+
+/// [`read_set`], keeping what reads: the set of the good files (with `results.toml` if it
+/// reads; `None` when no case file reads) and every error.
+pub fn read_set_partial(
+    label: &str,
+    dir: &str,
+    files: &[(String, String)],
+) -> (Option<ExchangeSet>, Vec<ExchangeError>) {
     let path = |name: &str| format!("{}/{name}", dir.trim_end_matches('/'));
     let mut names: Vec<&(String, String)> = files.iter().collect();
     names.sort_by(|a, b| a.0.cmp(&b.0));
     let mut cases = Vec::new();
+    let mut errors = Vec::new();
     for (name, text) in &names {
         if let Some(stem) = name.strip_suffix(".csv") {
-            cases.push(read_case(&path(name), stem, text, Want::Results)?);
+            match read_case_whole(&path(name), stem, text, Want::Results) {
+                Ok(case) => cases.push(case),
+                Err(e) => errors.extend(e.0),
+            }
         }
     }
-    if cases.is_empty() {
-        return Err(ExchangeError::file(
-            dir,
-            "no case files: a result set holds one <case>.csv per case",
-        ));
+    if cases.is_empty() && errors.is_empty() {
+        let none = "no case files: a result set holds one <case>.csv per case";
+        return (None, vec![ExchangeError::file(dir, none)]);
     }
-    let meta: Option<ResultsMeta> = names
-        .iter()
-        .find(|(name, _)| name == META_FILE)
-        .map(|(name, text)| parse(&path(name), text))
-        .transpose()?;
-    if let Some(meta) = &meta
-        && let Some((name, m)) = meta
-            .cases
-            .iter()
-            .find(|(n, _)| !cases.iter().any(|c| &c.case == *n))
-    {
-        return Err(ExchangeError::at(
-            &meta.file,
-            m.line,
-            1,
-            &format!("cases.\"{name}\""),
-            format!("there is no file {name}.csv in this set"),
-        ));
+    let meta: Option<ResultsMeta> = match names.iter().find(|(name, _)| name == META_FILE) {
+        None => None,
+        Some((name, text)) => match parse(&path(name), text) {
+            Ok(meta) => Some(meta),
+            Err(e) => {
+                errors.push(e);
+                None
+            }
+        },
+    };
+    if let Some(meta) = &meta {
+        // A table for a case whose file failed to read is not reported twice.
+        let failed: Vec<String> = errors.iter().map(|e| e.file.clone()).collect();
+        for (name, m) in &meta.cases {
+            if !cases.iter().any(|c| &c.case == name)
+                && !failed.contains(&path(&format!("{name}.csv")))
+            {
+                errors.push(ExchangeError::at(
+                    &meta.file,
+                    m.line,
+                    1,
+                    &format!("cases.\"{name}\""),
+                    format!("there is no file {name}.csv in this set"),
+                ));
+            }
+        }
     }
-    Ok(ExchangeSet {
+    let set = (!cases.is_empty()).then(|| ExchangeSet {
         label: label.to_string(),
         cases,
         meta,
-    })
+    });
+    (set, errors)
 }
 
 /// Read a result set from a directory (its `*.csv` and `results.toml`; subdirectories and other
@@ -454,14 +506,33 @@ pub fn read_set(
 ///
 /// # Errors
 /// The directory cannot be read, or as [`read_set`].
-pub fn read_dir(dir: &Path) -> Result<ExchangeSet, ExchangeError> {
+pub fn read_dir(dir: &Path) -> Result<ExchangeSet, ExchangeErrors> {
+    match read_dir_partial(dir) {
+        (Some(set), errors) if errors.is_empty() => Ok(set),
+        (_, errors) => Err(ExchangeErrors(errors)),
+    }
+}
+
+/// [`read_dir`], keeping what reads (as [`read_set_partial`]).
+pub fn read_dir_partial(dir: &Path) -> (Option<ExchangeSet>, Vec<ExchangeError>) {
     let shown = dir.display().to_string();
     let unreadable = |e: std::io::Error| {
         ExchangeError::file(&shown, format!("cannot read the results directory: {e}"))
     };
+    let entries = match std::fs::read_dir(dir) {
+        Ok(entries) => entries,
+        Err(e) => return (None, vec![unreadable(e)]),
+    };
     let mut files = Vec::new();
-    for entry in std::fs::read_dir(dir).map_err(unreadable)? {
-        let path = entry.map_err(unreadable)?.path();
+    let mut errors = Vec::new();
+    for entry in entries {
+        let path = match entry {
+            Ok(entry) => entry.path(),
+            Err(e) => {
+                errors.push(unreadable(e));
+                continue;
+            }
+        };
         let Some(name) = path
             .file_name()
             .and_then(|n| n.to_str())
@@ -470,13 +541,22 @@ pub fn read_dir(dir: &Path) -> Result<ExchangeSet, ExchangeError> {
             continue;
         };
         if path.is_file() && (name.ends_with(".csv") || name == META_FILE) {
-            let text = std::fs::read_to_string(&path).map_err(|e| {
-                ExchangeError::file(&path.display().to_string(), format!("cannot read: {e}"))
-            })?;
-            files.push((name, text));
+            match std::fs::read_to_string(&path) {
+                Ok(text) => files.push((name, text)),
+                Err(e) => errors.push(ExchangeError::file(
+                    &path.display().to_string(),
+                    format!("cannot read: {e}"),
+                )),
+            }
         }
     }
-    read_set(&shown, &shown, &files)
+    let (set, mut more) = read_set_partial(&shown, &shown, &files);
+    if set.is_none() && !errors.is_empty() {
+        // "no case files" says nothing when the files are there but unreadable.
+        more.retain(|e| e.file != shown);
+    }
+    errors.extend(more);
+    (set, errors)
 }
 
 /// Read a query file (`courant reference --at`): the positions and times (or modes) of one
@@ -563,7 +643,57 @@ mod tests {
             ),
         ];
         let e = read_set("d", "d", &files).unwrap_err();
-        assert_eq!((e.file.as_str(), e.line), ("d/results.toml", 1), "{e}");
+        assert_eq!(
+            (e.first().file.as_str(), e.first().line),
+            ("d/results.toml", 1),
+            "{e}"
+        );
         assert!(read_set("d", "d", &files[..1]).is_ok());
+    }
+
+    #[test]
+    fn a_set_is_read_whole_and_every_bad_file_and_cell_reported() {
+        let files = vec![
+            (
+                "a.csv".to_string(),
+                "t,force
+0,x
+1,y
+"
+                .to_string(),
+            ),
+            (
+                "b.csv".to_string(),
+                "t,force
+0,1
+0,2
+"
+                .to_string(),
+            ),
+            (
+                "c.csv".to_string(),
+                "t,force
+0,1
+"
+                .to_string(),
+            ),
+            (
+                "results.toml".to_string(),
+                "[cases.c]\nsheme = 1\n".to_string(),
+            ),
+        ];
+        let e = read_set("d", "d", &files).unwrap_err();
+        let at: Vec<(&str, usize)> = e.0.iter().map(|e| (e.file.as_str(), e.line)).collect();
+        assert_eq!(
+            at,
+            vec![
+                ("d/a.csv", 2),
+                ("d/a.csv", 3),
+                ("d/b.csv", 3),
+                ("d/results.toml", 2)
+            ],
+            "{e}"
+        );
+        assert!(e.to_string().starts_with("4 errors:"), "{e}");
     }
 }
