@@ -80,7 +80,11 @@ fn an_exported_run_scores_0_with_its_tables_and_junit() {
     assert!(stdout.contains(" verdict case  metric"), "{stdout}");
     assert!(stdout.contains("pass    co1   linf"), "{stdout}");
     assert!(stdout.contains("skip    co1   energy_balance"), "{stdout}");
-    assert!(stdout.contains("pass    co1   time_offset"), "{stdout}");
+    assert!(
+        !stdout.contains("n/a     co1   energy_balance"),
+        "declared: it applies"
+    );
+    assert!(stdout.contains("pass    co1   time_level"), "{stdout}");
     assert!(stdout.contains("0 failed: pass"), "{stdout}");
     for (file, header) in [
         (
@@ -94,7 +98,7 @@ fn an_exported_run_scores_0_with_its_tables_and_junit() {
         ),
         (
             "diagnostics.csv",
-            "set,case,dt,dt_source,time_shift_steps,shift_residual,time_offset_steps,time_offset_verdict,sign_error,sign_error_flipped,sign,sign_verdict,load_fraction,load_convention,load_verdict,notes",
+            "set,case,dt,dt_source,time_shift_steps,shift_residual,time_level,time_level_verdict,sign_error,sign_error_flipped,sign,sign_verdict,layout,layout_verdict,max_stress_over_scale,magnitude_verdict,notes",
         ),
     ] {
         let content = std::fs::read_to_string(out_dir.join("fig1").join(file)).unwrap();
@@ -127,7 +131,7 @@ fn a_set_one_step_late_exits_1_with_the_offset_as_a_junit_failure() {
     ]);
     assert_eq!(out.status.code(), Some(1), "{}", text(&out));
     assert!(
-        String::from_utf8_lossy(&out.stdout).contains("FAIL    co1   time_offset"),
+        String::from_utf8_lossy(&out.stdout).contains("FAIL    co1   time_level"),
         "{}",
         text(&out)
     );
@@ -138,7 +142,7 @@ fn a_set_one_step_late_exits_1_with_the_offset_as_a_junit_failure() {
         .filter(|e| e.name == "testcase" && e.child("failure").is_some())
         .map(|e| e.value("name"))
         .collect();
-    assert!(failures.contains(&"co1 time_offset"), "{failures:?}");
+    assert!(failures.contains(&"co1 time_level"), "{failures:?}");
 }
 
 /// One edit of an exported fig1 set: (file, text to find, replacement).
@@ -334,10 +338,10 @@ fn the_readme_example_scores_as_documented() {
     for row in [
         "pass co1 linf 0.0000e0 <= 1e-10",
         "skip co1 energy_balance",
-        "skip co0.5 overshoot",
-        "pass co1 time_offset 0 steps == 0 steps",
+        "missing co0.5 overshoot",
+        "pass co1 time_level on time on time",
         "pass co1 sign tension positive",
-        "pass co1 load_convention H(0) = 1",
+        "pass co1 layout as given as given",
     ] {
         assert!(
             rows.iter().any(|r| r.starts_with(row)),

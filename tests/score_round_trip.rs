@@ -269,7 +269,10 @@ fn several_meshes_give_the_orders_of_the_report_study() {
     for set in &outcome.sets {
         for c in &set.cases {
             assert!(
-                c.diagnostics.verdicts().iter().all(|v| v.1 != Some(false)),
+                c.diagnostics
+                    .verdicts()
+                    .iter()
+                    .all(|v| v.verdict != Some(false)),
                 "{}",
                 c.case
             );

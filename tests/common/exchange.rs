@@ -8,7 +8,7 @@ use courant::compare::outcome::SceneOutcome;
 use courant::compare::score::export::exchange_set;
 use courant::pipeline::{evaluate_case, evaluate_scene};
 use courant::results::exchange::reader::read_dir;
-use courant::results::exchange::record::{CaseData, ExchangeSet};
+use courant::results::exchange::record::{CaseData, ExchangeSet, Positions};
 use courant::results::exchange::writer::set_files;
 use courant::scene::Scene;
 use courant::scene::builtin::{builtin_scene, builtin_text};
@@ -79,12 +79,101 @@ pub fn sign_flipped(scene: &Scene) -> ExchangeSet {
 
 /// The Fig. 1 scene run with the step load at H(0) = 1/2 (`value_at_start = 0.5`).
 pub fn heaviside_half(name: &str) -> ExchangeSet {
+    with_start_value(name, 0.5)
+}
+
+/// A Fig. 1 scene run with the step load's value at t = 0 set to `h0` times the load: with the
+/// half-step start the first step delivers the impulse `h0 F0 dt / 2`. `h0 = 2` is the
+/// three-level start with the full F(0) (OpenSees' `CentralDifference`: `u^1 = dt^2 M^-1 F0`),
+/// `h0 = 0` no impulse at t = 0 (`a^0 = 0`, OpenSees' `ExplicitDifference`), `h0 = 1/2` the
+/// H(0) = 1/2 convention.
+pub fn with_start_value(name: &str, h0: f64) -> ExchangeSet {
     let scene = derived(
         name,
         "time = \"step\"         # H(t) with H(0) = 1",
-        "time = \"step\"\nvalue_at_start = 0.5",
+        &format!("time = \"step\"\nvalue_at_start = {h0:?}"),
     );
     courant_set(&scene).1
+}
+
+/// How a set's element values are turned into a point file.
+#[derive(Debug, Clone, Copy)]
+pub enum PointForm {
+    /// Each element's value at its midpoint.
+    Midpoints,
+    /// At every node the mean of the values of the elements beside it (one at an end).
+    NodalAverages,
+}
+
+/// The set with every element profile written as points (`t, x, stress`).
+pub fn as_points(set: &ExchangeSet, form: PointForm) -> ExchangeSet {
+    let mut set = set.clone();
+    for file in &mut set.cases {
+        let CaseData::Profiles(profiles) = &mut file.data else {
+            continue;
+        };
+        for p in profiles {
+            let Positions::Elements { left, right } = &p.positions else {
+                continue;
+            };
+            let n = left.len();
+            let (x, stress): (Vec<f64>, Vec<f64>) = match form {
+                PointForm::Midpoints => (
+                    left.iter().zip(right).map(|(a, b)| 0.5 * (a + b)).collect(),
+                    p.stress.clone(),
+                ),
+                PointForm::NodalAverages => (0..=n)
+                    .map(|i| match i {
+                        0 => (left[0], p.stress[0]),
+                        i if i == n => (right[n - 1], p.stress[n - 1]),
+                        i => (left[i], 0.5 * (p.stress[i - 1] + p.stress[i])),
+                    })
+                    .unzip(),
+            };
+            p.positions = Positions::Points(x);
+            p.stress = stress;
+            p.lines = Vec::new();
+        }
+    }
+    set
+}
+
+/// The set written from the far end: the value of `[a, b]` given for `[L - b, L - a]` (the bar
+/// starting at 0).
+pub fn mirrored(set: &ExchangeSet) -> ExchangeSet {
+    let mut set = set.clone();
+    for file in &mut set.cases {
+        let CaseData::Profiles(profiles) = &mut file.data else {
+            continue;
+        };
+        for p in profiles {
+            let Positions::Elements { left, right } = &p.positions else {
+                continue;
+            };
+            let end = right[right.len() - 1];
+            let new_left: Vec<f64> = right.iter().rev().map(|b| end - b).collect();
+            let new_right: Vec<f64> = left.iter().rev().map(|a| end - a).collect();
+            p.positions = Positions::Elements {
+                left: new_left,
+                right: new_right,
+            };
+            p.stress.reverse();
+        }
+    }
+    set
+}
+
+/// The set with every stress multiplied by `factor` (1e125: a code that diverged).
+pub fn scaled(set: &ExchangeSet, factor: f64) -> ExchangeSet {
+    let mut set = set.clone();
+    for file in &mut set.cases {
+        if let CaseData::Profiles(profiles) = &mut file.data {
+            for p in profiles {
+                p.stress.iter_mut().for_each(|s| *s *= factor);
+            }
+        }
+    }
+    set
 }
 
 /// Write `set` to `dir` and read it back, as `courant score` reads a directory.
