@@ -26,12 +26,11 @@
 mod exchange;
 
 use courant::compare::score::answers::exact_set;
-use courant::compare::score::diagnostics::{
-    DiagnosticRow, Diagnostics, Layout, StartImpulse, TimeLevel,
-};
+use courant::compare::score::diagnostics::{DiagnosticRow, Diagnostics, Layout};
 use courant::compare::score::outcome::{ScoredCase, ScoredSet};
 use courant::compare::score::set::score_set;
-use courant::results::exchange::reader::read_dir;
+use courant::compare::score::time_level::{StartImpulse, TimeLevel};
+use courant::results::exchange::files::read_dir;
 use courant::results::exchange::record::{CaseData, ExchangeSet};
 use exchange::{
     PointForm, as_points, courant_set, mirrored, one_step_late, scaled, scene, sign_flipped,

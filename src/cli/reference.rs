@@ -3,7 +3,7 @@
 
 use crate::compare::score::answers::exact_set;
 use crate::io::atomic::write_dir_atomically;
-use crate::results::exchange::reader::read_query;
+use crate::results::exchange::files::read_query;
 use crate::results::exchange::writer::set_files;
 use crate::scene::builtin::resolve;
 use std::path::Path;

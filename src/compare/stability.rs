@@ -25,7 +25,7 @@ use super::outcome::SceneOutcome;
 use crate::results::case::Status;
 use crate::results::table::Table;
 use crate::scene::cases::Scene;
-use crate::scene::expectation::{Finding, Observed};
+use crate::scene::finding::{Finding, Observed};
 use courant_solver::contact::StepLimit;
 use courant_solver::{EnergyLog, EnergySample};
 

@@ -2,7 +2,8 @@
 
 use super::contact::{ContactCase, StabilitySweep};
 use super::dispersion::DispersionCase;
-use super::expectation::{Expectation, Finding};
+use super::expectation::Expectation;
+use super::finding::Finding;
 use super::reference::Reference;
 use super::spectrum::SpectrumCase;
 use courant_solver::{CriticalStep, Integration, Model, OutputRequest, SchemeLimit, TimePlan};

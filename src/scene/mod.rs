@@ -34,6 +34,7 @@ pub mod contact;
 pub mod dispersion;
 pub mod error;
 pub mod expectation;
+pub mod finding;
 pub mod geometry;
 pub mod limits;
 pub mod magnitude;

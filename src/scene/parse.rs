@@ -3,7 +3,8 @@
 use super::budget;
 use super::cases::Scene;
 use super::error::{SceneError, Source, collect_all};
-use super::expectation::{ExpectContext, Finding, Study, expectation, finding};
+use super::expectation::{ExpectContext, Study, expectation};
+use super::finding::{Finding, finding};
 use super::geometry::Geometry;
 use super::limits::Limits;
 use super::schema::{RawContactScene, RawFinding, RawHeader, RawScene};

@@ -34,3 +34,4 @@ pub mod set;
 pub mod shift_fit;
 pub mod spectrum;
 pub mod tables;
+pub mod time_level;

@@ -2,9 +2,10 @@
 //! at its own times, with the norms of `courant run` ([`ErrorNorms`]) and the diagnostics.
 
 use super::bind::{Bound, bar_extent};
-use super::diagnostics::{Diagnostics, Layout, LayoutCheck, Magnitude, SignCheck, TimeShift};
+use super::diagnostics::{Diagnostics, Layout, LayoutCheck, Magnitude, SignCheck};
 use super::outcome::{Read, ScoreError, Scored, ScoredCase, ScoredProfile};
 use super::shift_fit::{FitProfile, fit_profiles};
+use super::time_level::TimeShift;
 use crate::compare::exact::ExactSolution;
 use crate::compare::norms::ErrorNorms;
 use crate::results::exchange::error::ExchangeError;

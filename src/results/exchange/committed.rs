@@ -4,8 +4,8 @@
 //! this list holds every file of those directories.
 
 use super::error::ExchangeErrors;
-use super::reader::read_set;
 use super::record::ExchangeSet;
+use super::set::read_set;
 
 /// One committed result set.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

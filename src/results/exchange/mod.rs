@@ -25,26 +25,30 @@
 //!   in any order (they are sorted by position) but must not overlap; force-history times
 //!   increase strictly;
 //! - an optional `results.toml` ([`meta`]): `format` (default 1), `code`, `version`, and per case
-//!   `[cases."<case>"]` with `scheme`, `mass`, `dt`, `elements`; unknown keys are errors.
+//!   `[cases."<case>"]` with `scheme`, `parameters`, `mass`, `dt`, `elements`; unknown keys are
+//!   errors.
 //!
 //! Versioning: `results.toml`'s `format` is the version (absent: 1). A reader refuses a format
 //! newer than [`FORMAT`]; any change a format-1 reader would not read correctly (a new column or
 //! key included, since unknown ones are errors) makes a new number.
 //!
 //! - [`record`]: the records read from files; [`columns`]: the kinds of file and their columns;
-//!   [`reader`]: files to records with errors naming file, line, column and key ([`error`]);
+//!   [`reader`]: files to records with errors naming file, line, column and key, every error of a
+//!   set at once ([`error`]); [`set`]: a set from its files' contents; [`files`]: sets and queries read from disk;
 //!   [`meta`]: `results.toml`; [`writer`]: records to files; [`committed`]: the external result
 //!   sets committed in this repository and compiled into the binary.
 //!
-//! Enters: file contents. Leaves: records, or a located [`error::ExchangeError`]. Must not know:
+//! Enters: file contents. Leaves: records, or every located [`error::ExchangeError`]. Must not know:
 //! scenes, references, norms (a record is checked against its scene by `compare::score`).
 
 pub mod columns;
 pub mod committed;
 pub mod error;
+pub mod files;
 pub mod meta;
 pub mod reader;
 pub mod record;
+pub mod set;
 pub mod writer;
 
 /// The format version this courant reads and writes.

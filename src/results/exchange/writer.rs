@@ -109,8 +109,9 @@ pub fn set_files(set: &ExchangeSet) -> Vec<(String, String)> {
 #[cfg(test)]
 mod tests {
     use super::super::columns::Want;
-    use super::super::reader::{read_case, read_set};
+    use super::super::reader::read_case;
     use super::super::record::{ForceHistory, Profile, SpectrumRow};
+    use super::super::set::read_set;
     use super::*;
 
     #[test]
