@@ -66,6 +66,10 @@ enum Command {
         /// default these are "not supplied" and skipped).
         #[arg(long)]
         require_all: bool,
+        /// Findings stated for the sets (a `stated.toml`: case, check, finding): a stated check
+        /// that fails is a finding of that code, not a failure; one that passes fails.
+        #[arg(long, value_name = "FILE")]
+        stated: Option<PathBuf>,
         /// Write summary.csv, norms.csv, expectations.csv, diagnostics.csv (and convergence.csv)
         /// to DIR/<scene>/.
         #[arg(long, value_name = "DIR")]
@@ -164,12 +168,16 @@ fn main() -> ExitCode {
             scene,
             results,
             require_all,
+            stated,
             out,
             junit,
         } => courant::cli::score::score(
             &scene,
             &results,
-            require_all,
+            &courant::cli::score::Options {
+                require_all,
+                stated: stated.as_deref(),
+            },
             out.as_deref(),
             junit.as_deref(),
         ),

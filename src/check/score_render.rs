@@ -25,6 +25,8 @@ pub struct ScoreCounts {
     pub orders: usize,
     /// Failed checks of all kinds.
     pub failed: usize,
+    /// Failures stated as findings of the code (`--stated`).
+    pub findings: usize,
 }
 
 /// Count the checks of `outcome`.
@@ -33,6 +35,8 @@ pub fn counts(outcome: &ScoreOutcome) -> ScoreCounts {
     for set in &outcome.sets {
         c.expectations += set.verdicts.len();
         c.failed += set.verdicts.iter().filter(|v| !v.pass).count();
+        c.findings += set.verdicts.iter().filter(|v| v.finding).count();
+        c.failed += set.stated.iter().filter(|s| !s.holds).count();
         for s in &set.skipped {
             match s.kind {
                 SkipKind::NotApplicable => c.not_applicable += 1,
@@ -44,10 +48,12 @@ pub fn counts(outcome: &ScoreOutcome) -> ScoreCounts {
         if set.require_all {
             c.failed += set.not_supplied() + set.missing_cases.len();
         }
-        for case in &set.cases {
-            for row in case.diagnostics.verdicts() {
-                if let Some(pass) = row.verdict {
-                    c.diagnostics += 1;
+        for (_, row, stated) in set.diagnostic_rows() {
+            if let Some(pass) = row.verdict {
+                c.diagnostics += 1;
+                if stated {
+                    c.findings += 1;
+                } else {
                     c.failed += usize::from(!pass);
                 }
             }
@@ -132,20 +138,28 @@ pub fn check_rows(set: &ScoredSet) -> Vec<[String; 6]> {
             format!("{} [{}]", s.reason, s.source),
         ]);
     }
-    for c in &set.cases {
-        for row in c.diagnostics.verdicts() {
-            if row.note.starts_with("not applicable") {
-                continue;
-            }
-            rows.push([
-                word(row.verdict).into(),
-                c.case.clone(),
-                row.name.into(),
-                row.measured,
-                row.expected.into(),
-                row.note,
-            ]);
+    for (case, row, stated) in set.diagnostic_rows() {
+        if row.note.starts_with("not applicable") {
+            continue;
         }
+        rows.push([
+            if stated { "finding" } else { word(row.verdict) }.into(),
+            case.to_string(),
+            row.name.into(),
+            row.measured,
+            row.expected.into(),
+            row.note,
+        ]);
+    }
+    for s in set.stated.iter().filter(|s| !s.holds) {
+        rows.push([
+            "FAIL".into(),
+            s.stated.case.clone(),
+            s.stated.check.clone(),
+            "passes".into(),
+            "stated to fail".into(),
+            format!("stated as a finding, but it does not fail: {}", s.stated.finding),
+        ]);
     }
     for missing in &set.missing_cases {
         rows.push([
@@ -220,12 +234,13 @@ pub fn terminal(scene: &Scene, outcome: &ScoreOutcome) -> String {
     let c = counts(outcome);
     let _ = writeln!(
         out,
-        "\nscore: {}, {} set(s): {} expectation verdict(s), {} diagnostic(s), {} fitted order(s), {} failed: {}; no verdict: {} not applicable, {} not supplied{}, {} not measurable from files",
+        "\nscore: {}, {} set(s): {} expectation verdict(s), {} diagnostic(s), {} fitted order(s), {} stated finding(s), {} failed: {}; no verdict: {} not applicable, {} not supplied{}, {} not measurable from files",
         scene.name,
         outcome.sets.len(),
         c.expectations,
         c.diagnostics,
         c.orders,
+        c.findings,
         c.failed,
         if c.failed == 0 { "pass" } else { "FAIL" },
         c.not_applicable,

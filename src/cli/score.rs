@@ -3,6 +3,7 @@
 
 use crate::check::score_junit::xml;
 use crate::check::score_render::terminal;
+use crate::compare::score::stated::{Stated, apply, parse};
 use crate::compare::score::tables::score_files;
 use crate::io::atomic::{write_dir_atomically, write_file_atomically};
 use crate::io::clock::date;
@@ -11,13 +12,32 @@ use crate::scene::builtin::resolve;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+/// How `courant score` judges what it reads.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Options<'a> {
+    /// What is not supplied fails (`--require-all`).
+    pub require_all: bool,
+    /// Findings stated for the sets (`--stated FILE`).
+    pub stated: Option<&'a Path>,
+}
+
+/// Read a `stated.toml` (`compare::score::stated`).
+fn read_stated(path: &Path) -> Result<Vec<Stated>, String> {
+    let shown = path.display().to_string();
+    if !path.is_file() {
+        return Err(format!("--stated {shown}: not a regular file"));
+    }
+    let text = std::fs::read_to_string(path).map_err(|e| format!("--stated {shown}: {e}"))?;
+    parse(&shown, &text)
+}
+
 /// Score `results` (one or more directories) against `scene`. Exit status 0 when every check
 /// holds (with `require_all`, every case and time supplied), 1 when one fails, 2 on bad input
 /// (nothing is written then).
 pub fn score(
     scene: &str,
     results: &[PathBuf],
-    require_all: bool,
+    options: &Options,
     out: Option<&Path>,
     junit: Option<&Path>,
 ) -> ExitCode {
@@ -35,10 +55,20 @@ pub fn score(
         return ExitCode::from(2);
     }
     // Everything is read, checked and compared before anything is written.
+    let stated = match options.stated.map(read_stated).transpose() {
+        Ok(stated) => stated,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
     let outcome = match score_dirs(&scene, results) {
         Ok(mut outcome) => {
             for set in &mut outcome.sets {
-                set.require_all = require_all;
+                set.require_all = options.require_all;
+                if let Some(stated) = &stated {
+                    apply(set, stated.clone());
+                }
             }
             outcome
         }

@@ -3,6 +3,7 @@
 //! committed in this repository, scored for the report.
 
 use crate::compare::score::bind::bind;
+use crate::compare::score::stated::{apply, parse};
 use crate::compare::score::outcome::{ScoreError, ScoreOutcome, ScoredSet};
 use crate::compare::score::set::{score, score_set};
 use crate::results::exchange::committed::{COMMITTED, CommittedSet};
@@ -58,7 +59,7 @@ pub fn score_dirs(scene: &Scene, dirs: &[PathBuf]) -> Result<ScoreOutcome, Score
 }
 
 /// Every committed result set whose scene is among `scenes`, scored: `(set, scene index, scored
-/// set)` in the order of [`COMMITTED`].
+/// set)` in the order of [`COMMITTED`], with the findings stated for each (`stated.toml`).
 ///
 /// # Errors
 /// A committed set that does not read or score (a bug caught by the tests): `<dir>: <why>`.
@@ -73,7 +74,14 @@ pub fn score_committed(
                 .read()
                 .map_err(ScoreError::from)
                 .and_then(|read| score_set(&scenes[index], &read))
-                .map_err(|e| format!("{}: {e}", set.dir));
+                .map_err(|e| format!("{}: {e}", set.dir))
+                .and_then(|mut scored| {
+                    if let Some(text) = set.stated {
+                        let file = format!("{}/stated.toml", set.dir);
+                        apply(&mut scored, parse(&file, text)?);
+                    }
+                    Ok(scored)
+                });
             Some(scored.map(|s| (set, index, s)))
         })
         .collect()

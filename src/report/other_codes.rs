@@ -22,16 +22,25 @@ pub fn checks_anchor(stem: &str) -> String {
 }
 
 /// The verdicts of a set: the scene's expectations on its files and each case's decided
-/// diagnostics (an undecided diagnostic is no verdict).
+/// diagnostics (an undecided diagnostic is no verdict); a failure stated for the set is a
+/// finding of that code, a stated finding that does not hold a failure.
 pub fn tally(scored: &ScoredSet) -> Tally {
     let mut t = Tally::of_verdicts(&scored.verdicts);
-    t.add(Tally::of_decisions(scored.cases.iter().flat_map(|case| {
-        case.diagnostics
-            .verdicts()
-            .into_iter()
-            .map(|row| row.verdict)
-    })));
+    for (_, row, stated) in scored.diagnostic_rows() {
+        match (row.verdict, stated) {
+            (Some(false), true) => t.findings += 1,
+            (Some(false), false) => t.failed += 1,
+            (Some(true), _) => t.passed += 1,
+            (None, _) => {}
+        }
+    }
+    t.failed += scored.stated.iter().filter(|s| !s.holds).count();
     t
+}
+
+/// The file stem of a set's tables and figures: its label and scene, as a file name.
+pub fn stem(set: &CommittedSet) -> String {
+    format!("{}_{}", set.label.replace(' ', "_"), set.scene)
 }
 
 /// Every check of a set, one row each: `case, check, measured, bound, verdict, source` (a
@@ -48,25 +57,34 @@ fn checks_table(scored: &ScoredSet) -> Table {
             v.source.as_str().into(),
         ]);
     }
-    for case in &scored.cases {
-        for row in case.diagnostics.verdicts() {
-            if row.note.starts_with("not applicable") {
-                continue;
-            }
-            t.push(vec![
-                case.case.as_str().into(),
-                row.name.into(),
-                row.measured.into(),
-                row.expected.into(),
-                match row.verdict {
-                    Some(true) => "pass",
-                    Some(false) => "FAIL",
-                    None => "n/a",
-                }
-                .into(),
-                row.note.into(),
-            ]);
+    for (case, row, stated) in scored.diagnostic_rows() {
+        if row.note.starts_with("not applicable") {
+            continue;
         }
+        t.push(vec![
+            case.into(),
+            row.name.into(),
+            row.measured.into(),
+            row.expected.into(),
+            match (row.verdict, stated) {
+                (Some(false), true) => "finding",
+                (Some(true), _) => "pass",
+                (Some(false), false) => "FAIL",
+                (None, _) => "n/a",
+            }
+            .into(),
+            row.note.into(),
+        ]);
+    }
+    for s in scored.stated.iter().filter(|s| !s.holds) {
+        t.push(vec![
+            s.stated.case.as_str().into(),
+            s.stated.check.as_str().into(),
+            "passes".into(),
+            "stated to fail".into(),
+            "FAIL".into(),
+            format!("stated finding no longer holds: {}", s.stated.finding).into(),
+        ]);
     }
     t
 }
@@ -85,28 +103,32 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
          the wrong impulse; the shift itself is in the checks below). Error bounds apply to every code; \
          a scene's signature rows (what its case's scheme and mass do) only where the set's \
          `results.toml` declares that scheme, its parameters and the mass, and are not applicable \
-         otherwise; expectations on energies are not measurable (the format carries none). SfePy's driver, its pinned requirements and the command that regenerates its \
-         results are in `external/sfepy/`."
+         otherwise; expectations on energies are not measurable (the format carries none). A set may \
+         state what courant finds in that code (`stated.toml`: OpenSees' integrators as they come): a \
+         stated failure counts as a finding of that code, and a verdict that differs from what is \
+         stated fails. Each code's driver, its pinned requirements and the command that regenerates its \
+         results are in `external/<code>/` (SfePy, OpenSees)."
             .into(),
     ));
     for (set, index, scored) in others {
         let (scene, (outcome, _)) = (&scenes[*index], &outcomes[*index]);
-        let stem = format!("{}_{}", set.code, scene.name);
+        let stem = stem(set);
         page.push(Block::Heading(
             3,
-            format!("{} {} on {}", scored.code, scored.version, scene.name),
+            format!("{} {} on {}", set.label, scored.version, scene.name),
         ));
         let checks = checks_table(scored);
         let tally = tally(scored);
         let count = |kind| scored.skipped.iter().filter(|s| s.kind == kind).count();
         page.push(Block::Paragraph(format!(
             "`{}`: {} case file(s) of scene {}; {} verdict(s) (the scene's expectations and each case's \
-             diagnostics), {} failed; {} expectation(s) not applicable, {} not supplied, {} not measurable \
-             from files.",
+             diagnostics), {} finding(s) of this code stated in `stated.toml`, {} failed; {} expectation(s) \
+             not applicable, {} not supplied, {} not measurable from files.",
             set.dir,
             scored.cases.len(),
             scene.name,
             tally.total(),
+            tally.findings,
             tally.failed,
             count(SkipKind::NotApplicable),
             count(SkipKind::NotSupplied),

@@ -6,7 +6,7 @@
 //! convergence study's order table (rows with a band; `measured` rows are not verdicts).
 
 use super::document::{Block, Inline, Page, anchor};
-use super::other_codes::{OtherCode, checks_anchor, tally as other_tally};
+use super::other_codes::{OtherCode, checks_anchor, stem, tally as other_tally};
 use super::tally::Tally;
 use crate::compare::convergence::ConvergenceResult;
 use crate::compare::outcome::SceneOutcome;
@@ -50,23 +50,27 @@ pub fn failures(
         }))
         .chain(others.iter().flat_map(|(set, index, scored)| {
             let scene = &scenes[*index].name;
-            let code = &set.code;
+            let label = set.label;
             scored
                 .verdicts
                 .iter()
                 .filter(|v| !v.pass)
-                .map(move |v| format!("other code {code} on {scene}: {}", v.describe()))
-                .chain(scored.cases.iter().flat_map(move |case| {
-                    case.diagnostics
-                        .verdicts()
-                        .into_iter()
-                        .filter(|row| row.verdict == Some(false))
-                        .map(move |row| {
+                .map(move |v| format!("other code {label} on {scene}: {}", v.describe()))
+                .chain(scored.diagnostic_rows().into_iter().filter_map(
+                    move |(case, row, stated)| {
+                        (row.verdict == Some(false) && !stated).then(|| {
                             format!(
-                                "other code {code} on {scene}: {}/{} = {} ({})",
-                                case.case, row.name, row.measured, row.note
+                                "other code {label} on {scene}: {case}/{} = {} ({})",
+                                row.name, row.measured, row.note
                             )
                         })
+                    },
+                ))
+                .chain(scored.stated.iter().filter(|s| !s.holds).map(move |s| {
+                    format!(
+                        "other code {label} on {scene}: {}/{} passes, but is stated as a finding ({})",
+                        s.stated.case, s.stated.check, s.stated.finding
+                    )
                 }))
         }))
         .collect()
@@ -133,12 +137,9 @@ pub fn head(
         total.add(tally);
         let scene = &scenes[*index].name;
         rows.push(row(
-            Inline::text(format!("other code: {} on {scene}", set.code)),
+            Inline::text(format!("other code: {} on {scene}", set.label)),
             tally,
-            Inline::link(
-                "checks",
-                format!("#{}", checks_anchor(&format!("{}_{scene}", set.code))),
-            ),
+            Inline::link("checks", format!("#{}", checks_anchor(&stem(set)))),
         ));
     }
     let stability = if scenes.iter().any(|s| s.stability) || !convergence.is_empty() {
@@ -157,14 +158,29 @@ pub fn head(
                 .map(move |v| format!("{}/{} ({})", s.name, v.case, v.measured))
         })
         .collect();
+    let other_findings: Vec<String> = others
+        .iter()
+        .flat_map(|(set, index, scored)| {
+            let scene = &scenes[*index].name;
+            scored.stated.iter().filter(|s| s.holds).map(move |s| {
+                format!(
+                    "{} on {scene}/{} {}: {}",
+                    set.label, s.stated.case, s.stated.check, s.stated.finding
+                )
+            })
+        })
+        .collect();
     page.push(Block::Paragraph(format!(
-        "{} verdicts: {} pass, {} findings (runs that disagree with stability theory as their scene \
-         states, with its source), {} FAIL. Verdicts are the scenes' expectations, the stability verdict \
-         of every case of a stability scene, the convergence-order bands and the checks of other codes' \
-         committed results.",
+        "{} verdicts: {} pass, {} findings ({} runs of courant's that disagree with stability theory \
+         as their scene states, with its source; {} findings of other codes, stated beside their \
+         results), {} FAIL. Verdicts are the scenes' expectations, the stability verdict of every case \
+         of a stability scene, the convergence-order bands and the checks of other codes' committed \
+         results.",
         total.total(),
         total.passed,
         total.findings,
+        findings.len(),
+        other_findings.len(),
         total.failed
     )));
     if !failed.is_empty() {
@@ -176,6 +192,12 @@ pub fn head(
             "Findings: {}.",
             findings.join("; ")
         )));
+    }
+    if !other_findings.is_empty() {
+        page.push(Block::Paragraph(
+            "Findings of other codes (courant grades them as they come; each holds, as stated):".into(),
+        ));
+        page.push(Block::List(other_findings));
     }
     page.push(Block::Summary {
         columns: [

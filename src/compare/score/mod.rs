@@ -33,5 +33,6 @@ pub mod profiles;
 pub mod set;
 pub mod shift_fit;
 pub mod spectrum;
+pub mod stated;
 pub mod tables;
 pub mod time_level;

@@ -3,7 +3,8 @@
 //! that cannot be measured from files), and convergence studies across sets.
 
 use super::applies::Applies;
-use super::diagnostics::Diagnostics;
+use super::diagnostics::{DiagnosticRow, Diagnostics};
+use super::stated::StatedOutcome;
 use crate::compare::contact::ForceErrors;
 use crate::compare::convergence::ConvergenceResult;
 use crate::compare::norms::ErrorNorms;
@@ -204,6 +205,8 @@ pub struct ScoredSet {
     pub missing_cases: Vec<String>,
     /// Whether what is not supplied fails the set (`courant score --require-all`).
     pub require_all: bool,
+    /// Findings stated for the set (`super::stated`), each with whether it holds.
+    pub stated: Vec<StatedOutcome>,
 }
 
 impl ScoredSet {
@@ -215,17 +218,38 @@ impl ScoredSet {
             .count()
     }
 
-    /// True when every expectation holds and no diagnostic fails (and, with `require_all`,
-    /// every case and time is supplied).
+    /// True when diagnostic `name` of `case` is a stated finding that holds.
+    pub fn diagnostic_is_stated(&self, case: &str, name: &str) -> bool {
+        self.stated
+            .iter()
+            .any(|s| s.holds && s.stated.case == case && s.stated.check == name)
+    }
+
+    /// Every diagnostic row of every case: `(case, row, stated)`, `stated` true for a failing
+    /// row that is a stated finding (counted as a finding, not a failure).
+    pub fn diagnostic_rows(&self) -> Vec<(&str, DiagnosticRow, bool)> {
+        self.cases
+            .iter()
+            .flat_map(|c| {
+                c.diagnostics.verdicts().into_iter().map(move |row| {
+                    let stated =
+                        row.verdict == Some(false) && self.diagnostic_is_stated(&c.case, row.name);
+                    (c.case.as_str(), row, stated)
+                })
+            })
+            .collect()
+    }
+
+    /// True when every expectation holds, no diagnostic fails but as stated, every stated
+    /// finding holds (and, with `require_all`, every case and time is supplied).
     pub fn passed(&self) -> bool {
         (!self.require_all || (self.not_supplied() == 0 && self.missing_cases.is_empty()))
             && self.verdicts.iter().all(|v| v.pass)
-            && self.cases.iter().all(|c| {
-                c.diagnostics
-                    .verdicts()
-                    .iter()
-                    .all(|v| v.verdict != Some(false))
-            })
+            && self
+                .diagnostic_rows()
+                .iter()
+                .all(|(_, row, stated)| row.verdict != Some(false) || *stated)
+            && self.stated.iter().all(|s| s.holds)
     }
 }
 

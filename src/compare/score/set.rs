@@ -55,6 +55,7 @@ pub fn score_set(scene: &Scene, set: &ExchangeSet) -> Result<ScoredSet, ScoreErr
     Ok(ScoredSet {
         missing_cases,
         require_all: false,
+        stated: Vec::new(),
         label: set.label.clone(),
         code: set.code(),
         version: meta
