@@ -158,16 +158,41 @@ pub fn head(
                 .map(move |v| format!("{}/{} ({})", s.name, v.case, v.measured))
         })
         .collect();
-    let other_findings: Vec<String> = others
-        .iter()
-        .flat_map(|(set, index, scored)| {
-            let scene = &scenes[*index].name;
-            scored.stated.iter().filter(|s| s.holds).map(move |s| {
-                format!(
-                    "{} on {scene}/{} {}: {}",
-                    set.label, s.stated.case, s.stated.check, s.stated.finding
-                )
-            })
+    // Findings of other codes, one line per code and variant: how many, on which scenes, of
+    // which checks (each finding's words are in its set's section).
+    let mut other_findings: Vec<(&str, Vec<&str>, Vec<(String, usize)>)> = Vec::new();
+    let mut other_count = 0;
+    for (set, index, scored) in others {
+        for s in scored.stated.iter().filter(|s| s.holds) {
+            other_count += 1;
+            let at = match other_findings.iter().position(|f| f.0 == set.label) {
+                Some(i) => i,
+                None => {
+                    other_findings.push((set.label, Vec::new(), Vec::new()));
+                    other_findings.len() - 1
+                }
+            };
+            let entry = &mut other_findings[at];
+            let scene = scenes[*index].name.as_str();
+            if !entry.1.contains(&scene) {
+                entry.1.push(scene);
+            }
+            match entry.2.iter_mut().find(|c| c.0 == s.stated.check) {
+                Some(c) => c.1 += 1,
+                None => entry.2.push((s.stated.check.clone(), 1)),
+            }
+        }
+    }
+    let other_findings: Vec<String> = other_findings
+        .into_iter()
+        .map(|(label, scenes, checks)| {
+            let n: usize = checks.iter().map(|c| c.1).sum();
+            let checks: Vec<String> = checks.iter().map(|(c, k)| format!("{c} x{k}")).collect();
+            format!(
+                "{label}: {n} on {} ({})",
+                scenes.join(", "),
+                checks.join(", ")
+            )
         })
         .collect();
     page.push(Block::Paragraph(format!(
@@ -180,7 +205,7 @@ pub fn head(
         total.passed,
         total.findings,
         findings.len(),
-        other_findings.len(),
+        other_count,
         total.failed
     )));
     if !failed.is_empty() {
@@ -194,10 +219,10 @@ pub fn head(
         )));
     }
     if !other_findings.is_empty() {
-        page.push(Block::Paragraph(
-            "Findings of other codes (courant grades them as they come; each holds, as stated):".into(),
-        ));
-        page.push(Block::List(other_findings));
+        page.push(Block::Paragraph(format!(
+            "Findings of other codes, each as its set states it (section Other codes): {}.",
+            other_findings.join("; ")
+        )));
     }
     page.push(Block::Summary {
         columns: [
