@@ -15,7 +15,7 @@
 //! for N <= 1e5 on the 2-core machines. `run.sh` there prints the C loop's own numbers (two-pass,
 //! fused and blocked variants); compare with those, measured on the same machine.
 //! ISA: the kernel selects an AVX2-compiled copy of the step at run time where the CPU has AVX2
-//! (bit-identical results; see kernel.rs), so a default `cargo bench` is comparable with the C
+//! (bit-identical results; see `kernels::lumped::kernel`), so a default `cargo bench` is comparable with the C
 //! loop at `-march=native`. `step_with_energy` adds three energy sums, kept in 8 independent
 //! lanes so they vectorise.
 //!
@@ -35,7 +35,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use courant_solver::kernel::LumpedCentralDifference;
+use courant_solver::kernels::lumped::kernel::LumpedCentralDifference;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 /// Element counts.
@@ -106,10 +106,10 @@ fn lumped_cd_step(c: &mut Criterion) {
 /// Temporal blocking: blocks of 1024 lumped steps (`advance_block`: tiles of 1024 nodes,
 /// sub-blocks of 64 steps) on one and on two threads, bare and with the energy sums, per
 /// node-step (throughput `1024 N`). Bit-identical to single steps whatever the thread count
-/// (unit tests of `kernel_pipeline`); issue 17 target 4: 0.54 ns at N = 1e6 on one core, 1.7x
+/// (unit tests of `kernels::lumped::pipeline`); issue 17 target 4: 0.54 ns at N = 1e6 on one core, 1.7x
 /// on two.
 fn lumped_cd_block(c: &mut Criterion) {
-    use courant_solver::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock};
+    use courant_solver::kernels::lumped::tiled::{MAX_BLOCK_STEPS, StepBlock};
     let steps = MAX_BLOCK_STEPS;
     let mut group = c.benchmark_group("lumped_cd_block");
     group
@@ -167,7 +167,7 @@ fn mass_kind_step(c: &mut Criterion) {
         });
         assert_finite(&lumped);
         // CMM also on the bar with its density graded too (4 to 1): every window's rows differ,
-        // so each keeps its own factors (`halo_tiles`), streamed every step.
+        // so each keeps its own factors (`mass::windows`), streamed every step.
         let graded_density = courant_solver::Model::unloaded(
             courant_solver::Bar::new(
                 courant_solver::Mesh::uniform(1.0, n).unwrap(),
@@ -227,7 +227,8 @@ fn spectrum_dense(c: &mut Criterion) {
         let name = kind.label().replace(['(', ')'], "");
         group.bench_function(BenchmarkId::new(name, 200), |b| {
             b.iter(|| {
-                courant_solver::spectrum::angular_frequencies(black_box(&model), kind).unwrap()
+                courant_solver::analysis::spectrum::angular_frequencies(black_box(&model), kind)
+                    .unwrap()
             })
         });
     }

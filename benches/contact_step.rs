@@ -27,7 +27,7 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use courant_solver::contact::{ContactProblem, ContactScheme, ContactStepper, MassPenalty};
-use courant_solver::kernel::LumpedCentralDifference;
+use courant_solver::kernels::lumped::kernel::LumpedCentralDifference;
 use courant_solver::{Bar, InitialConditions, Mesh, Model, Supports};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 

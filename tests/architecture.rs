@@ -13,7 +13,9 @@
 //!    a `mod.rs` that re-exports its children and is used by them is a cycle too);
 //! 2. the top-level stages of the `courant` crate depend on each other only as ALLOWED says;
 //! 3. `courant-references` does not depend on `courant-solver` (references are independent);
-//! 4. no source file is longer than [`MAX_LINES`] lines.
+//! 4. no source file is longer than [`MAX_LINES`] lines;
+//! 5. the top-level modules (folders) of `courant-solver` use only those below them in
+//!    [`SOLVER_LAYERS`], so no import cycle runs between them either.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -37,6 +39,22 @@ const ALLOWED: &[(&str, &[&str])] = &[
             "report", "check", "pipeline", "compare", "run", "scene", "results", "io",
         ],
     ),
+];
+
+/// The top-level modules of `courant-solver`, lowest first: each may use only itself and the
+/// modules before it (ARCHITECTURE.md, "Code map of the other crates").
+const SOLVER_LAYERS: &[&str] = &[
+    "simd",
+    "output",
+    "error",
+    "model",
+    "mass",
+    "analysis",
+    "kernels",
+    "integrator",
+    "schemes",
+    "contact",
+    "fixtures",
 ];
 
 /// The workspace root.
@@ -449,6 +467,41 @@ fn top_level_stages_depend_only_downstream() {
                     "{} -> {}: stage `{stage}` may use only {may:?}",
                     show(from),
                     show(to)
+                )),
+                _ => {}
+            }
+        }
+    }
+    assert!(offences.is_empty(), "{}", offences.join("\n"));
+}
+
+#[test]
+fn solver_folders_depend_only_on_lower_layers() {
+    let g = graph(&root().join("solver/src"));
+    let layer = |name: &str| SOLVER_LAYERS.iter().position(|l| *l == name);
+    let mut offences = Vec::new();
+    for (from, targets) in &g {
+        let Some(top) = from.first() else {
+            continue; // lib.rs only declares the folders and re-exports
+        };
+        let Some(here) = layer(top) else {
+            offences.push(format!(
+                "{}: top-level module `{top}` is not in SOLVER_LAYERS (and ARCHITECTURE.md)",
+                show(from)
+            ));
+            continue;
+        };
+        for to in targets {
+            match to.first() {
+                None => offences.push(format!(
+                    "{} uses the crate root: name the folder's module instead",
+                    show(from)
+                )),
+                Some(t) if layer(t).is_none_or(|there| there > here) => offences.push(format!(
+                    "{} -> {}: `{top}` may use only the layers below it: {:?}",
+                    show(from),
+                    show(to),
+                    &SOLVER_LAYERS[..here]
                 )),
                 _ => {}
             }

@@ -17,8 +17,8 @@
 //! conservative where theory says so, and Fried's fails for RMM (beta = 3) on a uniform mesh.
 
 use courant_references::spectra::{self as closed, BarEnds, UniformBar};
+use courant_solver::analysis::spectrum::angular_frequencies;
 use courant_solver::fixtures::seed_bar;
-use courant_solver::spectrum::angular_frequencies;
 use courant_solver::{
     Bar, CentralDifference, CriticalStep, Field, MassKind, MassOperator, Mesh, Model,
     OutputRequest, RunError, StabilityPolicy, Support, Supports, TimeFunction,

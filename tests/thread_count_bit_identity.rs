@@ -14,7 +14,7 @@
 //! values pass from one thread to the next during a sub-block; profiles between blocks) writes
 //! the same profiles, histories, energies
 //! and errors on one, two and three threads. The kernel-level proof (states, energies and
-//! probes against single steps, loads on region edges) is `kernel_pipeline`'s unit test.
+//! probes against single steps, loads on region edges) is `kernels::lumped::pipeline`'s unit test.
 
 #[path = "common/cli.rs"]
 mod cli;

@@ -11,7 +11,7 @@
 //! ```
 
 use courant_solver::fixtures::smooth_half_velocity;
-use courant_solver::kernel::LumpedCentralDifference;
+use courant_solver::kernels::lumped::kernel::LumpedCentralDifference;
 use std::time::Instant;
 
 mod harness;

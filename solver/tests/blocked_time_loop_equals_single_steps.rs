@@ -1,5 +1,5 @@
 //! Source of truth: the central-difference step itself (seed eqs. 2-4, methods.md §2): a block of
-//! steps (temporal blocking, `kernel_tiled` / `kernel_pipeline`) must be the same arithmetic as
+//! steps (temporal blocking, `kernels::lumped::tiled` / `kernels::lumped::pipeline`) must be the same arithmetic as
 //! the steps one at a time, so the shared time loop must give the same run either way.
 //!
 //! ```text
@@ -194,14 +194,15 @@ fn a_guard_trip_inside_a_block_names_the_node_of_its_own_step() {
 
 #[test]
 fn a_scene_plans_with_the_kernels_thread_count() {
-    courant_solver::kernel::set_default_threads(Some(2));
+    courant_solver::kernels::lumped::kernel::set_default_threads(Some(2));
     for elements in [99_998usize, 99_999] {
         let model = courant_solver::fixtures::graded_seed_bar(elements).unwrap();
         let dt = 0.5 * model.bar().stiffest_element().1;
         let integration = CentralDifference::new(dt).integration();
         let zeros = vec![0.0; elements + 1];
-        let kernel =
-            courant_solver::kernel::LumpedCentralDifference::new(&model, dt, &zeros, &zeros);
+        let kernel = courant_solver::kernels::lumped::kernel::LumpedCentralDifference::new(
+            &model, dt, &zeros, &zeros,
+        );
         let expected = if elements + 1 >= 100_000 { 2 } else { 1 };
         assert_eq!(
             (integration.threads(&model), kernel.threads()),
@@ -210,5 +211,5 @@ fn a_scene_plans_with_the_kernels_thread_count() {
             elements + 1
         );
     }
-    courant_solver::kernel::set_default_threads(None);
+    courant_solver::kernels::lumped::kernel::set_default_threads(None);
 }

@@ -21,7 +21,7 @@ use courant_solver::integrator::{
     InitialState, Integrator, LimitKind, MEASURED_PRECISION, RunSetup, SchemeLimit,
     measure_critical_step, time_loop,
 };
-use courant_solver::kernel::StepEnergy;
+use courant_solver::kernels::energy::StepEnergy;
 use courant_solver::{
     CentralDifference, CriticalStep, InputError, Integration, MassKind, MassOperator, Model,
     OutputRequest, RunError, RunOutput, Scheme, Start,

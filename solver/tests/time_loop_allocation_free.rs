@@ -20,9 +20,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use courant_solver::fixtures::graded_seed_bar;
 use courant_solver::integrator::{InitialState, Integrator};
-use courant_solver::kernel::LumpedCentralDifference;
-use courant_solver::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock, TILE};
-use courant_solver::matrix_kernel::{MatrixCentralDifference, StartState};
+use courant_solver::kernels::lumped::kernel::LumpedCentralDifference;
+use courant_solver::kernels::lumped::tiled::{MAX_BLOCK_STEPS, StepBlock, TILE};
+use courant_solver::kernels::matrix_mass::kernel::{MatrixCentralDifference, StartState};
 use courant_solver::schemes::noh_bathe::NohBatheStepper;
 use courant_solver::{MassKind, MassOperator, ParkOptions, ParkScheme, ParkVariant, Start};
 

@@ -5,7 +5,7 @@
 //! [`ContactProblem`], a [`ContactScheme`] (with its [`Penalty`]) and a time step. **Leaves:** a
 //! [`ContactRun`] (samples, stress profiles, momenta) or a [`ContactError`], and the critical
 //! steps ([`ContactCriticalStep`]). It builds on the bulk's lumped kernel and banded inertia
-//! ([`crate::kernel`], [`crate::banded`]); it must not know scenes, files or the analytic
+//! ([`crate::kernels::lumped::kernel`], [`crate::mass::banded`]); it must not know scenes, files or the analytic
 //! references (no I/O; `courant_references::contact` is compared with it elsewhere), and the
 //! contact-free integrators do not know it.
 //!
@@ -50,7 +50,7 @@
 //! # The level update (all schemes)
 //!
 //! The bulk is the project's lumped central difference in half-step form
-//! ([`crate::kernel::LumpedCentralDifference`], methods.md §2): from `u^n`, `v^{n-1/2}`,
+//! ([`crate::kernels::lumped::kernel::LumpedCentralDifference`], methods.md §2): from `u^n`, `v^{n-1/2}`,
 //!
 //! ```text
 //!   u^n = u^{n-1} + dt v^{n-1/2},   a^n = M^-1 (F^n - K u^n + N J^n/dt),   v^{n+1/2} = v^{n-1/2} + dt a^n,
@@ -131,7 +131,7 @@
 //!
 //! The exact critical step of the contact-active system is `2/omega_max` of the pencil
 //! `(K + K_p, M + M_p)`, found by bisection on Sturm counts (Sylvester's inertia of
-//! `K + K_p - x (M + M_p)`; Wilkinson (1965) §5.37), as in [`crate::stability`]; a run passes
+//! `K + K_p - x (M + M_p)`; Wilkinson (1965) §5.37), as in [`crate::analysis::stability`]; a run passes
 //! through contact-free and contact-active states and must respect both. Closed forms to
 //! compare with: `courant_references::contact` (methods.md §7).
 //!

@@ -33,7 +33,7 @@ impl ContactIntegrator {
     }
 
     /// The critical steps, and an error if `dt` exceeds the applicable one (with the time plan's
-    /// relative allowance [`crate::time_step::ROUNDING_SLACK`]) and unstable runs are not
+    /// relative allowance [`crate::analysis::time_step::ROUNDING_SLACK`]) and unstable runs are not
     /// allowed.
     ///
     /// # Errors
@@ -42,10 +42,10 @@ impl ContactIntegrator {
         &self,
         problem: &ContactProblem,
     ) -> Result<ContactCriticalStep, ContactError> {
-        crate::mesh::positive("dt", self.dt)?;
+        crate::model::mesh::positive("dt", self.dt)?;
         self.scheme.validate()?;
         let critical = ContactCriticalStep::of(problem, &self.scheme).map_err(InputError::from)?;
-        if self.dt > critical.applicable * (1.0 + crate::time_step::ROUNDING_SLACK)
+        if self.dt > critical.applicable * (1.0 + crate::analysis::time_step::ROUNDING_SLACK)
             && !self.stability.allow_unstable
         {
             return Err(ContactUnstableError {

@@ -8,7 +8,7 @@ use super::problem::ContactProblem;
 use super::scheme::{ContactScheme, LevelInput, LevelUpdate, level_update};
 use crate::error::InputError;
 use crate::integrator::Integrator;
-use crate::kernel::LumpedCentralDifference;
+use crate::kernels::lumped::kernel::LumpedCentralDifference;
 use crate::model::Model;
 use crate::schemes::central_difference::LumpedStepper;
 
@@ -93,7 +93,7 @@ impl<'a> ContactStepper<'a> {
         dt: f64,
         scheme: ContactScheme,
     ) -> Result<Self, InputError> {
-        crate::mesh::positive("dt", dt)?;
+        crate::model::mesh::positive("dt", dt)?;
         scheme.validate()?;
         let nodes = problem.contact_nodes();
         let mut bodies = Vec::new();

@@ -1,10 +1,10 @@
-//! What the time loop needs to take blocks of steps (temporal blocking, [`crate::kernel_tiled`]):
+//! What the time loop needs to take blocks of steps (temporal blocking, [`crate::kernels::lumped::tiled`]):
 //! where the next block ends, and the buffers of a block with the probes that give the loop each
 //! step's loads' displacements and history samples.
 
 use super::contract::Integrator;
 use super::settings::OutputRequest;
-use crate::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock};
+use crate::kernels::lumped::tiled::{MAX_BLOCK_STEPS, StepBlock};
 use crate::model::Model;
 use crate::output::{HistorySample, RunOutput};
 

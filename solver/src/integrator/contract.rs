@@ -3,8 +3,8 @@
 
 use super::settings::Start;
 use crate::error::InputError;
-use crate::kernel::StepEnergy;
-use crate::kernel_tiled::StepBlock;
+use crate::kernels::energy::StepEnergy;
+use crate::kernels::lumped::tiled::StepBlock;
 use crate::mass::MassOperator;
 use crate::model::Model;
 
@@ -94,7 +94,7 @@ pub trait Integrator: Sized {
     }
 
     /// Whether the stepper takes blocks of steps in one pass over the bar (temporal blocking,
-    /// [`crate::kernel_tiled`]): then the loop may call [`Integrator::step_block`] and
+    /// [`crate::kernels::lumped::tiled`]): then the loop may call [`Integrator::step_block`] and
     /// [`Integrator::probed_velocity_and_acceleration`] instead of single steps.
     fn steps_in_blocks(&self) -> bool {
         false

@@ -5,11 +5,11 @@
 use super::limit::SchemeLimit;
 use super::record::validate_request;
 use super::settings::{OutputRequest, StabilityPolicy, Start};
+use crate::analysis::stability::CriticalStep;
 use crate::error::{InputError, RunError, UnstableStepError};
 use crate::mass::{MassKind, MassOperator};
 use crate::model::Model;
 use crate::output::RunOutput;
-use crate::stability::CriticalStep;
 use std::sync::Arc;
 
 /// What the time loop is given besides the scheme's parameters.
@@ -62,7 +62,7 @@ pub trait Scheme: std::fmt::Debug + Send + Sync {
 
     /// Threads one run of this scheme with `mass` on `model` uses (1 unless its stepper runs
     /// blocks of steps on several threads: lumped central difference from
-    /// [`crate::kernel::PARALLEL_FROM_NODES`] on). A caller running several cases at once runs
+    /// [`crate::kernels::lumped::kernel::PARALLEL_FROM_NODES`] on). A caller running several cases at once runs
     /// the multi-threaded ones one at a time.
     fn threads(&self, model: &Model, mass: MassKind, allow_unstable: bool) -> usize {
         let _ = (model, mass, allow_unstable);
@@ -105,7 +105,7 @@ impl Integration {
     }
 
     /// The critical steps of the mass, after refusing `dt` above the scheme's limit
-    /// ([`Scheme::limit`]) with the relative allowance [`crate::time_step::ROUNDING_SLACK`] of
+    /// ([`Scheme::limit`]) with the relative allowance [`crate::analysis::time_step::ROUNDING_SLACK`] of
     /// the time plan (so that Co = 1 on a free-free uniform bar, where `dt = dt_crit`, is
     /// accepted after the plan's rounding), unless unstable runs are allowed.
     ///
@@ -163,7 +163,7 @@ impl Integration {
             return Ok(critical);
         }
         let limit = self.limit(model, &critical);
-        if self.dt > limit.dt() * (1.0 + crate::time_step::ROUNDING_SLACK) {
+        if self.dt > limit.dt() * (1.0 + crate::analysis::time_step::ROUNDING_SLACK) {
             return Err(UnstableStepError {
                 dt: self.dt,
                 dt_crit: limit.dt(),
@@ -189,7 +189,7 @@ impl Integration {
         steps: usize,
         request: &OutputRequest,
     ) -> Result<RunOutput, RunError> {
-        crate::mesh::positive("dt", self.dt)?;
+        crate::model::mesh::positive("dt", self.dt)?;
         validate_request(model, steps, request)?;
         self.scheme.check_settings(self.mass, self.start)?;
         let operator = MassOperator::new(model, self.mass)?;
@@ -210,7 +210,7 @@ impl Integration {
         request: &OutputRequest,
         critical: CriticalStep,
     ) -> Result<RunOutput, RunError> {
-        crate::mesh::positive("dt", self.dt)?;
+        crate::model::mesh::positive("dt", self.dt)?;
         validate_request(model, steps, request)?;
         self.check_stability_given(model, critical)?;
         let operator = MassOperator::new(model, self.mass)?;

@@ -18,7 +18,7 @@
 //! dissipative scheme its drift is the energy the scheme removed.
 //!
 //! **Blocks of steps.** A stepper with temporal blocking ([`Integrator::steps_in_blocks`]:
-//! lumped central difference, [`crate::kernel_tiled`]) takes up to [`crate::kernel_tiled::MAX_BLOCK_STEPS`] steps per
+//! lumped central difference, [`crate::kernels::lumped::tiled`]) takes up to [`crate::kernels::lumped::tiled::MAX_BLOCK_STEPS`] steps per
 //! call when the run must stay stable (`allow_unstable` off); a block ends at the last step and
 //! at every profile step. The stepper returns every step's energies and the displacements of the
 //! loaded nodes and of each history node and its neighbours (with its half-step velocity), so
@@ -38,7 +38,7 @@ use super::record::{record, record_profile};
 use super::scheme::RunSetup;
 use super::settings::OutputRequest;
 use crate::error::{DivergenceError, RunError};
-use crate::kernel::StepEnergy;
+use crate::kernels::energy::StepEnergy;
 use crate::mass::MassOperator;
 use crate::model::Model;
 use crate::output::{EnergyLog, EnergySample, NodeHistory, RunOutput};

@@ -1,5 +1,5 @@
 //! Central difference through the integrator interface: the `cd` registry entry, its steppers
-//! (the fused lumped kernel, [`crate::kernel`]; the matrix-mass kernel, [`crate::matrix_kernel`]).
+//! (the fused lumped kernel, [`crate::kernels::lumped::kernel`]; the matrix-mass kernel, [`crate::kernels::matrix_mass::kernel`]).
 //!
 //! Half-step form of the seed's predictor-corrector eqs. 2-4 (methods.md §2): from `u^n`,
 //! `v^{n+1/2}`, `u^{n+1} = u^n + dt v^{n+1/2}`, `a^{n+1} = M^-1 (F^{n+1} - K u^{n+1})`,
@@ -8,17 +8,18 @@
 //! conserved exactly (module docs of [`crate::integrator::time_loop`]). Limit `2/omega_max`.
 //! One internal-force evaluation per step.
 
+use crate::analysis::stability::CriticalStep;
 use crate::error::{InputError, RunError};
 use crate::integrator::{
     InitialState, Integrator, RunSetup, Scheme, SchemeEntry, SchemeLimit, Start, time_loop,
 };
-use crate::kernel::{LumpedCentralDifference, StepEnergy};
-use crate::kernel_tiled::StepBlock;
+use crate::kernels::energy::StepEnergy;
+use crate::kernels::lumped::kernel::LumpedCentralDifference;
+use crate::kernels::lumped::tiled::StepBlock;
+use crate::kernels::matrix_mass::kernel::{MatrixCentralDifference, StartState};
 use crate::mass::{MassKind, MassOperator};
-use crate::matrix_kernel::{MatrixCentralDifference, StartState};
 use crate::model::Model;
 use crate::output::RunOutput;
-use crate::stability::CriticalStep;
 use std::sync::Arc;
 
 /// The registry entry of central difference.
@@ -58,10 +59,10 @@ impl Scheme for CentralDifferenceScheme {
     }
 
     /// Runs that take blocks of steps ([`time_loop::takes_blocks`]: the lumped kernel has them)
-    /// run them on [`crate::kernel::default_threads`] threads; every other run on one.
+    /// run them on [`crate::kernels::lumped::kernel::default_threads`] threads; every other run on one.
     fn threads(&self, model: &Model, mass: MassKind, allow_unstable: bool) -> usize {
         if time_loop::takes_blocks(mass == MassKind::Lumped, allow_unstable) {
-            crate::kernel::default_threads(model.bar().node_count())
+            crate::kernels::lumped::kernel::default_threads(model.bar().node_count())
         } else {
             1
         }
@@ -123,7 +124,7 @@ pub trait CentralDifferenceKernel: Sized {
     fn steps_in_blocks(&self) -> bool {
         false
     }
-    /// `steps` steps with their energies in one pass ([`crate::kernel_tiled`]).
+    /// `steps` steps with their energies in one pass ([`crate::kernels::lumped::tiled`]).
     fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
         let _ = (block, steps);
         unreachable!("a matrix-mass kernel has no blocks of steps");

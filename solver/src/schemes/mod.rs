@@ -1,7 +1,7 @@
 //! The time-integration schemes, each written against the public integrator interface
 //! ([`crate::integrator`]), and the registry scenes name them through.
 //!
-//! **Enters:** the interface and the step kernels (`kernel`, `matrix_kernel`, `park`).
+//! **Enters:** the interface and the step kernels ([`crate::kernels`]: `lumped`, `matrix_mass`, `park`).
 //! **Leaves:** [`REGISTRY`] (what scenes, `courant list --schemes` and the report see) and each
 //! scheme's public types. Schemes know the interface, never the reverse, and never each other
 //! (Park's start reuses central difference's `half_step_start`, the one exception).

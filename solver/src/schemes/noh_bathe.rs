@@ -52,16 +52,16 @@
 //!   p^2 Omega^2/4), 1)`), so it is the balance energy here: `T* = T - (p dt)^2/8 a M a`, and
 //!   the balance reports what the scheme dissipates.
 
+use crate::analysis::stability::CriticalStep;
 use crate::error::{InputError, RunError};
 use crate::integrator::{
     InitialState, Integrator, LimitKind, Parameter, ParameterDefault, RunSetup, Scheme,
     SchemeEntry, SchemeLimit, Start, time_loop,
 };
-use crate::kernel::StepEnergy;
+use crate::kernels::energy::StepEnergy;
 use crate::mass::{MassKind, MassOperator};
 use crate::model::Model;
 use crate::output::RunOutput;
-use crate::stability::CriticalStep;
 use std::sync::Arc;
 
 /// The registry entry.

@@ -1,5 +1,5 @@
 //! Park's scheme through the integrator interface: the `park-lts` and `park-global` registry
-//! entries and their stepper around [`crate::park::ParkScheme`] (the folded, blocked step;
+//! entries and their stepper around [`crate::kernels::park::ParkScheme`] (the folded, blocked step;
 //! methods.md §6).
 //!
 //! Balance energy: `1/2 v M v - dt^2/8 a M a + 1/2 u K u`, which is central difference's
@@ -9,17 +9,17 @@
 //! `K u^{n+1}`. Lumped mass only.
 
 use super::central_difference::half_step_start;
+use crate::analysis::stability::CriticalStep;
 use crate::error::{InputError, RunError};
 use crate::integrator::{
     InitialState, Integrator, LimitKind, Parameter, ParameterDefault, ParameterError,
     ParameterValues, RunSetup, Scheme, SchemeEntry, SchemeLimit, Start, lumped_only, time_loop,
 };
-use crate::kernel::StepEnergy;
+use crate::kernels::energy::StepEnergy;
+use crate::kernels::park::{ParkOptions, ParkScheme, ParkVariant};
 use crate::mass::MassKind;
 use crate::model::Model;
 use crate::output::RunOutput;
-use crate::park::{ParkOptions, ParkScheme, ParkVariant};
-use crate::stability::CriticalStep;
 use std::sync::Arc;
 
 /// Park's parameters, shared by both entries.

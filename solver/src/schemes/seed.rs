@@ -4,13 +4,13 @@
 
 use super::central_difference::CentralDifferenceScheme;
 use super::park::Park;
+use crate::analysis::stability::CriticalStep;
 use crate::error::RunError;
 use crate::integrator::{Integration, OutputRequest, Scheme, SchemeLimit, StabilityPolicy, Start};
+use crate::kernels::park::ParkOptions;
 use crate::mass::MassKind;
 use crate::model::Model;
 use crate::output::RunOutput;
-use crate::park::ParkOptions;
-use crate::stability::CriticalStep;
 use std::sync::Arc;
 
 /// The seed's schemes as plain settings: central difference with a mass, or Park's scheme in
