@@ -35,7 +35,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use courant_solver::kernels::lumped::kernel::LumpedCentralDifference;
+use courant_solver::bench::LumpedCentralDifference;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 /// Element counts.
@@ -50,11 +50,11 @@ fn noh_bathe_step_ratio() -> f64 {
     courant_solver::schemes::noh_bathe::NohBathe::critical_omega(NB_P) / 2.0
 }
 
-use courant_solver::fixtures::smooth_half_velocity;
+use courant_solver::bench::smooth_half_velocity;
 
 /// The graded, loaded, free-fixed bar of `n` elements and its kernel at Courant number 0.5.
 fn graded_kernel(n: usize) -> LumpedCentralDifference {
-    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+    let model = courant_solver::bench::graded_seed_bar(n).unwrap();
     let dt = 0.5 * model.bar().stiffest_element().1;
     let u0 = vec![0.0; n + 1];
     let v_half = smooth_half_velocity(n);
@@ -109,7 +109,7 @@ fn lumped_cd_step(c: &mut Criterion) {
 /// (unit tests of `kernels::lumped::pipeline`); issue 17 target 4: 0.54 ns at N = 1e6 on one core, 1.7x
 /// on two.
 fn lumped_cd_block(c: &mut Criterion) {
-    use courant_solver::kernels::lumped::tiled::{MAX_BLOCK_STEPS, StepBlock};
+    use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock};
     let steps = MAX_BLOCK_STEPS;
     let mut group = c.benchmark_group("lumped_cd_block");
     group
@@ -159,7 +159,7 @@ fn mass_kind_step(c: &mut Criterion) {
         .sample_size(20)
         .measurement_time(Duration::from_secs(3));
     for n in SIZES {
-        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let model = courant_solver::bench::graded_seed_bar(n).unwrap();
         group.throughput(Throughput::Elements(n as u64));
         let mut lumped = graded_kernel(n);
         group.bench_function(BenchmarkId::new("lmm", n), |b| {
@@ -190,7 +190,7 @@ fn mass_kind_step(c: &mut Criterion) {
             ("rmm0.5", &model, MassKind::Reciprocal { beta: 0.5 }),
             ("cmm-graded-density", &graded_density, MassKind::Consistent),
         ] {
-            let mut kernel = courant_solver::fixtures::matrix_step(model, kind).unwrap();
+            let mut kernel = courant_solver::bench::matrix_step(model, kind).unwrap();
             group.bench_function(BenchmarkId::new(name, n), |b| {
                 b.iter(|| kernel.step_with_energy(black_box(&forces)))
             });
@@ -227,8 +227,7 @@ fn spectrum_dense(c: &mut Criterion) {
         let name = kind.label().replace(['(', ')'], "");
         group.bench_function(BenchmarkId::new(name, 200), |b| {
             b.iter(|| {
-                courant_solver::analysis::spectrum::angular_frequencies(black_box(&model), kind)
-                    .unwrap()
+                courant_solver::analysis::angular_frequencies(black_box(&model), kind).unwrap()
             })
         });
     }
@@ -238,14 +237,15 @@ fn spectrum_dense(c: &mut Criterion) {
 /// One step of Park's scheme (theta = 1/2, with and without local stepping) against the lumped
 /// CD run step on the Fig. 2 graded bar, N = 1e3, 1e5, 1e6, Co = 0.5. Target (issue 4): within 3x of CD.
 fn park_step(c: &mut Criterion) {
-    use courant_solver::{ParkOptions, ParkScheme};
+    use courant_solver::ParkOptions;
+    use courant_solver::bench::ParkScheme;
     let mut group = c.benchmark_group("park_step");
     group
         .warm_up_time(Duration::from_secs(1))
         .sample_size(20)
         .measurement_time(Duration::from_secs(3));
     for n in SIZES {
-        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let model = courant_solver::bench::graded_seed_bar(n).unwrap();
         let dt = 0.5 * model.bar().stiffest_element().1;
         group.throughput(Throughput::Elements(n as u64));
         let forces = [(0usize, 1.0f64)];
@@ -329,7 +329,7 @@ fn noh_bathe_step(c: &mut Criterion) {
         .sample_size(20)
         .measurement_time(Duration::from_secs(3));
     for n in SIZES {
-        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let model = courant_solver::bench::graded_seed_bar(n).unwrap();
         let element_dt = model.bar().stiffest_element().1;
         group.throughput(Throughput::Elements(n as u64));
         let lumped = 0.5 * element_dt;
@@ -415,7 +415,7 @@ fn run_loop(c: &mut Criterion) {
         .sample_size(20)
         .measurement_time(Duration::from_secs(4));
     let (n, steps) = (10_000, 1_000);
-    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+    let model = courant_solver::bench::graded_seed_bar(n).unwrap();
     let element_dt = model.bar().stiffest_element().1;
     let request = OutputRequest {
         energy_every: steps,
@@ -479,7 +479,7 @@ fn run_loop_large(c: &mut Criterion) {
         .sample_size(10)
         .measurement_time(Duration::from_secs(3));
     for (n, steps) in [(100_000, 1_000), (1_000_000, 300)] {
-        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let model = courant_solver::bench::graded_seed_bar(n).unwrap();
         let element_dt = model.bar().stiffest_element().1;
         let request = OutputRequest {
             energy_every: 1,

@@ -26,8 +26,8 @@ use std::f64::consts::PI;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
+use courant_solver::bench::LumpedCentralDifference;
 use courant_solver::contact::{ContactProblem, ContactScheme, ContactStepper, MassPenalty};
-use courant_solver::kernels::lumped::kernel::LumpedCentralDifference;
 use courant_solver::{Bar, InitialConditions, Mesh, Model, Supports};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 

@@ -55,6 +55,7 @@ const SOLVER_LAYERS: &[&str] = &[
     "schemes",
     "contact",
     "fixtures",
+    "bench",
 ];
 
 /// The workspace root.

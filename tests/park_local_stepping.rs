@@ -18,10 +18,10 @@
 mod common;
 
 use common::*;
-use courant_solver::fixtures::{graded_seed_bar, seed_bar};
+use courant_solver::bench::{ParkScheme, graded_seed_bar, seed_bar};
 use courant_solver::{
     Bar, CentralDifference, End, Field, InitialConditions, Load, Mesh, Model, OutputRequest,
-    ParkOptions, ParkScheme, ParkVariant, RunError, Supports, TimeFunction,
+    ParkOptions, ParkVariant, RunError, Supports, TimeFunction,
 };
 
 fn run(
@@ -206,7 +206,7 @@ fn static_state(bar: Bar) -> Model {
 
 #[test]
 fn incremental_variant_keeps_a_static_state_static_and_free_drifts() {
-    let graded = courant_solver::fixtures::graded_bar(50).unwrap();
+    let graded = courant_solver::bench::graded_bar(50).unwrap();
     let layered_modulus: Vec<f64> = (0..50).map(|e| if e < 25 { 16.0 } else { 1.0 }).collect();
     let layered = Bar::new(
         Mesh::uniform(1.0, 50).unwrap(),

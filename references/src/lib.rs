@@ -19,6 +19,8 @@
 //! - [`contact`]: the stability limit of penalty contact and the contact forces of 1D impact.
 //! - [`error`]: the validation error shared by all references.
 
+#![warn(missing_docs)]
+
 pub mod contact;
 pub mod dalembert;
 pub mod error;

@@ -19,7 +19,7 @@ mod harness;
 fn main() {
     let (n, steps, kind, reps) = harness::arguments(1_000_000, 300);
     let reps = reps.map_or(5, |s| harness::whole_number("REPS", &s));
-    let model = courant_solver::fixtures::graded_seed_bar(n).expect("bar");
+    let model = courant_solver::bench::graded_seed_bar(n).expect("bar");
     let element_dt = model.bar().stiffest_element().1;
     let request = OutputRequest {
         energy_every: 1,

@@ -10,8 +10,8 @@
 //!   WHICH: both (default) | matrix | lumped | check (the mass check alone, ms)
 //! ```
 
-use courant_solver::fixtures::smooth_half_velocity;
-use courant_solver::kernels::lumped::kernel::LumpedCentralDifference;
+use courant_solver::bench::LumpedCentralDifference;
+use courant_solver::bench::smooth_half_velocity;
 use std::time::Instant;
 
 mod harness;
@@ -29,9 +29,9 @@ fn main() {
             "WHICH: {which} is not one of both, matrix, lumped, check"
         ));
     }
-    let model = courant_solver::fixtures::graded_seed_bar(n).expect("bar");
+    let model = courant_solver::bench::graded_seed_bar(n).expect("bar");
     let element_dt = model.bar().stiffest_element().1;
-    let mut matrix = courant_solver::fixtures::matrix_step(&model, kind).expect("mass");
+    let mut matrix = courant_solver::bench::matrix_step(&model, kind).expect("mass");
     let (v, zeros) = (smooth_half_velocity(n), vec![0.0; n + 1]);
     let mut lumped = LumpedCentralDifference::new(&model, 0.5 * element_dt, &zeros, &v);
     let forces = [(0usize, 1.0f64)];

@@ -24,16 +24,27 @@
 //! `schemes/` (central difference, Park, Noh-Bathe, each written against the interface, and
 //! the registry scenes name them through); `contact/` (contact runs, stepping the bulk with the
 //! `cd` stepper); `fixtures` (bars for tests, benches and examples).
+//!
+//! Public surface: the types re-exported here, and the modules `model`, `mass`, `analysis`
+//! (their public items only; their files are private), `integrator` (the contract a scheme
+//! honours, with the [`integrator::StepEnergy`] and [`integrator::StepBlock`] it exchanges with
+//! the loop), `schemes` and `contact`. The step kernels, the fixtures and the kernels' constants
+//! are private; what benches, timing examples and kernel-level tests need of them is gathered in
+//! the hidden `bench` module, which is not a stable interface.
+
+#![warn(missing_docs)]
 
 pub mod analysis;
+#[doc(hidden)]
+pub mod bench;
 pub mod contact;
-pub mod error;
-pub mod fixtures;
+mod error;
+mod fixtures;
 pub mod integrator;
-pub mod kernels;
+mod kernels;
 pub mod mass;
 pub mod model;
-pub mod output;
+mod output;
 pub mod schemes;
 mod simd;
 
@@ -42,11 +53,11 @@ pub use error::{DivergenceError, InputError, NoConvergence, RunError, UnstableSt
 pub use integrator::{
     Integration, LimitKind, OutputRequest, Scheme, SchemeEntry, SchemeLimit, StabilityPolicy, Start,
 };
-pub use kernels::park::{ParkOptions, ParkScheme, ParkVariant};
+pub use kernels::park::{ParkOptions, ParkVariant};
 pub use mass::{MassKind, MassOperator};
-pub use model::bar::{Bar, Field};
-pub use model::load::{End, Load, NodalLoad, TimeFunction};
-pub use model::mesh::Mesh;
-pub use model::{InitialConditions, Model, Support, Supports};
+pub use model::{
+    Bar, End, Field, InitialConditions, Load, Mesh, Model, NodalLoad, Support, Supports,
+    TimeFunction,
+};
 pub use output::{EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput, StressProfile};
 pub use schemes::seed::CentralDifference;

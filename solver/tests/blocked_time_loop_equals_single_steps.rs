@@ -194,15 +194,14 @@ fn a_guard_trip_inside_a_block_names_the_node_of_its_own_step() {
 
 #[test]
 fn a_scene_plans_with_the_kernels_thread_count() {
-    courant_solver::kernels::lumped::kernel::set_default_threads(Some(2));
+    courant_solver::bench::set_default_threads(Some(2));
     for elements in [99_998usize, 99_999] {
-        let model = courant_solver::fixtures::graded_seed_bar(elements).unwrap();
+        let model = courant_solver::bench::graded_seed_bar(elements).unwrap();
         let dt = 0.5 * model.bar().stiffest_element().1;
         let integration = CentralDifference::new(dt).integration();
         let zeros = vec![0.0; elements + 1];
-        let kernel = courant_solver::kernels::lumped::kernel::LumpedCentralDifference::new(
-            &model, dt, &zeros, &zeros,
-        );
+        let kernel =
+            courant_solver::bench::LumpedCentralDifference::new(&model, dt, &zeros, &zeros);
         let expected = if elements + 1 >= 100_000 { 2 } else { 1 };
         assert_eq!(
             (integration.threads(&model), kernel.threads()),
@@ -211,5 +210,5 @@ fn a_scene_plans_with_the_kernels_thread_count() {
             elements + 1
         );
     }
-    courant_solver::kernels::lumped::kernel::set_default_threads(None);
+    courant_solver::bench::set_default_threads(None);
 }

@@ -16,12 +16,12 @@
 //! its critical step (within `MEASURED_PRECISION` below `2/omega_max`) and refuses a step above
 //! it naming the measured limit.
 
-use courant_solver::fixtures::graded_seed_bar;
+use courant_solver::bench::graded_seed_bar;
+use courant_solver::integrator::StepEnergy;
 use courant_solver::integrator::{
     InitialState, Integrator, LimitKind, MEASURED_PRECISION, RunSetup, SchemeLimit,
     measure_critical_step, time_loop,
 };
-use courant_solver::kernels::energy::StepEnergy;
 use courant_solver::{
     CentralDifference, CriticalStep, InputError, Integration, MassKind, MassOperator, Model,
     OutputRequest, RunError, RunOutput, Scheme, Start,

@@ -20,7 +20,7 @@
 mod common;
 
 use common::{amplification, determinant, noh_bathe, run, spectral_radius};
-use courant_solver::fixtures::graded_seed_bar;
+use courant_solver::bench::graded_seed_bar;
 use courant_solver::schemes::noh_bathe::NohBathe;
 use courant_solver::{
     Bar, CentralDifference, InitialConditions, MassKind, Mesh, Model, OutputRequest, Supports,

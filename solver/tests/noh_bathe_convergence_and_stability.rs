@@ -22,7 +22,7 @@
 mod common;
 
 use common::{determinant, free_bar, noh_bathe, run};
-use courant_solver::fixtures::graded_seed_bar;
+use courant_solver::bench::graded_seed_bar;
 use courant_solver::integrator::{MEASURED_PRECISION, measure_critical_step};
 use courant_solver::schemes::central_difference::CentralDifferenceScheme;
 use courant_solver::schemes::noh_bathe::NohBathe;

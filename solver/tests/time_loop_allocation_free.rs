@@ -18,13 +18,14 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use courant_solver::fixtures::graded_seed_bar;
+use courant_solver::bench::LumpedCentralDifference;
+use courant_solver::bench::ParkScheme;
+use courant_solver::bench::graded_seed_bar;
+use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock, TILE};
+use courant_solver::bench::{MatrixCentralDifference, StartState};
 use courant_solver::integrator::{InitialState, Integrator};
-use courant_solver::kernels::lumped::kernel::LumpedCentralDifference;
-use courant_solver::kernels::lumped::tiled::{MAX_BLOCK_STEPS, StepBlock, TILE};
-use courant_solver::kernels::matrix_mass::kernel::{MatrixCentralDifference, StartState};
 use courant_solver::schemes::noh_bathe::NohBatheStepper;
-use courant_solver::{MassKind, MassOperator, ParkOptions, ParkScheme, ParkVariant, Start};
+use courant_solver::{MassKind, MassOperator, ParkOptions, ParkVariant, Start};
 
 /// The system allocator, counting allocations and reallocations.
 struct Counting;

@@ -33,12 +33,10 @@
 
 use crate::io::atomic::write_file_atomically;
 use crate::results::table::{Precision, Table};
-use courant_solver::fixtures::{graded_seed_bar, smooth_half_velocity};
+use courant_solver::bench::{LumpedCentralDifference, default_threads, set_default_threads};
+use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock};
+use courant_solver::bench::{graded_seed_bar, smooth_half_velocity};
 use courant_solver::integrator::OutputRequest;
-use courant_solver::kernels::lumped::kernel::{
-    LumpedCentralDifference, default_threads, set_default_threads,
-};
-use courant_solver::kernels::lumped::tiled::{MAX_BLOCK_STEPS, StepBlock};
 use courant_solver::{CentralDifference, MassOperator, Model};
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
@@ -204,11 +202,11 @@ fn check(options: &BenchOptions) -> Result<(), String> {
     if let Some(n) = options
         .sizes
         .iter()
-        .find(|&&n| !(2..=courant_solver::model::mesh::MAX_ELEMENTS).contains(&n))
+        .find(|&&n| !(2..=courant_solver::model::MAX_ELEMENTS).contains(&n))
     {
         return Err(format!(
             "--sizes: {n} must lie in 2..={} (elements of the bar)",
-            courant_solver::model::mesh::MAX_ELEMENTS
+            courant_solver::model::MAX_ELEMENTS
         ));
     }
     if !(options.node_steps.is_finite() && (1.0..=1e12).contains(&options.node_steps)) {
@@ -254,7 +252,7 @@ fn steps_for(n: usize, options: &BenchOptions) -> usize {
 /// as in a real run (with fewer steps it would mostly fill and drain).
 fn block_steps_for(n: usize, options: &BenchOptions) -> usize {
     let steps = steps_for(n, options);
-    if n + 1 >= courant_solver::kernels::lumped::kernel::PARALLEL_FROM_NODES {
+    if n + 1 >= courant_solver::bench::PARALLEL_FROM_NODES {
         steps.max(MAX_BLOCK_STEPS)
     } else {
         steps

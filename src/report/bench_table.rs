@@ -15,9 +15,9 @@ use std::path::Path;
 /// q_e, A_i, k_e, 1/m and m and writes u, v, a (12 arrays, 96 B; its u^{n+1} block stays in
 /// cache); a contact step is two lumped steps with energies plus O(1) contact work (56 B per
 /// node); a block of lumped steps (`lumped_cd_block`) passes over the arrays once per sub-block
-/// of [`courant_solver::kernels::lumped::tiled::DEPTH`] = 64 steps (48 / 64 and 56 / 64 B).
+/// of [`courant_solver::bench::DEPTH`] = 64 steps (48 / 64 and 56 / 64 B).
 fn bytes_per_node_step(group: &str, function: &str) -> Option<f64> {
-    let depth = courant_solver::kernels::lumped::tiled::DEPTH as f64;
+    let depth = courant_solver::bench::DEPTH as f64;
     match (group, function) {
         ("lumped_cd_step", "step") => Some(48.0),
         ("lumped_cd_step", "step_with_energy")
@@ -34,10 +34,10 @@ fn bytes_per_node_step(group: &str, function: &str) -> Option<f64> {
 }
 
 /// Time steps one criterion iteration of `group` takes (a block of lumped steps takes
-/// [`courant_solver::kernels::lumped::tiled::MAX_BLOCK_STEPS`]).
+/// [`courant_solver::bench::MAX_BLOCK_STEPS`]).
 fn steps_per_iteration(group: &str) -> f64 {
     if group == "lumped_cd_block" {
-        courant_solver::kernels::lumped::tiled::MAX_BLOCK_STEPS as f64
+        courant_solver::bench::MAX_BLOCK_STEPS as f64
     } else {
         1.0
     }

@@ -9,9 +9,10 @@
 //! Files: `stability` (critical steps of central difference for every mass), `spectrum` (dense
 //! eigenvalues of small meshes), `time_step` (step plans that hit output times).
 
-pub mod spectrum;
-pub mod stability;
-pub mod time_step;
+pub(crate) mod spectrum;
+pub(crate) mod stability;
+pub(crate) mod time_step;
 
+pub use spectrum::{MAX_DENSE_NODES, angular_frequencies};
 pub use stability::CriticalStep;
 pub use time_step::{TimePlan, plan, plan_keeping_step};

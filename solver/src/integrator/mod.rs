@@ -55,6 +55,8 @@ mod scheme;
 mod settings;
 pub mod time_loop;
 
+pub use crate::kernels::energy::StepEnergy;
+pub use crate::kernels::lumped::tiled::StepBlock;
 pub use contract::{InitialState, Integrator};
 pub use limit::{LimitKind, SchemeLimit};
 pub use measure::{MEASURED_PRECISION, measure_critical_step};

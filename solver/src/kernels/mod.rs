@@ -2,7 +2,7 @@
 //! arrays, with no knowledge of the time loop, its outputs or the stability policy.
 //!
 //! **Enters:** a [`Model`](crate::model::Model), the step `dt`, a start state, the loads of each
-//! step. **Leaves:** the new state and each step's energies ([`StepEnergy`]). The schemes in
+//! step. **Leaves:** the new state and each step's energies ([`StepEnergy`](energy::StepEnergy)). The schemes in
 //! [`crate::schemes`] wrap these kernels into steppers the shared time loop drives.
 //!
 //! Folders: `lumped/` (central difference with the lumped mass: the cache-blocked step, its
@@ -11,9 +11,7 @@
 //! sweeps, the placed state arrays), `park/` (Park's folded step). `energy` holds what every
 //! kernel reports.
 
-pub mod energy;
-pub mod lumped;
-pub mod matrix_mass;
-pub mod park;
-
-pub use energy::StepEnergy;
+pub(crate) mod energy;
+pub(crate) mod lumped;
+pub(crate) mod matrix_mass;
+pub(crate) mod park;

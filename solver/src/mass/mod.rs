@@ -11,10 +11,10 @@
 //! symmetric banded matrix and its inertia), `windows/` (the CMM/AMM solve of long bars in
 //! overlapping windows, twelve side by side, with its AVX2 intrinsics in `windows/avx2`).
 
-pub mod banded;
-pub mod operator;
-pub mod partitioned_ldl;
-pub mod tridiagonal;
-pub mod windows;
+pub(crate) mod banded;
+pub(crate) mod operator;
+pub(crate) mod partitioned_ldl;
+pub(crate) mod tridiagonal;
+pub(crate) mod windows;
 
 pub use operator::{MassKind, MassOperator, TridiagonalSolve};

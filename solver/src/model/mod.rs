@@ -10,9 +10,12 @@
 //! derived from them), `load` (nodal forces, end tractions, time functions), `problem`
 //! ([`Model`]: supports, loads and initial conditions on a bar).
 
-pub mod bar;
-pub mod load;
-pub mod mesh;
-pub mod problem;
+pub(crate) mod bar;
+pub(crate) mod load;
+pub(crate) mod mesh;
+pub(crate) mod problem;
 
+pub use bar::{Bar, Field};
+pub use load::{End, Load, NodalLoad, TimeFunction};
+pub use mesh::{MAX_ELEMENTS, Mesh};
 pub use problem::{InitialConditions, Model, Support, Supports};

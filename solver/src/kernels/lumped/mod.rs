@@ -10,9 +10,9 @@
 
 #[cfg(target_arch = "x86_64")]
 mod avx2;
-pub mod kernel;
+pub(crate) mod kernel;
 mod pipeline;
-pub mod tiled;
+pub(crate) mod tiled;
 
 pub use kernel::{LumpedCentralDifference, PARALLEL_FROM_NODES};
 pub use tiled::{DEPTH, MAX_BLOCK_STEPS, StepBlock, TILE};

@@ -9,7 +9,7 @@
 
 #[cfg(target_arch = "x86_64")]
 mod avx2;
-pub mod kernel;
+pub(crate) mod kernel;
 mod passes;
 mod placed_arrays;
 
