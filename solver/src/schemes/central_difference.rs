@@ -11,7 +11,8 @@
 use crate::analysis::stability::CriticalStep;
 use crate::error::{InputError, RunError};
 use crate::integrator::{
-    InitialState, Integrator, RunSetup, Scheme, SchemeEntry, SchemeLimit, Start, time_loop,
+    BlockStepper, InitialState, Integrator, RunSetup, Scheme, SchemeEntry, SchemeLimit, Start,
+    time_loop,
 };
 use crate::kernels::energy::StepEnergy;
 use crate::kernels::lumped::kernel::LumpedCentralDifference;
@@ -70,7 +71,7 @@ impl Scheme for CentralDifferenceScheme {
 
     fn run(&self, setup: RunSetup<'_>) -> Result<RunOutput, RunError> {
         match setup.mass {
-            MassOperator::Diagonal { .. } => time_loop::run::<LumpedStepper>(&(), setup),
+            MassOperator::Diagonal { .. } => time_loop::run_in_blocks::<LumpedStepper>(&(), setup),
             _ => time_loop::run::<MatrixStepper>(&(), setup),
         }
     }
@@ -120,21 +121,16 @@ pub trait CentralDifferenceKernel: Sized {
     fn staggered_from_mass(&mut self) -> Option<f64> {
         None
     }
-    /// Whether [`Self::step_block`] is available (the lumped kernel's temporal blocking).
-    fn steps_in_blocks(&self) -> bool {
-        false
-    }
-    /// `steps` steps with their energies in one pass ([`crate::kernels::lumped::tiled`]).
-    fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
-        let _ = (block, steps);
-        unreachable!("a matrix-mass kernel has no blocks of steps");
-    }
-    /// `a^n` at node `i` from `[u_{i-1}, u_i, u_{i+1}]` recorded by a block (only a kernel with
-    /// blocks of steps is asked).
-    fn probed_acceleration(&self, model: &Model, i: usize, t: f64, u: [f64; 3]) -> f64 {
-        let _ = (model, i, t, u);
-        unreachable!("a matrix-mass kernel has no blocks of steps");
-    }
+}
+
+/// A central-difference kernel that also takes blocks of steps (the lumped kernel's temporal
+/// blocking, [`crate::kernels::lumped::tiled`]): its stepper is then a [`BlockStepper`].
+pub trait BlockKernel: CentralDifferenceKernel {
+    /// `steps` steps with their energies in one pass, bit-identical to single steps.
+    fn step_block(&mut self, block: &mut StepBlock, steps: usize);
+    /// `a^n` at node `i` from `[u_{i-1}, u_i, u_{i+1}]` recorded by a block, as
+    /// [`CentralDifferenceKernel::acceleration_at`] forms it from the state.
+    fn probed_acceleration(&self, model: &Model, i: usize, t: f64, u: [f64; 3]) -> f64;
 }
 
 impl CentralDifferenceKernel for LumpedCentralDifference {
@@ -163,13 +159,13 @@ impl CentralDifferenceKernel for LumpedCentralDifference {
     fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
         self.step_with_energy(forces)
     }
-    fn steps_in_blocks(&self) -> bool {
-        true
-    }
+}
+
+impl BlockKernel for LumpedCentralDifference {
     fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
         self.advance_block::<true>(block, steps);
     }
-    /// The lumped acceleration, as [`Self::acceleration_at`] forms it from the state.
+    /// The lumped acceleration, as `acceleration_at` forms it from the state.
     fn probed_acceleration(&self, model: &Model, i: usize, t: f64, u: [f64; 3]) -> f64 {
         model.acceleration_from(i, u, t)
     }
@@ -275,11 +271,9 @@ impl<K: CentralDifferenceKernel> Integrator for CentralDifferenceStepper<K> {
     fn recomputed_balance_kinetic(&mut self) -> Option<f64> {
         self.kernel.staggered_from_mass()
     }
+}
 
-    fn steps_in_blocks(&self) -> bool {
-        self.kernel.steps_in_blocks()
-    }
-
+impl<K: BlockKernel> BlockStepper for CentralDifferenceStepper<K> {
     fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
         self.kernel.step_block(block, steps);
     }
