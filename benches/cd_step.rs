@@ -298,6 +298,7 @@ fn noh_bathe_step(c: &mut Criterion) {
             start: Start::HalfStep,
             allow_unstable: false,
             mass: MassOperator::new(model, kind).unwrap(),
+            threads: 1,
         };
         I::start(p, state).unwrap()
     }

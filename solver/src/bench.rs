@@ -14,7 +14,6 @@
 pub use crate::fixtures::{
     graded_bar, graded_seed_bar, loaded_wall, matrix_step, seed_bar, smooth_half_velocity,
 };
-pub use crate::kernels::lumped::kernel::{default_threads, set_default_threads};
 pub use crate::kernels::lumped::{
     DEPTH, LumpedCentralDifference, MAX_BLOCK_STEPS, PARALLEL_FROM_NODES, StepBlock, TILE,
 };

@@ -210,6 +210,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
             start: Start::HalfStep,
             allow_unstable: false,
             mass: MassOperator::new(&model, kind).unwrap(),
+            threads: 1,
         };
         let mut stepper = NohBatheStepper::start(&0.54, state).unwrap();
         let mut t = 0.0;

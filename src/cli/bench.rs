@@ -33,11 +33,12 @@
 
 use crate::io::atomic::write_file_atomically;
 use crate::results::table::{Precision, Table};
-use courant_solver::bench::{LumpedCentralDifference, default_threads, set_default_threads};
+use crate::run::threads;
+use courant_solver::bench::LumpedCentralDifference;
 use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock};
 use courant_solver::bench::{graded_seed_bar, smooth_half_velocity};
 use courant_solver::integrator::OutputRequest;
-use courant_solver::{CentralDifference, MassOperator, Model};
+use courant_solver::{CentralDifference, Integration, MassOperator, Model};
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -144,12 +145,12 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
                 for (time, mode) in kernel.iter_mut().zip(modes) {
                     *time = time_kernel(&model, options, mode)?;
                 }
-                set_default_threads(Some(1));
-                let one = time_run_loop(&model, options);
-                set_default_threads(None);
-                Ok((kernel, one?, time_run_loop(&model, options)?))
+                let one = time_run_loop(&model, options, Some(1))?;
+                let all = time_run_loop(&model, options, threads::setting())?;
+                Ok((model, kernel, one, all))
             });
-        let ([kernel, energy, blocked, blocked_energy], loop_one, run_loop) = match measured {
+        let (model, [kernel, energy, blocked, blocked_energy], loop_one, run_loop) = match measured
+        {
             Ok(m) => m,
             Err(e) => {
                 eprintln!("error: N = {n}: {e}");
@@ -163,7 +164,9 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
         let ratio = |x: f64| c_row.map(|r| x / r.2);
         table.push(vec![
             n.into(),
-            default_threads(n + 1).into(),
+            run_loop_integration(&model, threads::setting())
+                .threads(&model)
+                .into(),
             c_row.map(|r| r.1.clone()).into(),
             c_row.map(|r| r.2).into(),
             kernel.into(),
@@ -312,12 +315,25 @@ fn time_kernel(model: &Model, options: &BenchOptions, mode: KernelMode) -> Resul
     }
 }
 
+/// The run the run loop is timed with: lumped central difference at half the critical step of
+/// `model`, on `threads` threads (`None`: every core) when it takes blocks of steps.
+fn run_loop_integration(model: &Model, threads: Option<usize>) -> Integration {
+    Integration {
+        threads,
+        ..CentralDifference::new(0.5 * model.bar().stiffest_element().1).integration()
+    }
+}
+
 /// ns per node-step of the run loop: runs of `2 S` and `S` steps, their difference per
 /// node-step, median over the repetitions.
-fn time_run_loop(model: &Model, options: &BenchOptions) -> Result<f64, String> {
+fn time_run_loop(
+    model: &Model,
+    options: &BenchOptions,
+    threads: Option<usize>,
+) -> Result<f64, String> {
     let n = model.bar().element_count();
     let steps = block_steps_for(n, options);
-    let integration = CentralDifference::new(0.5 * model.bar().stiffest_element().1).integration();
+    let integration = run_loop_integration(model, threads);
     let run = |steps: usize| -> Result<f64, String> {
         let request = OutputRequest {
             energy_every: steps,

@@ -35,6 +35,10 @@ pub struct InitialState<'a> {
     pub allow_unstable: bool,
     /// The assembled mass of the run (its to keep: matrix masses are factored once).
     pub mass: MassOperator,
+    /// The threads a [`BlockStepper`]'s blocks of steps may use (resolved by
+    /// [`super::Integration::threads`]; a stepper without blocks steps on one). The results do
+    /// not depend on it.
+    pub threads: usize,
 }
 
 /// One scheme's time stepper, as the shared time loop drives it (static dispatch: the loop is

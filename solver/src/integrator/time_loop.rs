@@ -158,6 +158,7 @@ fn run_steps_result<I: Integrator>(
         mass: operator,
         steps,
         request,
+        threads,
     } = setup;
     let nodes = model.bar().node_count();
 
@@ -205,6 +206,7 @@ fn run_steps_result<I: Integrator>(
             start,
             allow_unstable: stability.allow_unstable,
             mass: operator,
+            threads,
         },
     )
     .map_err(|e| Tripped::No(e.into()))?;

@@ -59,14 +59,10 @@ impl Scheme for CentralDifferenceScheme {
         SchemeLimit::central_difference(critical)
     }
 
-    /// Runs that take blocks of steps ([`time_loop::takes_blocks`]: the lumped kernel has them)
-    /// run them on [`crate::kernels::lumped::kernel::default_threads`] threads; every other run on one.
-    fn threads(&self, model: &Model, mass: MassKind, allow_unstable: bool) -> usize {
-        if time_loop::takes_blocks(mass == MassKind::Lumped, allow_unstable) {
-            crate::kernels::lumped::kernel::default_threads(model.bar().node_count())
-        } else {
-            1
-        }
+    /// The lumped stepper has blocks of steps ([`time_loop::takes_blocks`] says when a run
+    /// takes them); the matrix-mass steppers step singly.
+    fn takes_blocks(&self, mass: MassKind, allow_unstable: bool) -> bool {
+        time_loop::takes_blocks(mass == MassKind::Lumped, allow_unstable)
     }
 
     fn run(&self, setup: RunSetup<'_>) -> Result<RunOutput, RunError> {
@@ -135,12 +131,14 @@ pub trait BlockKernel: CentralDifferenceKernel {
 
 impl CentralDifferenceKernel for LumpedCentralDifference {
     fn build(state: InitialState<'_>, half_step_velocity: Vec<f64>, _: f64) -> Self {
-        Self::with_half_step_velocity(
+        let mut kernel = Self::with_half_step_velocity(
             state.model,
             state.dt,
             state.displacement,
             half_step_velocity,
-        )
+        );
+        kernel.set_threads(state.threads);
+        kernel
     }
     fn dt(&self) -> f64 {
         self.dt()

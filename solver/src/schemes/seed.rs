@@ -54,6 +54,7 @@ impl CentralDifference {
             start: self.start,
             stability: self.stability,
             scheme,
+            threads: None,
         }
     }
 

@@ -115,7 +115,7 @@ impl LumpedCentralDifference {
             u,
             v,
             avx2: has_avx2(),
-            threads: default_threads(n),
+            threads: 1,
         }
     }
 
@@ -124,8 +124,8 @@ impl LumpedCentralDifference {
         self.dt
     }
 
-    /// The threads a block of steps runs on (`advance_block`): [`default_threads`] of the bar
-    /// unless set. The results do not depend on it.
+    /// The threads a block of steps runs on (`advance_block`): 1 unless set (a run sets the
+    /// count its [`crate::integrator::Integration`] resolves). The results do not depend on it.
     pub fn threads(&self) -> usize {
         self.threads
     }
@@ -409,39 +409,10 @@ pub(crate) fn sweep_nodes<const ENERGY: bool, const AVX2: bool>(
     }
 }
 
-/// Real nodes from which a kernel runs its blocks of steps on every core by default (below,
-/// one thread: each thread's region should hold many tiles for the pipeline to pay).
+/// Real nodes from which a run's blocks of steps use several threads
+/// ([`crate::integrator::Integration::threads`]; below, one thread: each thread's region should
+/// hold many tiles for the pipeline to pay).
 pub const PARALLEL_FROM_NODES: usize = 100_000;
-
-/// The thread count set by [`set_default_threads`] (0: none).
-static DEFAULT_THREADS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-
-/// Set (or with `None` clear) the thread count [`default_threads`] gives bars from
-/// [`PARALLEL_FROM_NODES`] on, for the whole process (`courant bench` times one and all).
-pub fn set_default_threads(threads: Option<usize>) {
-    let value = threads.map_or(0, |t| t.max(1));
-    DEFAULT_THREADS.store(value, std::sync::atomic::Ordering::Relaxed);
-}
-
-/// The default thread count of a bar of `nodes` real nodes: below [`PARALLEL_FROM_NODES`] one;
-/// from there on, the count of [`set_default_threads`] if set, else the `COURANT_THREADS`
-/// environment variable when it holds a positive integer, else every core the process may use
-/// (`std::thread::available_parallelism`). Results do not depend on it (bit-identical whatever
-/// the count).
-pub fn default_threads(nodes: usize) -> usize {
-    if nodes < PARALLEL_FROM_NODES {
-        return 1;
-    }
-    let set = DEFAULT_THREADS.load(std::sync::atomic::Ordering::Relaxed);
-    if set > 0 {
-        return set;
-    }
-    std::env::var("COURANT_THREADS")
-        .ok()
-        .and_then(|text| text.trim().parse::<usize>().ok())
-        .filter(|&threads| threads > 0)
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
-}
 
 #[cfg(test)]
 mod tests {
