@@ -1,5 +1,5 @@
 //! Benchmark: ONE lumped-mass central-difference step of `courant_solver`'s
-//! `kernel::LumpedCentralDifference` (`step` and `step_with_energy`), on a GRADED bar.
+//! `kernel::LumpedStep` (`step` and `step_with_energy`), on a GRADED bar.
 //!
 //! What it measures: the wall time of one step for N = 1e3, 1e5, 1e6 elements. The bar is the
 //! unit bar with modulus linear 16 -> 1 (so every element has its own stiffness and every node
@@ -35,7 +35,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use courant_solver::bench::LumpedCentralDifference;
+use courant_solver::bench::LumpedStep;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 /// Element counts.
@@ -45,23 +45,23 @@ const SIZES: [usize; 3] = [1_000, 100_000, 1_000_000];
 const NB_P: f64 = 0.54;
 
 /// Noh-Bathe's critical step over central difference's on the same mass:
-/// `Omega_crit(p) / 2` (`NohBathe::critical_omega`; 1.8725 at p = 0.54).
+/// `Omega_crit(p) / 2` (`NohBatheScheme::critical_omega`; 1.8725 at p = 0.54).
 fn noh_bathe_step_ratio() -> f64 {
-    courant_solver::schemes::noh_bathe::NohBathe::critical_omega(NB_P) / 2.0
+    courant_solver::schemes::noh_bathe::NohBatheScheme::critical_omega(NB_P) / 2.0
 }
 
 use courant_solver::bench::smooth_half_velocity;
 
 /// The graded, loaded, free-fixed bar of `n` elements and its kernel at Courant number 0.5.
-fn graded_kernel(n: usize) -> LumpedCentralDifference {
+fn graded_kernel(n: usize) -> LumpedStep {
     let model = courant_solver::bench::graded_seed_bar(n).unwrap();
     let dt = 0.5 * model.bar().stiffest_element().1;
     let u0 = vec![0.0; n + 1];
     let v_half = smooth_half_velocity(n);
-    LumpedCentralDifference::new(&model, dt, &u0, &v_half)
+    LumpedStep::new(&model, dt, &u0, &v_half)
 }
 
-fn assert_finite(kernel: &LumpedCentralDifference) {
+fn assert_finite(kernel: &LumpedStep) {
     assert!(
         kernel
             .displacement()
@@ -238,7 +238,7 @@ fn spectrum_dense(c: &mut Criterion) {
 /// CD run step on the Fig. 2 graded bar, N = 1e3, 1e5, 1e6, Co = 0.5. Target (issue 4): within 3x of CD.
 fn park_step(c: &mut Criterion) {
     use courant_solver::ParkOptions;
-    use courant_solver::bench::ParkScheme;
+    use courant_solver::bench::ParkStep;
     let mut group = c.benchmark_group("park_step");
     group
         .warm_up_time(Duration::from_secs(1))
@@ -258,7 +258,7 @@ fn park_step(c: &mut Criterion) {
                 local_stepping,
                 ..ParkOptions::default()
             };
-            let mut park = ParkScheme::new(&model, dt, options).unwrap();
+            let mut park = ParkStep::new(&model, dt, options).unwrap();
             park.start(&model);
             let mut t = 0.0;
             group.bench_function(BenchmarkId::new(options.label(), n), |b| {
@@ -447,7 +447,7 @@ fn run_loop(c: &mut Criterion) {
         "noh-bathe",
         courant_solver::Integration::new(
             0.5 * noh_bathe_step_ratio() * element_dt,
-            std::sync::Arc::new(courant_solver::schemes::noh_bathe::NohBathe { p: NB_P }),
+            std::sync::Arc::new(courant_solver::schemes::noh_bathe::NohBatheScheme { p: NB_P }),
         ),
     )]) {
         group.bench_function(BenchmarkId::new(name, n), |b| {

@@ -4,7 +4,7 @@
 //! beta_s = 0.25e4.
 //!
 //! What it measures (wall time of one step, both bars):
-//! - `baseline`: the two bars' lumped kernels (`kernel::LumpedCentralDifference::
+//! - `baseline`: the two bars' lumped kernels (`kernel::LumpedStep::
 //!   step_with_energy`, one zero nodal force each) from the contact run's start state, with no
 //!   contact: what a contact-free run of the same bodies costs;
 //! - `predictor_corrector`, `cd_bipenalty`, `lagrange_multiplier`: `contact::ContactStepper::
@@ -26,7 +26,7 @@ use std::f64::consts::PI;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use courant_solver::bench::LumpedCentralDifference;
+use courant_solver::bench::LumpedStep;
 use courant_solver::contact::{ContactProblem, ContactScheme, ContactStepper, MassPenalty};
 use courant_solver::{Bar, InitialConditions, Mesh, Model, Supports};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
@@ -91,12 +91,12 @@ fn contact_step(c: &mut Criterion) {
 
         // Baseline: the same two kernels without contact, from the contact stepper's start state.
         let start = ContactStepper::new(&problem, dt, ContactScheme::LagrangeMultiplier).unwrap();
-        let kernels: Vec<LumpedCentralDifference> = problem
+        let kernels: Vec<LumpedStep> = problem
             .bodies()
             .iter()
             .enumerate()
             .map(|(b, model)| {
-                LumpedCentralDifference::new(
+                LumpedStep::new(
                     model,
                     dt,
                     start.displacement(b),

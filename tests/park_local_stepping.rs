@@ -18,7 +18,7 @@
 mod common;
 
 use common::*;
-use courant_solver::bench::{ParkScheme, graded_seed_bar, seed_bar};
+use courant_solver::bench::{ParkStep, graded_seed_bar, seed_bar};
 use courant_solver::{
     Bar, CentralDifference, End, Field, InitialConditions, Load, Mesh, Model, OutputRequest,
     ParkOptions, ParkVariant, RunError, Supports, TimeFunction,
@@ -125,7 +125,7 @@ fn alpha_above_one_is_refused_naming_the_element() {
         .filter(|&e| dt > model.bar().element_transit_time(e))
         .collect();
     assert_eq!(refused, [18, 19]);
-    let err = ParkScheme::new(&model, dt, ParkOptions::default())
+    let err = ParkStep::new(&model, dt, ParkOptions::default())
         .unwrap_err()
         .to_string();
     let alpha = dt / model.bar().element_transit_time(18);
@@ -139,7 +139,7 @@ fn alpha_above_one_is_refused_naming_the_element() {
         local_stepping: false,
         ..ParkOptions::default()
     };
-    let err = ParkScheme::new(&model, dt, global).unwrap_err().to_string();
+    let err = ParkStep::new(&model, dt, global).unwrap_err().to_string();
     assert!(err.contains("element 0 has alpha = 1.050000"), "{err}");
     // A run is refused before it starts unless unstable runs are allowed...
     let integrator = CentralDifference {

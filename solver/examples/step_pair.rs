@@ -10,7 +10,7 @@
 //!   WHICH: both (default) | matrix | lumped | check (the mass check alone, ms)
 //! ```
 
-use courant_solver::bench::LumpedCentralDifference;
+use courant_solver::bench::LumpedStep;
 use courant_solver::bench::smooth_half_velocity;
 use std::time::Instant;
 
@@ -33,7 +33,7 @@ fn main() {
     let element_dt = model.bar().stiffest_element().1;
     let mut matrix = courant_solver::bench::matrix_step(&model, kind).expect("mass");
     let (v, zeros) = (smooth_half_velocity(n), vec![0.0; n + 1]);
-    let mut lumped = LumpedCentralDifference::new(&model, 0.5 * element_dt, &zeros, &v);
+    let mut lumped = LumpedStep::new(&model, 0.5 * element_dt, &zeros, &v);
     let forces = [(0usize, 1.0f64)];
     for _ in 0..steps / 10 {
         matrix.step_with_energy(&forces);

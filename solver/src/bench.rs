@@ -3,9 +3,9 @@
 //! crate can stay private. Not a stable interface: it follows the kernels, and it is hidden from
 //! the documentation.
 //!
-//! - The step kernels, driven without the time loop: [`LumpedCentralDifference`] (one lumped
-//!   step, or blocks of steps with [`StepBlock`]), [`MatrixCentralDifference`] (CMM, AMM, RMM)
-//!   and [`ParkScheme`] (Park's folded step).
+//! - The step kernels, driven without the time loop: [`LumpedStep`] (one lumped
+//!   step, or blocks of steps with [`StepBlock`]), [`MatrixMassStep`] (CMM, AMM, RMM)
+//!   and [`ParkStep`] (Park's folded step).
 //! - The constants the timing tables divide by: [`TILE`], [`DEPTH`], [`MAX_BLOCK_STEPS`],
 //!   [`PARALLEL_FROM_NODES`].
 //! - The bars every bench and many tests run on (`graded_seed_bar`, `seed_bar`, `graded_bar`,
@@ -15,7 +15,7 @@ pub use crate::fixtures::{
     graded_bar, graded_seed_bar, loaded_wall, matrix_step, seed_bar, smooth_half_velocity,
 };
 pub use crate::kernels::lumped::{
-    DEPTH, LumpedCentralDifference, MAX_BLOCK_STEPS, PARALLEL_FROM_NODES, StepBlock, TILE,
+    DEPTH, LumpedStep, MAX_BLOCK_STEPS, PARALLEL_FROM_NODES, StepBlock, TILE,
 };
-pub use crate::kernels::matrix_mass::{MatrixCentralDifference, StartState};
-pub use crate::kernels::park::ParkScheme;
+pub use crate::kernels::matrix_mass::{MatrixMassStep, StartState};
+pub use crate::kernels::park::ParkStep;

@@ -106,7 +106,7 @@ pub fn smooth_half_velocity(elements: usize) -> Vec<f64> {
 pub fn matrix_step(
     model: &Model,
     kind: crate::mass::MassKind,
-) -> Result<crate::kernels::matrix_mass::kernel::MatrixCentralDifference, InputError> {
+) -> Result<crate::kernels::matrix_mass::kernel::MatrixMassStep, InputError> {
     let n = model.bar().element_count();
     let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
     let mass = crate::mass::MassOperator::new(model, kind)?;
@@ -119,24 +119,20 @@ pub fn matrix_step(
         kinetic_staggered: 0.0,
     };
     let stiffness = model.stiffness();
-    Ok(
-        crate::kernels::matrix_mass::kernel::MatrixCentralDifference::new(
-            dt, stiffness, mass, &start,
-        ),
-    )
+    Ok(crate::kernels::matrix_mass::kernel::MatrixMassStep::new(
+        dt, stiffness, mass, &start,
+    ))
 }
 
 /// A lumped kernel on [`graded_seed_bar`] of `n` elements at half its stiffest element's step,
 /// from rest with the half-step velocity `sin(0.37 i)` (0 at the fixed end): the lumped kernels'
 /// unit-test bar.
 #[cfg(test)]
-pub(crate) fn graded_test_kernel(
-    n: usize,
-) -> crate::kernels::lumped::kernel::LumpedCentralDifference {
+pub(crate) fn graded_test_kernel(n: usize) -> crate::kernels::lumped::kernel::LumpedStep {
     let model = graded_seed_bar(n).unwrap();
     let dt = 0.5 * model.bar().stiffest_element().1;
     let v: Vec<f64> = (0..=n)
         .map(|i| if i == n { 0.0 } else { (i as f64 * 0.37).sin() })
         .collect();
-    crate::kernels::lumped::kernel::LumpedCentralDifference::new(&model, dt, &vec![0.0; n + 1], &v)
+    crate::kernels::lumped::kernel::LumpedStep::new(&model, dt, &vec![0.0; n + 1], &v)
 }

@@ -18,11 +18,11 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use courant_solver::bench::LumpedCentralDifference;
-use courant_solver::bench::ParkScheme;
+use courant_solver::bench::LumpedStep;
+use courant_solver::bench::ParkStep;
 use courant_solver::bench::graded_seed_bar;
 use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock, TILE};
-use courant_solver::bench::{MatrixCentralDifference, StartState};
+use courant_solver::bench::{MatrixMassStep, StartState};
 use courant_solver::integrator::{InitialState, Integrator};
 use courant_solver::schemes::noh_bathe::NohBatheStepper;
 use courant_solver::{MassKind, MassOperator, ParkOptions, ParkVariant, Start};
@@ -79,7 +79,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
     let forces = [(0usize, -1.0f64)];
 
     let v_half = vec![0.0; n + 1];
-    let mut lumped = LumpedCentralDifference::new(&model, 0.5 * element_dt, &v_half, &v_half);
+    let mut lumped = LumpedStep::new(&model, 0.5 * element_dt, &v_half, &v_half);
     assert_eq!(
         allocations_during(200, || {
             std::hint::black_box(lumped.step_with_energy(&forces));
@@ -100,7 +100,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
     );
     let wide = graded_seed_bar(6 * TILE).unwrap();
     let zeros = vec![0.0; 6 * TILE + 1];
-    let mut lumped = LumpedCentralDifference::new(&wide, 0.5 * element_dt, &zeros, &zeros);
+    let mut lumped = LumpedStep::new(&wide, 0.5 * element_dt, &zeros, &zeros);
     lumped.set_threads(2);
     lumped.advance_block::<true>(&mut block, MAX_BLOCK_STEPS);
     let per_block = allocations_during(5, || {
@@ -146,7 +146,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
             "{}: windows on the long bar only",
             kind.label()
         );
-        let mut kernel = MatrixCentralDifference::new(dt, model.stiffness(), operator, &start);
+        let mut kernel = MatrixMassStep::new(dt, model.stiffness(), operator, &start);
         assert_eq!(
             allocations_during(200, || {
                 std::hint::black_box(kernel.step_with_energy(&forces));
@@ -175,7 +175,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
                 ..ParkOptions::default()
             };
             let dt = 0.5 * element_dt;
-            let mut park = ParkScheme::new(&model, dt, options).unwrap();
+            let mut park = ParkStep::new(&model, dt, options).unwrap();
             park.start(&model);
             let mut t = 0.0;
             assert_eq!(

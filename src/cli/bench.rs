@@ -9,7 +9,7 @@
 //!   `benches/c_reference/cd_step.c` (compiled into the binary as text, built here with `$CC`,
 //!   default `gcc`, and `$CFLAGS`, default `-O3 -march=native`: the flags of
 //!   `benches/c_reference/run.sh`), which prints its own medians: one step per sweep;
-//! - `kernel_ns`: `LumpedCentralDifference::step`, one step per sweep, on the same graded bar
+//! - `kernel_ns`: `LumpedStep::step`, one step per sweep, on the same graded bar
 //!   and start state (`fixtures::graded_seed_bar`, Co 0.5, `fixtures::smooth_half_velocity`,
 //!   F = 1 on node 0); `kernel_energy_ns`: `step_with_energy`;
 //! - `blocked_ns`, `blocked_energy_ns`: `advance_block` (temporal blocking: blocks of 1024
@@ -34,7 +34,7 @@
 use crate::io::atomic::write_file_atomically;
 use crate::results::table::{Precision, Table};
 use crate::run::threads;
-use courant_solver::bench::LumpedCentralDifference;
+use courant_solver::bench::LumpedStep;
 use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock};
 use courant_solver::bench::{graded_seed_bar, smooth_half_velocity};
 use courant_solver::integrator::OutputRequest;
@@ -272,8 +272,7 @@ fn median(mut times: Vec<f64>) -> f64 {
 fn time_kernel(model: &Model, options: &BenchOptions, mode: KernelMode) -> Result<f64, String> {
     let n = model.bar().element_count();
     let dt = 0.5 * model.bar().stiffest_element().1;
-    let mut kernel =
-        LumpedCentralDifference::new(model, dt, &vec![0.0; n + 1], &smooth_half_velocity(n));
+    let mut kernel = LumpedStep::new(model, dt, &vec![0.0; n + 1], &smooth_half_velocity(n));
     kernel.set_threads(1);
     let forces = [(0usize, 1.0f64)];
     let mut block = StepBlock::new(&[0], &[], &[]);
@@ -283,7 +282,7 @@ fn time_kernel(model: &Model, options: &BenchOptions, mode: KernelMode) -> Resul
         KernelMode::Blocked | KernelMode::BlockedWithEnergy => block_steps_for(n, options),
     };
     // Blocks of up to MAX_BLOCK_STEPS steps adding up to `steps`.
-    let mut run = |kernel: &mut LumpedCentralDifference, steps: usize| match mode {
+    let mut run = |kernel: &mut LumpedStep, steps: usize| match mode {
         KernelMode::Step => (0..steps).for_each(|_| kernel.step(black_box(&forces))),
         KernelMode::StepWithEnergy => (0..steps).for_each(|_| {
             black_box(kernel.step_with_energy(black_box(&forces)));

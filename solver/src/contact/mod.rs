@@ -50,7 +50,7 @@
 //! # The level update (all schemes)
 //!
 //! The bulk is the project's lumped central difference in half-step form
-//! ([`crate::kernels::lumped::kernel::LumpedCentralDifference`], methods.md §2): from `u^n`, `v^{n-1/2}`,
+//! ([`crate::kernels::lumped::kernel::LumpedStep`], methods.md §2): from `u^n`, `v^{n-1/2}`,
 //!
 //! ```text
 //!   u^n = u^{n-1} + dt v^{n-1/2},   a^n = M^-1 (F^n - K u^n + N J^n/dt),   v^{n+1/2} = v^{n-1/2} + dt a^n,

@@ -8,7 +8,7 @@ use super::problem::ContactProblem;
 use super::scheme::{ContactScheme, LevelInput, LevelUpdate, level_update};
 use crate::error::InputError;
 use crate::integrator::Integrator;
-use crate::kernels::lumped::kernel::LumpedCentralDifference;
+use crate::kernels::lumped::kernel::LumpedStep;
 use crate::model::Model;
 use crate::schemes::central_difference::LumpedStepper;
 
@@ -147,7 +147,7 @@ impl<'a> ContactStepper<'a> {
                     .map(|(m, v)| m * v * v)
                     .sum::<f64>();
             strain += model.strain_energy(u0);
-            kernels.push(LumpedStepper::from_kernel(LumpedCentralDifference::new(
+            kernels.push(LumpedStepper::from_kernel(LumpedStep::new(
                 model, dt, u0, &v_half,
             )));
         }

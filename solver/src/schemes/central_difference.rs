@@ -15,9 +15,9 @@ use crate::integrator::{
     time_loop,
 };
 use crate::kernels::energy::StepEnergy;
-use crate::kernels::lumped::kernel::LumpedCentralDifference;
+use crate::kernels::lumped::kernel::LumpedStep;
 use crate::kernels::lumped::tiled::StepBlock;
-use crate::kernels::matrix_mass::kernel::{MatrixCentralDifference, StartState};
+use crate::kernels::matrix_mass::kernel::{MatrixMassStep, StartState};
 use crate::mass::{MassKind, MassOperator};
 use crate::model::Model;
 use crate::output::RunOutput;
@@ -129,7 +129,7 @@ pub trait BlockKernel: CentralDifferenceKernel {
     fn probed_acceleration(&self, model: &Model, i: usize, t: f64, u: [f64; 3]) -> f64;
 }
 
-impl CentralDifferenceKernel for LumpedCentralDifference {
+impl CentralDifferenceKernel for LumpedStep {
     fn build(state: InitialState<'_>, half_step_velocity: Vec<f64>, _: f64) -> Self {
         let mut kernel = Self::with_half_step_velocity(
             state.model,
@@ -159,7 +159,7 @@ impl CentralDifferenceKernel for LumpedCentralDifference {
     }
 }
 
-impl BlockKernel for LumpedCentralDifference {
+impl BlockKernel for LumpedStep {
     fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
         self.advance_block::<true>(block, steps);
     }
@@ -169,7 +169,7 @@ impl BlockKernel for LumpedCentralDifference {
     }
 }
 
-impl CentralDifferenceKernel for MatrixCentralDifference {
+impl CentralDifferenceKernel for MatrixMassStep {
     fn build(state: InitialState<'_>, half_step_velocity: Vec<f64>, staggered0: f64) -> Self {
         let start = StartState {
             displacement: state.displacement,
@@ -211,10 +211,10 @@ pub struct CentralDifferenceStepper<K> {
 }
 
 /// Central difference with the lumped mass: the fused kernel.
-pub type LumpedStepper = CentralDifferenceStepper<LumpedCentralDifference>;
+pub type LumpedStepper = CentralDifferenceStepper<LumpedStep>;
 
 /// Central difference with a consistent, averaged or reciprocal mass.
-pub type MatrixStepper = CentralDifferenceStepper<MatrixCentralDifference>;
+pub type MatrixStepper = CentralDifferenceStepper<MatrixMassStep>;
 
 impl<K: CentralDifferenceKernel> CentralDifferenceStepper<K> {
     /// The stepper around a kernel already started (the contact schemes start it with their

@@ -6,6 +6,11 @@
 //! scheme's public types. Schemes know the interface, never the reverse, and never each other
 //! (Park's start reuses central difference's `half_step_start`, the one exception).
 //!
+//! Names: a scheme's `Scheme` (its parameters, what the registry builds) is `XxxScheme`, its
+//! `Integrator` (what the time loop drives) `XxxStepper`, and the arithmetic of its step, where
+//! it is a type of its own in [`crate::kernels`], `XxxStep` (`LumpedStep`, `MatrixMassStep`,
+//! `ParkStep`).
+//!
 //! Adding a scheme: one file here (its `Integrator`, its `Scheme` and its `SchemeEntry`, as
 //! `noh_bathe.rs`), its `pub mod` line and its line in [`REGISTRY`]. Nothing else changes: every
 //! scene may name it, with the parameters its entry declares.

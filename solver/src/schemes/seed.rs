@@ -3,7 +3,7 @@
 //! scheme is the registry's `cd` or a Park entry: it runs through the same interface and loop.
 
 use super::central_difference::CentralDifferenceScheme;
-use super::park::Park;
+use super::park::ParkScheme;
 use crate::analysis::stability::CriticalStep;
 use crate::error::RunError;
 use crate::integrator::{Integration, OutputRequest, Scheme, SchemeLimit, StabilityPolicy, Start};
@@ -46,7 +46,7 @@ impl CentralDifference {
     pub fn integration(&self) -> Integration {
         let scheme: Arc<dyn Scheme> = match self.park {
             None => Arc::new(CentralDifferenceScheme),
-            Some(options) => Arc::new(Park { options }),
+            Some(options) => Arc::new(ParkScheme { options }),
         };
         Integration {
             dt: self.dt,

@@ -61,7 +61,7 @@ impl Lanes {
 
 /// Lumped-mass central difference on a ghost-padded node layout.
 #[derive(Debug, Clone)]
-pub struct LumpedCentralDifference {
+pub struct LumpedStep {
     pub(crate) dt: f64,
     /// `k[j]`: stiffness between padded nodes j and j+1 (0 for the ghost links); length N+2.
     pub(crate) k: Vec<f64>,
@@ -79,7 +79,7 @@ pub struct LumpedCentralDifference {
     pub(crate) threads: usize,
 }
 
-impl LumpedCentralDifference {
+impl LumpedStep {
     /// Set up the operators of `model` for step `dt`, with state `u = u^0` and
     /// `v = v^{1/2}` supplied by the caller (see [`crate::integrator::Start`]).
     pub fn new(model: &Model, dt: f64, u0: &[f64], v_half: &[f64]) -> Self {
@@ -442,10 +442,7 @@ mod tests {
     /// The step as two whole passes (all `u`, then every `v` in order, node `i` of a segment
     /// between loaded nodes adding to lane `(i - start) % 8`, a loaded node to lane 0): the
     /// unblocked form of the step.
-    fn two_pass_reference(
-        kernel: &mut LumpedCentralDifference,
-        forces: &[(usize, f64)],
-    ) -> StepEnergy {
+    fn two_pass_reference(kernel: &mut LumpedStep, forces: &[(usize, f64)]) -> StepEnergy {
         let k = &kernel.k;
         for (u, v) in kernel.u.iter_mut().zip(&kernel.v) {
             *u += kernel.dt * v;

@@ -21,7 +21,7 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Mutex, PoisonError};
 
 use crate::kernels::energy::StepEnergy;
-use crate::kernels::lumped::kernel::{Lanes, LumpedCentralDifference};
+use crate::kernels::lumped::kernel::{Lanes, LumpedStep};
 use crate::kernels::lumped::tiled::{
     BarView, DEPTH, MAX_BLOCK_STEPS, Plan, StepBlock, TILE, Worker, tile, tile_count,
 };
@@ -76,7 +76,7 @@ fn wait_for(counter: &AtomicUsize, value: usize, failed: &AtomicBool) {
     }
 }
 
-impl LumpedCentralDifference {
+impl LumpedStep {
     /// Advance `steps` steps (1..=[`MAX_BLOCK_STEPS`]) with the loads in `block.forces`,
     /// recording the probes and (with `ENERGY`) the energies of every step, on
     /// [`Self::threads`] threads: bit-identical to `steps` calls of [`Self::step`] /

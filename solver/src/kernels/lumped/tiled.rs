@@ -24,7 +24,7 @@
 //! `(j - a) % 8` as in the one-step kernel (lanes rotated where a sweep starts mid-segment).
 //!
 //! **Threads** (`pipeline.rs`,
-//! [`crate::kernels::lumped::kernel::LumpedCentralDifference::advance_block`]): the tiles are cut into one
+//! [`crate::kernels::lumped::kernel::LumpedStep::advance_block`]): the tiles are cut into one
 //! contiguous region per thread. Region `q` runs sub-block `b` once region `q - 1` has finished
 //! it (it continues that region's lanes and edge slots) and once region `q + 1` has finished the
 //! first tile of sub-block `b - 1` (whose nodes it overwrites): a pipeline, the same operations

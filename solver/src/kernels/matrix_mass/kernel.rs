@@ -2,7 +2,7 @@
 //! solve, in overlapping windows for long bars ([`crate::mass::windows`]) and with the global
 //! partitioned factor otherwise ([`crate::mass::partitioned_ldl`]); RMM: a tridiagonal product with
 //! the assembled `M^-1`, no solve), O(N) per step, no dense matrix, no allocation; the passes
-//! run in cache blocks ([`MatrixCentralDifference::step_with_energy`]).
+//! run in cache blocks ([`MatrixMassStep::step_with_energy`]).
 //!
 //! ```text
 //!   u^{n+1}   = u^n + dt v^{n+1/2}
@@ -18,7 +18,7 @@
 //!   T^{n+1}  = T*^{n+1} + dt^2/8 a^{n+1} . r^{n+1}           (full-step kinetic energy)
 //! ```
 //!
-//! and, at sampled steps, `T*` from `M` itself ([`MatrixCentralDifference::staggered_kinetic_from_mass`]),
+//! and, at sampled steps, `T*` from `M` itself ([`MatrixMassStep::staggered_kinetic_from_mass`]),
 //! which checks the mass operator against the update.
 //!
 //! What a step streams (8-byte words per node): every mass reads and writes `u`, `v` and the
@@ -58,7 +58,7 @@ pub struct StartState<'a> {
     pub kinetic_staggered: f64,
 }
 
-/// Where `u`, `v` and `r^n` are in [`MatrixCentralDifference`]'s state (the padded
+/// Where `u`, `v` and `r^n` are in [`MatrixMassStep`]'s state (the padded
 /// stiffnesses are the fourth array).
 const U: usize = 0;
 const V: usize = 1;
@@ -75,7 +75,7 @@ const PLACEMENT: [usize; 4] = [2624, 1216, 3200, 384];
 
 /// Central difference with a tridiagonal mass or inverse mass.
 #[derive(Debug, Clone)]
-pub struct MatrixCentralDifference {
+pub struct MatrixMassStep {
     dt: f64,
     /// The arrays every step streams, placed apart in their pages ([`PlacedArrays`]): `u`, `v`,
     /// `r^n` (the residual of the last step) and the element stiffnesses padded with a zero at
@@ -97,7 +97,7 @@ pub struct MatrixCentralDifference {
     avx2: bool,
 }
 
-impl MatrixCentralDifference {
+impl MatrixMassStep {
     /// Set up with element stiffnesses, the mass operator, `u^0`, `v^{1/2}`, `a^0`, the residual
     /// `r^0 = F^0 - K u^0` and the staggered kinetic energy `1/2 v^{-1/2} M v^{1/2}`. With the
     /// reciprocal mass or a windowed solve `a^0` is not kept: [`Self::acceleration_at`] forms
@@ -415,7 +415,7 @@ mod tests {
     use crate::{Support, Supports};
 
     /// The graded seed bar of `n` elements with the given supports.
-    fn matrix_kernel(n: usize, kind: MassKind, supports: Supports) -> MatrixCentralDifference {
+    fn matrix_kernel(n: usize, kind: MassKind, supports: Supports) -> MatrixMassStep {
         let bar = crate::fixtures::graded_bar(n).unwrap();
         crate::fixtures::matrix_step(&crate::Model::unloaded(bar, supports), kind).unwrap()
     }

@@ -24,7 +24,7 @@ struct Lanes {
 }
 
 /// The state and the constants of the folded step: what one step reads and writes. The
-/// constants come from [`ParkScheme`](super::ParkScheme)'s set-up, the load corrections of each
+/// constants come from [`ParkStep`](super::ParkStep)'s set-up, the load corrections of each
 /// step from its loads; the sweep knows neither the model nor the options.
 #[derive(Debug, Clone)]
 pub(super) struct FoldedStep {

@@ -6,7 +6,7 @@
 //! ([`StepEnergy`](crate::kernels::energy::StepEnergy)). It must not know the run loop, its outputs or the
 //! stability policy (the shared time loop drives it through [`crate::schemes::park`]), nor any I/O.
 //!
-//! Files: `options` (what the user chooses), `scheme` ([`ParkScheme`]: the per-element constants
+//! Files: `options` (what the user chooses), `step` ([`ParkStep`]: the per-element constants
 //! from the model, the loads, the AVX2 dispatch), `folded` (the folded step as one blocked sweep).
 //!
 //! Per step `n -> n+1` with the global `dt`; element `e` has its own critical step
@@ -32,7 +32,7 @@
 //! element problems see the same acceleration as the assembled one under a uniform state.
 //! "Without local stepping" uses one common `dt_e` (the stiffest element's) for every element.
 //!
-//! # Folded form (what [`ParkScheme::step`] computes)
+//! # Folded form (what [`ParkStep::step`] computes)
 //!
 //! Steps 1-4 are linear in the state, so they are evaluated in an equivalent folded form (the
 //! same mathematics, reassociated: results agree with the element-by-element form to round-off).
@@ -61,4 +61,4 @@ mod options;
 mod step;
 
 pub use options::{ParkOptions, ParkVariant};
-pub use step::ParkScheme;
+pub use step::ParkStep;

@@ -1,8 +1,11 @@
-//! [`ParkScheme`]: Park's scheme on a lumped-mass bar. The set-up turns the model, `dt` and
-//! the options into the constants of the folded form (module docs of [`crate::kernels::park`]): `alpha_e`,
-//! `beta1`, `beta2`, `q_e`, `A_i` and the loads' shares; each step corrects the loaded nodes and
-//! runs the folded sweep ([`super::folded`]). As in the lumped CD kernel ([`crate::kernels::lumped::kernel`]), the step runs an
-//! AVX2-compiled copy of the same code where the CPU has AVX2 (bit-identical results).
+//! [`ParkStep`]: the arithmetic of Park's step on a lumped-mass bar (its stepper, what the time
+//! loop drives, is `schemes::park::ParkStepper`; its scheme, with the options, `ParkScheme`).
+//! The set-up turns the model, `dt` and the options into the constants of the folded form
+//! (module docs of [`crate::kernels::park`]): `alpha_e`, `beta1`, `beta2`, `q_e`, `A_i` and the
+//! loads' shares; each step corrects the loaded nodes and runs the folded sweep
+//! ([`super::folded`]). As in the lumped CD kernel ([`crate::kernels::lumped::kernel`]), the
+//! step runs an AVX2-compiled copy of the same code where the CPU has AVX2 (bit-identical
+//! results).
 
 use super::folded::FoldedStep;
 use super::options::{ParkOptions, ParkVariant};
@@ -21,9 +24,9 @@ struct ElementLoad {
     inverse_half_mass: f64,
 }
 
-/// Park's scheme on a lumped-mass bar.
+/// The arithmetic of Park's step on a lumped-mass bar: its constants and state.
 #[derive(Debug, Clone)]
-pub struct ParkScheme {
+pub struct ParkStep {
     options: ParkOptions,
     /// Per-element constants of the load correction.
     element_loads: Vec<ElementLoad>,
@@ -38,14 +41,14 @@ pub struct ParkScheme {
     folded: FoldedStep,
 }
 
-impl ParkScheme {
+impl ParkStep {
     /// Set up for `model` with step `dt`; `alpha_e = dt/dt_e > 1` in any element is refused
     /// (the scheme is unstable there), naming the element.
     pub fn new(model: &Model, dt: f64, options: ParkOptions) -> Result<Self, InputError> {
         Self::build(model, dt, options, false)
     }
 
-    /// As [`ParkScheme::new`], but `alpha_e = dt/dt_e > 1` is run, not refused: every element
+    /// As [`ParkStep::new`], but `alpha_e = dt/dt_e > 1` is run, not refused: every element
     /// steps with its true `alpha_e` (no clamping to 1) in `beta1`, `beta2`. Above `alpha = 1`
     /// the spectral radius exceeds 1 (methods.md §6): this is for studies of the limit, whose
     /// runs rely on the divergence guard (`StabilityPolicy::allow_unstable`).
@@ -283,11 +286,11 @@ mod tests {
     use crate::fixtures::graded_seed_bar;
 
     /// The unfolded step, element by element as in steps 1-4 of the module doc of [`crate::kernels::park`].
-    /// `clamp`: alpha limited to 1 (as [`ParkScheme::new`] does), else the true alpha (as
-    /// [`ParkScheme::allowing_unstable`]).
+    /// `clamp`: alpha limited to 1 (as [`ParkStep::new`] does), else the true alpha (as
+    /// [`ParkStep::allowing_unstable`]).
     fn reference_step(
         model: &Model,
-        scheme: &ParkScheme,
+        scheme: &ParkStep,
         u: &mut Vec<f64>,
         v: &mut [f64],
         a: &mut [f64],
@@ -387,7 +390,7 @@ mod tests {
                     variant,
                     local_stepping,
                 };
-                let mut scheme = ParkScheme::new(&model, dt, options).unwrap();
+                let mut scheme = ParkStep::new(&model, dt, options).unwrap();
                 let mut portable = scheme.clone();
                 portable.avx2 = false;
                 scheme.start(&model);
@@ -437,8 +440,8 @@ mod tests {
     }
 
     /// Source of truth: the element-by-element formulas of the module doc with the true
-    /// `alpha_e = dt/dt_e`. Proves: [`ParkScheme::allowing_unstable`] runs alpha > 1 without
-    /// clamping (beta2 > 0), where [`ParkScheme::new`] refuses it.
+    /// `alpha_e = dt/dt_e`. Proves: [`ParkStep::allowing_unstable`] runs alpha > 1 without
+    /// clamping (beta2 > 0), where [`ParkStep::new`] refuses it.
     #[test]
     fn allowing_unstable_steps_with_the_true_alpha() {
         let model = graded_seed_bar(103).unwrap();
@@ -448,8 +451,8 @@ mod tests {
                 local_stepping,
                 ..ParkOptions::default()
             };
-            assert!(ParkScheme::new(&model, dt, options).is_err());
-            let mut scheme = ParkScheme::allowing_unstable(&model, dt, options).unwrap();
+            assert!(ParkStep::new(&model, dt, options).is_err());
+            let mut scheme = ParkStep::allowing_unstable(&model, dt, options).unwrap();
             scheme.start(&model);
             let (mut u, mut v, mut a) = (
                 scheme.displacement().to_vec(),
