@@ -106,8 +106,8 @@ fn lumped_cd_step(c: &mut Criterion) {
 /// Temporal blocking: blocks of 1024 lumped steps (`advance_block`: tiles of 1024 nodes,
 /// sub-blocks of 64 steps) on one and on two threads, bare and with the energy sums, per
 /// node-step (throughput `1024 N`). Bit-identical to single steps whatever the thread count
-/// (unit tests of `kernels::lumped::pipeline`); issue 17 target 4: 0.54 ns at N = 1e6 on one core, 1.7x
-/// on two.
+/// (unit tests of `kernels::lumped::pipeline`). Target: 0.54 ns at N = 1e6 on one core, 1.7x on
+/// two (benches/RESULTS.md, "Target 4: both cores, temporal blocking").
 fn lumped_cd_block(c: &mut Criterion) {
     use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock};
     let steps = MAX_BLOCK_STEPS;
@@ -148,8 +148,9 @@ fn lumped_cd_block(c: &mut Criterion) {
 
 /// One run step (with energies, as runs take it) per mass kind on the graded bar, N = 1e3, 1e5, 1e6, at half
 /// of each kind's critical Courant number, and CMM on a bar of graded density too (each window
-/// with its own factors). Targets: issue 3, RMM within 2x of LMM, CMM and AMM
-/// within 3x; issue 17 (target 3), each within 1.5x at N = 1e5 and 1e6 (benches/RESULTS.md).
+/// with its own factors). Targets: RMM within 2x of LMM, CMM and AMM within 3x (when the
+/// matrix masses were added), then each within 1.5x at N = 1e5 and 1e6 (benches/RESULTS.md,
+/// "Target 3: matrix masses against the lumped step").
 fn mass_kind_step(c: &mut Criterion) {
     use courant_solver::MassKind;
     let forces = [(0usize, 1.0f64)];
@@ -235,7 +236,8 @@ fn spectrum_dense(c: &mut Criterion) {
 }
 
 /// One step of Park's scheme (theta = 1/2, with and without local stepping) against the lumped
-/// CD run step on the Fig. 2 graded bar, N = 1e3, 1e5, 1e6, Co = 0.5. Target (issue 4): within 3x of CD.
+/// CD run step on the Fig. 2 graded bar, N = 1e3, 1e5, 1e6, Co = 0.5. Target: within 3x of CD
+/// (a Park step evaluates the internal forces twice).
 fn park_step(c: &mut Criterion) {
     use courant_solver::ParkOptions;
     use courant_solver::bench::ParkStep;
@@ -461,7 +463,7 @@ fn run_loop(c: &mut Criterion) {
     group.finish();
 }
 
-/// The run loop at scale (issue 17, target 1): `Scheme::run` (the shared time loop: the start,
+/// The run loop at scale (benches/RESULTS.md, "Target 1: the run loop against the bare kernel"): `Scheme::run` (the shared time loop: the start,
 /// the steps with the energy balance checked every step, the blow-up guard, the work of the
 /// loads, an energy sample at every step as a scene takes them for runs of up to 10^4 steps
 /// (with `T*` recomputed from the mass at every 64th: `MASS_CHECK_EVERY`), no profiles or

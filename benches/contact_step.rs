@@ -15,7 +15,7 @@
 //! The striker starts in contact (the steppers begin at the impact and the contact lasts
 //! 2 L1/c = 4 N steps). Every timed stretch restarts from a clone of the start state after at
 //! most min(N, 2000) steps (the clone is not timed), so the contact branch is the one timed at every N.
-//! Target (issue 5): contact adds at most 5 % to the step; compare the medians.
+//! Target: contact adds at most 5 % to the step; compare the medians.
 //!
 //! Run:      cargo bench --bench contact_step
 //! Numbers:  target/criterion/contact_step/<name>/<N>/new/estimates.json

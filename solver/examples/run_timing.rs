@@ -1,4 +1,5 @@
-//! Whole runs timed (the harness of benches/RESULTS.md, fifth session): central difference with
+//! Whole runs timed (the harness of benches/RESULTS.md, heading "... the run's start, the mass
+//! check, where the state lives ..."): central difference with
 //! one mass on the graded seed bar of N elements at half its critical Courant number, an energy
 //! sample every step (as scenes take them), through `Integration::run_assembled`; the mass is
 //! assembled outside the timing, the run's start inside, as in criterion's `run_loop_large`.

@@ -1,5 +1,6 @@
 //! The matrix-mass step and the lumped step timed alternately in one process (the harness of
-//! benches/RESULTS.md, fifth session): both on the graded seed bar of N elements at half their
+//! benches/RESULTS.md, heading "... the run's start, the mass check, where the state lives ..."
+//! and later): both on the graded seed bar of N elements at half their
 //! critical Courant numbers, nine repetitions of STEPS/9 steps each, medians in ns per
 //! node-step and their ratio. Alternating in one process puts both under the same machine load;
 //! criterion (`cargo bench --bench cd_step`) remains the reference.

@@ -64,10 +64,39 @@ pub enum InputError {
     /// resolves, e.g. entries whose products overflow).
     #[error(transparent)]
     NoConvergence(#[from] NoConvergence),
+    /// An assembled mass matrix is not positive definite (an AMM or RMM `beta` outside the
+    /// range its element matrices stay definite in, or element masses that cancel).
+    #[error("the {mass} mass matrix is not positive definite")]
+    MassNotPositiveDefinite {
+        /// The mass as outputs label it (`cmm`, `amm(0.5)`, ...).
+        mass: String,
+    },
+    /// A scheme that runs with the lumped mass only was given another.
+    #[error("{scheme} runs with the lumped mass only, not {mass}")]
+    LumpedMassOnly {
+        /// The scheme's name.
+        scheme: String,
+        /// The mass it was given, as outputs label it.
+        mass: String,
+    },
+    /// Critical steps computed for one mass were given for a run with another.
+    #[error("critical steps of the {given} mass given for a run with the {run} mass")]
+    CriticalStepsOfAnotherMass {
+        /// The mass the critical steps belong to.
+        given: String,
+        /// The mass of the run.
+        run: String,
+    },
     /// Anything else, with a sentence that names the field and the rule.
     #[error("{0}")]
     Other(String),
 }
+
+/// A symmetric tridiagonal matrix that is not positive definite: its `L D L^T` factorisation
+/// met a pivot that is not positive (or not finite), so it has no SPD factor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Error)]
+#[error("the matrix is not positive definite")]
+pub struct NotPositiveDefinite;
 
 /// An iterative method stopped at its iteration bound without an answer. Every iterative method
 /// of the solver has such a bound: none can loop forever, whatever its input.

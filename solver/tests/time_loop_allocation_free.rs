@@ -1,6 +1,6 @@
 //! Source of truth: the project's cost rule ("a lumped-mass run stays diagonal and O(N) per step,
-//! with no dense or global matrices in a time loop") and issue 4's "the element loop does no
-//! allocation": every per-step kernel is set up once and then steps without touching the heap.
+//! with no dense or global matrices in a time loop") and its companion, "the element loop does
+//! no allocation": every per-step kernel is set up once and then steps without touching the heap.
 //!
 //! ```text
 //!   new(model, dt)  --allocates-->  [ step  step  step ... ]  --0 allocations-->

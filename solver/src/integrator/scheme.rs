@@ -171,11 +171,10 @@ impl Integration {
     /// [`Self::check_stability`]).
     fn check_step(&self, model: &Model, critical: CriticalStep) -> Result<CriticalStep, RunError> {
         if critical.mass != self.mass {
-            return Err(InputError::Other(format!(
-                "critical steps of the {} mass given for a run with the {} mass",
-                critical.mass.label(),
-                self.mass.label()
-            ))
+            return Err(InputError::CriticalStepsOfAnotherMass {
+                given: critical.mass.label(),
+                run: self.mass.label(),
+            }
             .into());
         }
         if self.stability.allow_unstable {
@@ -267,10 +266,10 @@ pub fn lumped_only(scheme: &str, mass: MassKind) -> Result<(), InputError> {
     if mass == MassKind::Lumped {
         Ok(())
     } else {
-        Err(InputError::Other(format!(
-            "{scheme} runs with the lumped mass only, not {}",
-            mass.label()
-        )))
+        Err(InputError::LumpedMassOnly {
+            scheme: scheme.to_string(),
+            mass: mass.label(),
+        })
     }
 }
 

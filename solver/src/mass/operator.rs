@@ -15,7 +15,7 @@
 //! the stiffness pattern; `beta = 1` gives LMM. Dirichlet nodes: their rows and columns are
 //! deleted (of `M`, or of `M^-1` for RMM).
 
-use crate::error::InputError;
+use crate::error::{InputError, NotPositiveDefinite};
 use crate::mass::banded::{PartitionedLdl, SymmetricBanded, Tridiagonal};
 use crate::mass::windows::{HaloTiles, halo_rows, scaled_spectral_ratio};
 use crate::model::Model;
@@ -178,17 +178,17 @@ fn element_reciprocal(me: f64, beta: f64) -> (f64, f64) {
 
 /// The solve of the SPD tridiagonal `m` (fixed rows decoupled) whose lumped-scaled spectral
 /// ratio is that of `(1 - beta) CMM + beta LMM`: windows where they apply, else the global
-/// factor; `None` when `m` is not positive definite (windows refuse such a matrix, and the
+/// factor; [`NotPositiveDefinite`] when `m` is not (windows refuse such a matrix, and the
 /// global factor then reports it).
 fn tridiagonal_solve(
     m: &Tridiagonal,
     beta: f64,
     fixed_nodes: &[usize],
-) -> Option<TridiagonalSolve> {
+) -> Result<TridiagonalSolve, NotPositiveDefinite> {
     match halo_rows(scaled_spectral_ratio(beta))
         .and_then(|halo| HaloTiles::new(m, halo, fixed_nodes))
     {
-        Some(tiles) => Some(TridiagonalSolve::Windows(tiles)),
+        Some(tiles) => Ok(TridiagonalSolve::Windows(tiles)),
         None => m.factor_spd().map(TridiagonalSolve::Global),
     }
 }
@@ -213,12 +213,8 @@ impl MassOperator {
         let masses = model.bar().element_mass();
         let n = model.bar().node_count();
         let fixed: Vec<bool> = (0..n).map(|i| model.is_fixed(i)).collect();
-        let not_spd = || {
-            InputError::Other(format!(
-                "the {} mass matrix is not positive definite",
-                kind.label()
-            ))
-        };
+        let not_spd =
+            |_: NotPositiveDefinite| InputError::MassNotPositiveDefinite { mass: kind.label() };
         Ok(match kind {
             MassKind::Lumped => {
                 let (mass, inverse) = model.shared_lumped_mass();
@@ -238,7 +234,7 @@ impl MassOperator {
                     .filter(|(_, f)| **f)
                     .for_each(|(i, _)| matrix.decouple(i));
                 let fixed_nodes: Vec<usize> = (0..n).filter(|&i| fixed[i]).collect();
-                let solve = tridiagonal_solve(&matrix, beta, &fixed_nodes).ok_or_else(not_spd)?;
+                let solve = tridiagonal_solve(&matrix, beta, &fixed_nodes).map_err(not_spd)?;
                 MassOperator::Tridiagonal {
                     matrix,
                     solve,
@@ -268,7 +264,7 @@ impl MassOperator {
                     inverse.diag[i] = 0.0;
                 }
                 let fixed_nodes: Vec<usize> = (0..n).filter(|&i| fixed[i]).collect();
-                let c_solve = tridiagonal_solve(&c, beta, &fixed_nodes).ok_or_else(not_spd)?;
+                let c_solve = tridiagonal_solve(&c, beta, &fixed_nodes).map_err(not_spd)?;
                 MassOperator::Reciprocal {
                     inverse,
                     c_solve,

@@ -23,6 +23,7 @@
 //! and the correction skips the rows where a spike is exactly zero. The partition depends only
 //! on `n`, so results are bit-identical run to run.
 
+use crate::error::NotPositiveDefinite;
 use crate::mass::tridiagonal::Tridiagonal;
 
 /// Number of blocks (independent recurrences) for large matrices: enough multiply-adds in
@@ -36,10 +37,12 @@ const INTERFACE: usize = 2 * (BLOCKS - 1);
 const MIN_BLOCK_ROWS: usize = 16;
 
 impl Tridiagonal {
-    /// Factor an SPD tridiagonal matrix for solves, `None` when it is not positive definite.
-    /// See [`PartitionedLdl`].
-    pub fn factor_spd(&self) -> Option<PartitionedLdl> {
-        PartitionedLdl::new(self)
+    /// Factor an SPD tridiagonal matrix for solves. See [`PartitionedLdl`].
+    ///
+    /// # Errors
+    /// [`NotPositiveDefinite`] when a pivot is not positive.
+    pub fn factor_spd(&self) -> Result<PartitionedLdl, NotPositiveDefinite> {
+        PartitionedLdl::new(self).ok_or(NotPositiveDefinite)
     }
 }
 

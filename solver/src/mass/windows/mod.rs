@@ -56,19 +56,22 @@ pub(crate) use group::WINDOWS_PER_GROUP;
 use crate::mass::tridiagonal::Tridiagonal;
 
 /// The longest tile (rows whose solution a window gives). A bar's tiles are as long as
-/// [`tile_rows`] makes them, at most this. Chosen by measurement (benches/RESULTS.md, sixth
-/// session; CMM steps, ns per node-step): tiles of 1024 against 512 took N = 1e6 from 1.06-1.25
-/// to 0.97-1.02 and left N = 1e5 at 0.84-0.86. A group's forward results (`WINDOWS_PER_GROUP (T + 2H)`
-/// values: 105 KB for CMM with twelve windows, 70 KB with eight) do not fit a 48 KB L1 (with
-/// eight windows 512's did), but the longer, fewer interruptions of the residual sweep and the
-/// halo's smaller share (7 % of the rows, 14 % with 512) gain more; 1536-2560 were no faster at
-/// 1e6. With twelve windows (eighth session) 768 and 896 were slower at both sizes, and 1280 as
-/// fast at 1e6 (0.885-0.910 against 0.896-0.917) but slower at 1e5 (0.810 against 0.771-0.778).
+/// [`tile_rows`] makes them, at most this. Chosen by measurement (CMM steps, ns per node-step;
+/// benches/RESULTS.md, heading "... wider windows; where the CMM step's time goes"): tiles of
+/// 1024 against 512 took N = 1e6 from 1.06-1.25 to 0.97-1.02 and left N = 1e5 at 0.84-0.86. A
+/// group's forward results (`WINDOWS_PER_GROUP (T + 2H)` values: 105 KB for CMM with twelve
+/// windows, 70 KB with eight) do not fit a 48 KB L1 (with eight windows 512's did), but the
+/// longer, fewer interruptions of the residual sweep and the halo's smaller share (7 % of the
+/// rows, 14 % with 512) gain more; 1536-2560 were no faster at 1e6. With twelve windows
+/// (heading "... twelve windows per group ...") 768 and 896 were slower at both sizes, and 1280
+/// as fast at 1e6 (0.885-0.910 against 0.896-0.917) but slower at 1e5 (0.810 against
+/// 0.771-0.778).
 pub(crate) const MAX_TILE: usize = 1024;
 
-/// The shortest tile: a matrix shorter than [`WINDOWS_PER_GROUP`] of them keeps the global factor (as fast
-/// there): 4096 rows shared by the windows of one group, rounded up to a multiple of
-/// [`crate::simd::LANES`] (windows pay from 4096 rows; benches/RESULTS.md, fourth session).
+/// The shortest tile: a matrix shorter than [`WINDOWS_PER_GROUP`] of them keeps the global
+/// factor (as fast there): 4096 rows shared by the windows of one group, rounded up to a
+/// multiple of [`crate::simd::LANES`] (windows pay from 4096 rows; benches/RESULTS.md, heading
+/// "... shared window factors, constant RMM blocks, the critical step").
 const MIN_TILE: usize = 4096usize
     .div_ceil(WINDOWS_PER_GROUP)
     .next_multiple_of(crate::simd::LANES);
