@@ -11,18 +11,19 @@
 //! "elem/s" is element-steps per second; ns per node-step = time per step / (N + 1).
 //!
 //! Target: as fast as the tight C loop doing the same arithmetic, `benches/c_reference/cd_step.c`
-//! compiled with `gcc -O3 -march=native` — the team's figure is about 1.6–1.8 ns per node-step
-//! for N <= 1e5 on the 2-core machines. `run.sh` there prints the C loop's own numbers (two-pass,
-//! fused and blocked variants); compare with those, measured on the same machine.
-//! ISA: the kernel selects an AVX2-compiled copy of the step at run time where the CPU has AVX2
-//! (bit-identical results; see `kernels::lumped::kernel`), so a default `cargo bench` is comparable with the C
-//! loop at `-march=native`. `step_with_energy` adds three energy sums, kept in 8 independent
-//! lanes so they vectorise.
+//! compiled with `gcc -O3 -march=native` — the team's figure is about 1.6–1.8 ns per node-step for
+//! N <= 1e5 on the 2-core machines. `run.sh` there prints the C loop's own numbers (two-pass, fused
+//! and blocked variants); compare with those, measured on the same machine. ISA: the kernel selects
+//! an AVX2-compiled copy of the step at run time where the CPU has AVX2 (bit-identical results; see
+//! `kernels::lumped::kernel`), so a default `cargo bench` is comparable with the C loop at
+//! `-march=native`. `step_with_energy` adds three energy sums, kept in 8 independent lanes so they
+//! vectorise.
 //!
 //! Also: `run_loop`, a whole 1000-step run through the public time loop (N = 1e4; lumped CD, CMM,
 //! Park, Noh-Bathe): what the loop adds around the kernels; `noh_bathe_step`, one Noh-Bathe step
-//! (LMM, CMM) beside CD's, both through the `Integrator` interface; `memory_triad`, the STREAM triad at the same sizes (and 4e6), the machine's bandwidth
-//! the report compares each step's model bandwidth with.
+//! (LMM, CMM) beside CD's, both through the `Integrator` interface; `memory_triad`, the STREAM
+//! triad at the same sizes (and 4e6), the machine's bandwidth the report compares each step's model
+//! bandwidth with.
 //!
 //! Run:      cargo bench --bench cd_step
 //!           (one function only: cargo bench --bench cd_step -- 'lumped_cd_step/step/')
@@ -146,10 +147,10 @@ fn lumped_cd_block(c: &mut Criterion) {
     group.finish();
 }
 
-/// One run step (with energies, as runs take it) per mass kind on the graded bar, N = 1e3, 1e5, 1e6, at half
-/// of each kind's critical Courant number, and CMM on a bar of graded density too (each window
-/// with its own factors). Targets: RMM within 2x of LMM, CMM and AMM within 3x (when the
-/// matrix masses were added), then each within 1.5x at N = 1e5 and 1e6 (benches/RESULTS.md,
+/// One run step (with energies, as runs take it) per mass kind on the graded bar, N = 1e3, 1e5,
+/// 1e6, at half of each kind's critical Courant number, and CMM on a bar of graded density too
+/// (each window with its own factors). Targets: RMM within 2x of LMM, CMM and AMM within 3x (when
+/// the matrix masses were added), then each within 1.5x at N = 1e5 and 1e6 (benches/RESULTS.md,
 /// "Target 3: matrix masses against the lumped step").
 fn mass_kind_step(c: &mut Criterion) {
     use courant_solver::MassKind;
@@ -463,16 +464,16 @@ fn run_loop(c: &mut Criterion) {
     group.finish();
 }
 
-/// The run loop at scale (benches/RESULTS.md, "Target 1: the run loop against the bare kernel"): `Scheme::run` (the shared time loop: the start,
-/// the steps with the energy balance checked every step, the blow-up guard, the work of the
-/// loads, an energy sample at every step as a scene takes them for runs of up to 10^4 steps
-/// (with `T*` recomputed from the mass at every 64th: `MASS_CHECK_EVERY`), no profiles or
-/// histories) on the graded bar of
-/// N = 1e5 (1000 steps) and 1e6 (300 steps) elements, for lumped CD (compare with
-/// `lumped_cd_step/step`, the bare kernel), CMM, AMM(1/2), RMM(1/2) (with `mass_kind_step`, their
-/// own step) and Park with local stepping (with `park_step`), each at half its critical Courant
-/// number. The mass is assembled and factored outside the timing (`iter_batched`); the start is
-/// inside. Time per run; ns per node-step = time / (steps (N + 1)).
+/// The run loop at scale (benches/RESULTS.md, "Target 1: the run loop against the bare kernel"):
+/// `Scheme::run` (the shared time loop: the start, the steps with the energy balance checked every
+/// step, the blow-up guard, the work of the loads, an energy sample at every step as a scene takes
+/// them for runs of up to 10^4 steps (with `T*` recomputed from the mass at every 64th:
+/// `MASS_CHECK_EVERY`), no profiles or histories) on the graded bar of N = 1e5 (1000 steps) and 1e6
+/// (300 steps) elements, for lumped CD (compare with `lumped_cd_step/step`, the bare kernel), CMM,
+/// AMM(1/2), RMM(1/2) (with `mass_kind_step`, their own step) and Park with local stepping (with
+/// `park_step`), each at half its critical Courant number. The mass is assembled and factored
+/// outside the timing (`iter_batched`); the start is inside. Time per run; ns per node-step = time
+/// / (steps (N + 1)).
 fn run_loop_large(c: &mut Criterion) {
     use courant_solver::integrator::OutputRequest;
     use courant_solver::{CentralDifference, MassKind, MassOperator, ParkOptions};

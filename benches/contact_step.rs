@@ -4,18 +4,18 @@
 //! beta_s = 0.25e4.
 //!
 //! What it measures (wall time of one step, both bars):
-//! - `baseline`: the two bars' lumped kernels (`kernel::LumpedStep::
-//!   step_with_energy`, one zero nodal force each) from the contact run's start state, with no
+//! - `baseline`: the two bars' lumped kernels (`LumpedStep::step_with_energy`, one zero nodal
+//!   force each) from the contact run's start state, with no
 //!   contact: what a contact-free run of the same bodies costs;
 //! - `predictor_corrector`, `cd_bipenalty`, `lagrange_multiplier`: `contact::ContactStepper::
 //!   step` of each scheme: the same two kernel steps plus the O(1) contact update (a few nodal
 //!   reads, one scalar update, the contact momentum handed to the kernels as a nodal force) and
 //!   the sample it returns.
 //!
-//! The striker starts in contact (the steppers begin at the impact and the contact lasts
-//! 2 L1/c = 4 N steps). Every timed stretch restarts from a clone of the start state after at
-//! most min(N, 2000) steps (the clone is not timed), so the contact branch is the one timed at every N.
-//! Target: contact adds at most 5 % to the step; compare the medians.
+//! The striker starts in contact (the steppers begin at the impact and the contact lasts 2 L1/c = 4
+//! N steps). Every timed stretch restarts from a clone of the start state after at most min(N,
+//! 2000) steps (the clone is not timed), so the contact branch is the one timed at every N. Target:
+//! contact adds at most 5 % to the step; compare the medians.
 //!
 //! Run:      cargo bench --bench contact_step
 //! Numbers:  target/criterion/contact_step/<name>/<N>/new/estimates.json

@@ -1,6 +1,7 @@
 //! Source of truth: the central-difference step itself (seed eqs. 2-4, methods.md §2): a block of
-//! steps (temporal blocking, `kernels::lumped::tiled` / `kernels::lumped::pipeline`) must be the same arithmetic as
-//! the steps one at a time, so the shared time loop must give the same run either way.
+//! steps (temporal blocking, `kernels::lumped::tiled` / `kernels::lumped::pipeline`) must be the
+//! same arithmetic as the steps one at a time, so the shared time loop must give the same run
+//! either way.
 //!
 //! ```text
 //!   allow_unstable = false  ->  blocks of up to 1024 steps  ┐  every profile, history sample,

@@ -1,7 +1,8 @@
 //! The contact time loop's state: the per-body bulk steppers (central difference with the lumped
 //! mass, the registry's `cd` stepper, stepped through the [`Integrator`] interface), their loads
-//! and the O(1) contact update of every level (module docs of [`crate::contact`], "The level update"), with the
-//! energies and momenta a run records. It does not check stability or record anything.
+//! and the O(1) contact update of every level (module docs of [`crate::contact`], "The level
+//! update"), with the energies and momenta a run records. It does not check stability or record
+//! anything.
 
 use super::output::{ContactProfile, ContactSample};
 use super::problem::ContactProblem;
@@ -63,8 +64,8 @@ impl BodyForces {
 }
 
 /// A contact problem being integrated: the per-body lumped kernels plus the O(1) contact update.
-/// [`ContactIntegrator::run`](super::ContactIntegrator::run) drives it; benchmarks and tests may step it directly. It does not
-/// check stability.
+/// [`ContactIntegrator::run`](super::ContactIntegrator::run) drives it; benchmarks and tests may
+/// step it directly. It does not check stability.
 #[derive(Debug, Clone)]
 pub struct ContactStepper<'a> {
     problem: &'a ContactProblem,

@@ -1,14 +1,14 @@
-//! What the time loop needs to take blocks of steps (temporal blocking, [`crate::kernels::lumped::tiled`]):
-//! where the next block ends, and the buffers of a block with the probes that give the loop each
-//! step's loads' displacements and history samples.
+//! What the time loop needs to take blocks of steps (temporal blocking,
+//! [`crate::kernels::lumped::tiled`]): where the next block ends, and the buffers of a block with
+//! the probes that give the loop each step's loads' displacements and history samples.
 
 use super::settings::OutputRequest;
 use crate::kernels::lumped::tiled::{MAX_BLOCK_STEPS, StepBlock};
 use crate::model::Model;
 use crate::output::{HistorySample, RunOutput};
 
-/// A [`BlockStepper::probed_velocity_and_acceleration`](super::contract::BlockStepper): `(v^n,
-/// a^n)` at a node from the three displacements and the half-step velocity a block recorded.
+/// A [`BlockStepper::probed_velocity_and_acceleration`](super::contract::BlockStepper):
+/// `(v^n, a^n)` at a node from the three displacements and the half-step velocity a block recorded.
 pub(super) type Probe<I> = fn(&I, &Model, usize, f64, [f64; 3], f64) -> (f64, f64);
 
 /// The steps of the next block: up to [`MAX_BLOCK_STEPS`], ending at the last step and at the

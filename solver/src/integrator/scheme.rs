@@ -124,9 +124,10 @@ impl Integration {
     }
 
     /// The critical steps of the mass, after refusing `dt` above the scheme's limit
-    /// ([`Scheme::limit`]) with the relative allowance [`crate::analysis::time_step::ROUNDING_SLACK`] of
-    /// the time plan (so that Co = 1 on a free-free uniform bar, where `dt = dt_crit`, is
-    /// accepted after the plan's rounding), unless unstable runs are allowed.
+    /// ([`Scheme::limit`]) with the relative allowance
+    /// [`crate::analysis::time_step::ROUNDING_SLACK`] of the time plan (so that Co = 1 on a
+    /// free-free uniform bar, where `dt = dt_crit`, is accepted after the plan's rounding), unless
+    /// unstable runs are allowed.
     ///
     /// # Errors
     /// [`RunError::Input`] for settings the scheme does not take, [`RunError::Unstable`] above
@@ -235,9 +236,9 @@ impl Integration {
         self.run_assembled(model, steps, request, operator)
     }
 
-    /// The time loop of [`Self::run`] with the mass already assembled (`MassOperator::new(model,
-    /// self.mass)`) and the request and step already checked: what the benchmarks time, the
-    /// assembly and the critical step left out.
+    /// The time loop of [`Self::run`] with the mass already assembled
+    /// (`MassOperator::new(model, self.mass)`) and the request and step already checked: what the
+    /// benchmarks time, the assembly and the critical step left out.
     ///
     /// # Errors
     /// As [`Self::run`]'s time loop.

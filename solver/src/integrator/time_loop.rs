@@ -18,18 +18,18 @@
 //! dissipative scheme its drift is the energy the scheme removed.
 //!
 //! **Blocks of steps.** A stepper with temporal blocking ([`BlockStepper`], run by
-//! [`run_in_blocks`]: lumped central difference, [`crate::kernels::lumped::tiled`]) takes up to [`crate::kernels::lumped::tiled::MAX_BLOCK_STEPS`] steps per
-//! call when the run must stay stable (`allow_unstable` off); a block ends at the last step and
-//! at every profile step. The stepper returns every step's energies and the displacements of the
-//! loaded nodes and of each history node and its neighbours (with its half-step velocity), so
-//! the loop does exactly the per-step work above on exactly the same numbers: the work, the
-//! balance, the guard, the energy samples and the histories of every step are bit-identical to
-//! single steps. If the guard trips inside a block (a stable run can trip it: the guard's ratio
-//! is the scene's `blowup_energy_ratio`, any positive value), the step, time and energy ratio
-//! are the step's, but the state is past it; the run is then repeated by single steps (it is
-//! deterministic: the same trip, the same partial output), so the error names the node of
-//! largest `|u|` at its own step. That second run is the only cost, and only on failure. A run
-//! allowed to be unstable steps singly from the start.
+//! [`run_in_blocks`]: lumped central difference, [`crate::kernels::lumped::tiled`]) takes up to
+//! [`crate::kernels::lumped::tiled::MAX_BLOCK_STEPS`] steps per call when the run must stay stable
+//! (`allow_unstable` off); a block ends at the last step and at every profile step. The stepper
+//! returns every step's energies and the displacements of the loaded nodes and of each history node
+//! and its neighbours (with its half-step velocity), so the loop does exactly the per-step work
+//! above on exactly the same numbers: the work, the balance, the guard, the energy samples and the
+//! histories of every step are bit-identical to single steps. If the guard trips inside a block (a
+//! stable run can trip it: the guard's ratio is the scene's `blowup_energy_ratio`, any positive
+//! value), the step, time and energy ratio are the step's, but the state is past it; the run is
+//! then repeated by single steps (it is deterministic: the same trip, the same partial output), so
+//! the error names the node of largest `|u|` at its own step. That second run is the only cost, and
+//! only on failure. A run allowed to be unstable steps singly from the start.
 
 use super::blocks::{BlockBuffers, Probe, block_depth};
 use super::contract::{BlockStepper, InitialState, Integrator};
@@ -110,10 +110,10 @@ fn run_with<I: Integrator>(
 }
 
 /// Whether a run steps in blocks of steps: its stepper has them (`stepper_has_blocks`: a
-/// [`BlockStepper`], as lumped central difference's) and the run must stay stable (an allowed unstable run
-/// steps singly, so a divergence names the node of its own step). The one statement of the
-/// rule: the loop, and [`crate::integrator::Scheme::threads`] (blocks are what run on several
-/// threads), ask it.
+/// [`BlockStepper`], as lumped central difference's) and the run must stay stable (an allowed
+/// unstable run steps singly, so a divergence names the node of its own step). The one statement of
+/// the rule: the loop, and [`crate::integrator::Scheme::takes_blocks`] (blocks are what run on
+/// several threads), ask it.
 pub fn takes_blocks(stepper_has_blocks: bool, allow_unstable: bool) -> bool {
     stepper_has_blocks && !allow_unstable
 }

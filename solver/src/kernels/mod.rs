@@ -2,8 +2,8 @@
 //! arrays, with no knowledge of the time loop, its outputs or the stability policy.
 //!
 //! **Enters:** a [`Model`](crate::model::Model), the step `dt`, a start state, the loads of each
-//! step. **Leaves:** the new state and each step's energies ([`StepEnergy`](energy::StepEnergy)). The schemes in
-//! [`crate::schemes`] wrap these kernels into steppers the shared time loop drives.
+//! step. **Leaves:** the new state and each step's energies ([`StepEnergy`](energy::StepEnergy)).
+//! The schemes in [`crate::schemes`] wrap these kernels into steppers the shared time loop drives.
 //!
 //! Folders: `lumped/` (central difference with the lumped mass: the cache-blocked step, its
 //! AVX2 energy sweep, temporal blocking in tiles and the multi-threaded pipeline of blocks),

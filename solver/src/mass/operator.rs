@@ -74,7 +74,8 @@ impl MassKind {
     /// `2 / max_kh Omega(kh)` (methods.md §5): LMM 1, CMM `1/sqrt(3)`, AMM `sqrt((1 + 2 beta)/3)`,
     /// RMM `sqrt((1 + 2 beta)/3)` for `beta <= 5/2`. For RMM with `beta > 5/2`,
     /// `gamma = 2(1 - beta)/(1 + 2 beta) < -1/2` and `Omega = 2 s sqrt(1 + gamma s^2)` peaks inside
-    /// the band, at `s^2 = -1/(2 gamma)`, with `Omega_max = 1/sqrt(-gamma)`: Co_crit = `2 sqrt(-gamma)`.
+    /// the band, at `s^2 = -1/(2 gamma)`, with `Omega_max = 1/sqrt(-gamma)`: Co_crit =
+    /// `2 sqrt(-gamma)`.
     pub fn critical_courant(&self) -> f64 {
         match self {
             MassKind::Reciprocal { beta } => {
@@ -189,7 +190,7 @@ fn tridiagonal_solve(
         .and_then(|halo| HaloTiles::new(m, halo, fixed_nodes))
     {
         Some(tiles) => Ok(TridiagonalSolve::Windows(tiles)),
-        None => m.factor_spd().map(TridiagonalSolve::Global),
+        None => PartitionedLdl::new(m).map(TridiagonalSolve::Global),
     }
 }
 

@@ -36,16 +36,6 @@ const INTERFACE: usize = 2 * (BLOCKS - 1);
 /// Smallest block worth partitioning for; smaller matrices use one block (plain LDL^T).
 const MIN_BLOCK_ROWS: usize = 16;
 
-impl Tridiagonal {
-    /// Factor an SPD tridiagonal matrix for solves. See [`PartitionedLdl`].
-    ///
-    /// # Errors
-    /// [`NotPositiveDefinite`] when a pivot is not positive.
-    pub fn factor_spd(&self) -> Result<PartitionedLdl, NotPositiveDefinite> {
-        PartitionedLdl::new(self).ok_or(NotPositiveDefinite)
-    }
-}
-
 /// Partitioned `L D L^T` factor of an SPD tridiagonal matrix (see the module docs).
 #[derive(Debug, Clone, PartialEq)]
 pub struct PartitionedLdl {
@@ -68,9 +58,17 @@ pub struct PartitionedLdl {
 }
 
 impl PartitionedLdl {
-    /// Factor `a`; `None` when it is not positive definite (a pivot of its plain `L D L^T`
-    /// factorisation is not positive).
-    pub fn new(a: &Tridiagonal) -> Option<Self> {
+    /// Factor the SPD tridiagonal matrix `a` for solves.
+    ///
+    /// # Errors
+    /// [`NotPositiveDefinite`] when a pivot of its plain `L D L^T` factorisation is not
+    /// positive.
+    pub fn new(a: &Tridiagonal) -> Result<Self, NotPositiveDefinite> {
+        Self::factor(a).ok_or(NotPositiveDefinite)
+    }
+
+    /// [`Self::new`], `None` for a matrix that is not positive definite.
+    fn factor(a: &Tridiagonal) -> Option<Self> {
         let n = a.diag.len();
         // Positive definite iff every pivot of the plain factorisation is positive; the blocks'
         // pivots alone do not show it (each block may be SPD while the whole is not).
@@ -469,12 +467,12 @@ mod tests {
             diag: vec![1.0, 1.0],
             off: vec![2.0],
         };
-        assert!(PartitionedLdl::new(&indefinite).is_none());
+        assert!(PartitionedLdl::new(&indefinite).is_err());
         // Every block SPD, the whole not: the plain pivots catch it.
         let n = 256;
         let mut a = matrix(n, 1.0);
         a.off[n / BLOCKS - 1] = 1e3;
-        assert!(PartitionedLdl::new(&a).is_none());
+        assert!(PartitionedLdl::new(&a).is_err());
     }
 
     #[test]

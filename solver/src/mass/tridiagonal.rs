@@ -1,6 +1,7 @@
 //! The symmetric tridiagonal matrix of the 1D mass operators (consistent, averaged and
 //! reciprocal masses): storage, the matrix-vector product and the decoupling of a fixed row. Its
-//! SPD factorisation, [`Tridiagonal::factor_spd`], is [`crate::mass::partitioned_ldl`]'s.
+//! SPD factor, [`crate::mass::partitioned_ldl::PartitionedLdl`], is built from it in its own
+//! module (the matrix sits below its factor).
 
 /// Symmetric tridiagonal matrix: `diag[i]`, `off[i] = A[i][i+1] = A[i+1][i]`.
 #[derive(Debug, Clone, PartialEq)]

@@ -1,7 +1,8 @@
 //! Loads: nodal forces and end tractions, each scaled by a time function.
 //!
 //! A traction `sigma(t)` on an end becomes a nodal force on the end node with the outward normal:
-//! `F = -sigma A` at the left end (normal `-x`) and `F = +sigma A` at the right end (methods.md §2).
+//! `F = -sigma A` at the left end (normal `-x`) and `F = +sigma A` at the right end (methods.md
+//! §2).
 
 use crate::error::InputError;
 

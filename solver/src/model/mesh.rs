@@ -81,12 +81,12 @@ impl Mesh {
         Self::from_nodes(nodes)
     }
 
-    /// Equal-transit-time mesh on `[0, length]`: nodes at equal travel times
-    /// `tau(x_i) = i T/N`, `tau(x) = int_0^x slowness`, so every element takes the same time
-    /// `T/N` for a wave to cross (methods.md §4). `breaks` are the positions where the slowness
-    /// jumps (layer interfaces): the travel time is integrated piece by piece between them with
-    /// 3-point Gauss-Legendre on max(8192, 4N) panels (exact for piecewise-constant layers,
-    /// sixth order for smooth ones) and inverted by bisection. Returns the mesh and the element transit `T/N`.
+    /// Equal-transit-time mesh on `[0, length]`: nodes at equal travel times `tau(x_i) = i T/N`,
+    /// `tau(x) = int_0^x slowness`, so every element takes the same time `T/N` for a wave to cross
+    /// (methods.md §4). `breaks` are the positions where the slowness jumps (layer interfaces): the
+    /// travel time is integrated piece by piece between them with 3-point Gauss-Legendre on
+    /// max(8192, 4N) panels (exact for piecewise-constant layers, sixth order for smooth ones) and
+    /// inverted by bisection. Returns the mesh and the element transit `T/N`.
     pub fn equal_transit(
         length: f64,
         elements: usize,

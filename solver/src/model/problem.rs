@@ -306,7 +306,8 @@ impl Model {
             .sum()
     }
 
-    /// Acceleration of node `i` under the lumped mass, `a_i = (F_i - (K u)_i)/m_i` (0 at fixed nodes).
+    /// Acceleration of node `i` under the lumped mass, `a_i = (F_i - (K u)_i)/m_i` (0 at fixed
+    /// nodes).
     pub fn acceleration_at(&self, u: &[f64], i: usize, t: f64) -> f64 {
         self.inverse_mass[i] * (self.external_force_at(i, t) + self.internal_force_at(u, i))
     }

@@ -1,9 +1,9 @@
 //! The time-integration schemes, each written against the public integrator interface
 //! ([`crate::integrator`]), and the registry scenes name them through.
 //!
-//! **Enters:** the interface and the step kernels ([`crate::kernels`]: `lumped`, `matrix_mass`, `park`).
-//! **Leaves:** [`REGISTRY`] (what scenes, `courant list --schemes` and the report see) and each
-//! scheme's public types. Schemes know the interface, never the reverse, and never each other
+//! **Enters:** the interface and the step kernels ([`crate::kernels`]: `lumped`, `matrix_mass`,
+//! `park`). **Leaves:** [`REGISTRY`] (what scenes, `courant list --schemes` and the report see) and
+//! each scheme's public types. Schemes know the interface, never the reverse, and never each other
 //! (Park's start reuses central difference's `half_step_start`, the one exception).
 //!
 //! Names: a scheme's `Scheme` (its parameters, what the registry builds) is `XxxScheme`, its

@@ -75,7 +75,8 @@ pub struct LumpedStep {
     pub(crate) v: Vec<f64>,
     /// Whether the CPU has AVX2 (the step then runs its AVX2-compiled copy).
     pub(crate) avx2: bool,
-    /// Threads of a block of steps (`advance_block`, `kernels::lumped::pipeline`); single steps use one.
+    /// Threads of a block of steps (`advance_block`, `kernels::lumped::pipeline`); single steps use
+    /// one.
     pub(crate) threads: usize,
 }
 
@@ -177,8 +178,8 @@ impl LumpedStep {
         self.advance::<ENERGY, true>(forces)
     }
 
-    /// One step; `AVX2`: the energy sweep runs its AVX2 intrinsics ([`crate::kernels::lumped::avx2`]),
-    /// which only an AVX2-compiled caller may ask for.
+    /// One step; `AVX2`: the energy sweep runs its AVX2 intrinsics
+    /// ([`crate::kernels::lumped::avx2`]), which only an AVX2-compiled caller may ask for.
     #[inline(always)]
     fn advance<const ENERGY: bool, const AVX2: bool>(
         &mut self,

@@ -1,6 +1,6 @@
-//! Several lumped central-difference steps per pass over the bar (temporal blocking), on one
-//! or several threads: the steps of [`crate::kernels::lumped::kernel`], bit for bit, with each array streamed from
-//! memory once per [`DEPTH`] steps instead of once per step.
+//! Several lumped central-difference steps per pass over the bar (temporal blocking), on one or
+//! several threads: the steps of [`crate::kernels::lumped::kernel`], bit for bit, with each array
+//! streamed from memory once per [`DEPTH`] steps instead of once per step.
 //!
 //! **Tiles.** A sub-block of `S <= DEPTH` steps sweeps the bar in tiles of [`TILE`] nodes; a
 //! tile runs all `S` steps before the next tile starts, so its `u`, `v`, `k`, `dt/m` stay in
@@ -44,9 +44,9 @@ pub const DEPTH: usize = 64;
 /// Most steps one call takes (16 sub-blocks: the pipeline of the threads fills once per call).
 pub const MAX_BLOCK_STEPS: usize = 16 * DEPTH;
 
-/// The kernel's arrays (padded layout of [`crate::kernels::lumped::kernel`]) as raw pointers, shared by the
-/// threads of a block. Each thread touches only the nodes of its tiles at each step; the
-/// pipeline's waits order every write before any read of another thread.
+/// The kernel's arrays (padded layout of [`crate::kernels::lumped::kernel`]) as raw pointers,
+/// shared by the threads of a block. Each thread touches only the nodes of its tiles at each step;
+/// the pipeline's waits order every write before any read of another thread.
 #[derive(Clone, Copy)]
 pub(crate) struct BarView {
     pub(crate) u: *mut f64,

@@ -1,6 +1,6 @@
 //! The matrix-mass step's sweeps with their energy sums, written with AVX2 intrinsics (used by
-//! [`crate::kernels::matrix_mass::passes`] where the CPU has AVX2): the residual rows with the strain and
-//! increment lanes, and the velocity update with the impulse lanes.
+//! [`crate::kernels::matrix_mass::passes`] where the CPU has AVX2): the residual rows with the
+//! strain and increment lanes, and the velocity update with the impulse lanes.
 //!
 //! ```text
 //!   r_i = k_{i+1} (u_{i+1} - u_i) - k_i (u_i - u_{i-1}),
@@ -63,14 +63,15 @@ pub(crate) unsafe fn velocity_lanes(
     whole
 }
 
-/// The unloaded interior residual rows `chunks` (whole chunks of [`LANES`] rows from a multiple
-/// of [`LANES`], `1 <= chunks.start`, `chunks.end <= n - 1`) of
-/// [`crate::kernels::matrix_mass::passes::residual_rows`]: `r_i = k[i+1] (u[i+1] - u[i]) - k[i] (u[i] - u[i-1])`
-/// overwriting `r^n_i`, with `k[i+1] (u[i+1] - u[i])^2` added to `strain[i % 8]` and
-/// `v_i (r^n_i + r_i)` to `increment[i % 8]`; returns `chunks.end`. Row `i`'s left force
-/// `k[i] (u[i] - u[i-1])` is row `i - 1`'s right one, formed by the same operations: it is
-/// shifted in from the previous four rows (one element force per row instead of two; 5-8 %
-/// faster CMM, AMM and RMM steps at N = 1e5, measured), the same bits.
+/// The unloaded interior residual rows `chunks` (whole chunks of [`LANES`] rows from a multiple of
+/// [`LANES`], `1 <= chunks.start`, `chunks.end <= n - 1`) of
+/// [`crate::kernels::matrix_mass::passes::residual_rows`]:
+/// `r_i = k[i+1] (u[i+1] - u[i]) - k[i] (u[i] - u[i-1])` overwriting `r^n_i`, with
+/// `k[i+1] (u[i+1] - u[i])^2` added to `strain[i % 8]` and `v_i (r^n_i + r_i)` to
+/// `increment[i % 8]`; returns `chunks.end`. Row `i`'s left force `k[i] (u[i] - u[i-1])` is row
+/// `i - 1`'s right one, formed by the same operations: it is shifted in from the previous four rows
+/// (one element force per row instead of two; 5-8 % faster CMM, AMM and RMM steps at N = 1e5,
+/// measured), the same bits.
 ///
 /// # Safety
 /// The CPU must support AVX2.

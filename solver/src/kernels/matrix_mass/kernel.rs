@@ -64,13 +64,13 @@ const U: usize = 0;
 const V: usize = 1;
 const R: usize = 2;
 
-/// The page offsets (bytes modulo 4096) of `u`, `v`, `r^n` and the stiffnesses
-/// ([`PlacedArrays`]), chosen by measurement (ns per node-step, RMM / CMM steps;
-/// benches/RESULTS.md, heading "... the run's start, the mass check, where the state lives ..."): with all four at one offset (what fresh mappings give) 0.733 /
-/// 0.945 at N = 1e5 and 1.22 / 1.24 at 1e6; a quarter page apart 0.57-0.66 / 0.84-0.88 at 1e5
-/// but 0.87-1.11 for RMM at 1e6; these 0.61-0.63 / 0.84-0.87 at 1e5 and 0.68-0.81 / 1.07-1.22
-/// at 1e6 (of 16 placements tried, the fastest at both sizes; RMM runs of 300 steps at 1e6 took
-/// 271-287 ms against 322-323 a quarter page apart).
+/// The page offsets (bytes modulo 4096) of `u`, `v`, `r^n` and the stiffnesses ([`PlacedArrays`]),
+/// chosen by measurement (ns per node-step, RMM / CMM steps; benches/RESULTS.md, heading "... the
+/// run's start, the mass check, where the state lives ..."): with all four at one offset (what
+/// fresh mappings give) 0.733 / 0.945 at N = 1e5 and 1.22 / 1.24 at 1e6; a quarter page apart
+/// 0.57-0.66 / 0.84-0.88 at 1e5 but 0.87-1.11 for RMM at 1e6; these 0.61-0.63 / 0.84-0.87 at 1e5
+/// and 0.68-0.81 / 1.07-1.22 at 1e6 (of 16 placements tried, the fastest at both sizes; RMM runs of
+/// 300 steps at 1e6 took 271-287 ms against 322-323 a quarter page apart).
 const PLACEMENT: [usize; 4] = [2624, 1216, 3200, 384];
 
 /// Central difference with a tridiagonal mass or inverse mass.

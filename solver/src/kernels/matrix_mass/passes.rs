@@ -1,8 +1,8 @@
-//! The passes of the blocked matrix-mass step ([`crate::kernels::matrix_mass::kernel`]), each over a range of
-//! nodes so that the step can run them block by block: the displacement update, the residual
-//! rows `r = F - K u` with the strain and increment lanes, the rows of the reciprocal mass's
-//! product `a = M^-1 r`, and the velocity update with the impulse lanes. Each forms its values
-//! with the same operations in the same order as the whole-pass step (tested there), so
+//! The passes of the blocked matrix-mass step ([`crate::kernels::matrix_mass::kernel`]), each over
+//! a range of nodes so that the step can run them block by block: the displacement update, the
+//! residual rows `r = F - K u` with the strain and increment lanes, the rows of the reciprocal
+//! mass's product `a = M^-1 r`, and the velocity update with the impulse lanes. Each forms its
+//! values with the same operations in the same order as the whole-pass step (tested there), so
 //! blocking changes no bit.
 
 use crate::simd::LANES;
@@ -22,10 +22,11 @@ fn lane_chunks(lo: usize, hi: usize) -> std::ops::Range<usize> {
     }
 }
 
-/// `v^{n+3/2} = v^{n+1/2} + dt a^{n+1}` for the nodes of `v` (starting at a multiple of
-/// [`LANES`]), adding `a r` to the impulse lanes; `a` and `r` hold the same nodes as `v` (and
-/// may be longer). `AVX2`: the whole chunks of [`LANES`] nodes run
-/// [`crate::kernels::matrix_mass::avx2::velocity_lanes`] (only an AVX2-compiled caller may ask for it).
+/// `v^{n+3/2} = v^{n+1/2} + dt a^{n+1}` for the nodes of `v` (starting at a multiple of [`LANES`]),
+/// adding `a r` to the impulse lanes; `a` and `r` hold the same nodes as `v` (and may be longer).
+/// `AVX2`: the whole chunks of [`LANES`] nodes run
+/// [`crate::kernels::matrix_mass::avx2::velocity_lanes`] (only an AVX2-compiled caller may ask for
+/// it).
 #[inline(always)]
 pub(crate) fn velocity_lanes<const AVX2: bool>(
     v: &mut [f64],
@@ -53,14 +54,14 @@ pub(crate) fn velocity_lanes<const AVX2: bool>(
     *impulse = product;
 }
 
-/// `r_i = N_i - N_{i-1} + F_i` for rows `from..to`, overwriting `r^n` in place, with the
-/// element forces `N` of padded index `i + 1` formed as `k[i + 1] (u[i + 1] - u[i])` (`k` the
-/// padded stiffness, length `n + 1`), the ghost forces 0 and the load `F_i` of `loads` (the
-/// rows' loads, sorted) added last: the whole-pass step's `element_force[i + 1] -
-/// element_force[i]`, then `+= F_i`, operation for operation. Each row also adds its right
-/// element's `N_e du_e` (element `e = i`, all rows but the last) to strain lane `e % LANES` and
-/// `v_i (r^n_i + r^{n+1}_i)` to increment lane `i % LANES`, in increasing rows. `AVX2`: the
-/// whole chunks of [`LANES`] unloaded interior rows run [`crate::kernels::matrix_mass::avx2::residual_rows`].
+/// `r_i = N_i - N_{i-1} + F_i` for rows `from..to`, overwriting `r^n` in place, with the element
+/// forces `N` of padded index `i + 1` formed as `k[i + 1] (u[i + 1] - u[i])` (`k` the padded
+/// stiffness, length `n + 1`), the ghost forces 0 and the load `F_i` of `loads` (the rows' loads,
+/// sorted) added last: the whole-pass step's `element_force[i + 1] - element_force[i]`, then
+/// `+= F_i`, operation for operation. Each row also adds its right element's `N_e du_e` (element
+/// `e = i`, all rows but the last) to strain lane `e % LANES` and `v_i (r^n_i + r^{n+1}_i)` to
+/// increment lane `i % LANES`, in increasing rows. `AVX2`: the whole chunks of [`LANES`] unloaded
+/// interior rows run [`crate::kernels::matrix_mass::avx2::residual_rows`].
 #[inline(always)]
 pub(crate) fn residual_rows<const AVX2: bool>(
     (k, u, v): (&[f64], &[f64], &[f64]),

@@ -1,17 +1,16 @@
 //! Arrays that one sweep streams side by side, placed in one allocation so that each starts at
 //! a chosen offset of its page (its address modulo 4096), whatever the allocator does.
 //!
-//! Why. Where an allocator puts separate large arrays is chance: a fresh mapping starts at
-//! offset 16 of a page with glibc (so all of them coincide), a reused block anywhere. The
-//! matrix-mass step's speed depended on it: the same 300 RMM steps at N = 1e6 took 244-285 ms
-//! with one placement and 354-366 ms with another (benches/RESULTS.md, heading "... the run's
-//! start, the mass check, where the state lives ...", and
-//! [`crate::kernels::matrix_mass::kernel`]'s placement). Probable mechanisms: 4K aliasing (a
-//! load whose address matches an older store's low 12 bits waits for it as if dependent; the step's passes
-//! store one array while loading others a little ahead) and, at sizes beyond the caches, how
-//! the memory's channels see the streams (the low 12 bits of a physical address are the
-//! virtual ones). This machine has no performance counters to tell them apart; the placements
-//! are chosen by measurement.
+//! Why. Where an allocator puts separate large arrays is chance: a fresh mapping starts at offset
+//! 16 of a page with glibc (so all of them coincide), a reused block anywhere. The matrix-mass
+//! step's speed depended on it: the same 300 RMM steps at N = 1e6 took 244-285 ms with one
+//! placement and 354-366 ms with another (benches/RESULTS.md, heading "... the run's start, the
+//! mass check, where the state lives ...", and [`crate::kernels::matrix_mass::kernel`]'s
+//! placement). Probable mechanisms: 4K aliasing (a load whose address matches an older store's low
+//! 12 bits waits for it as if dependent; the step's passes store one array while loading others a
+//! little ahead) and, at sizes beyond the caches, how the memory's channels see the streams (the
+//! low 12 bits of a physical address are the virtual ones). This machine has no performance
+//! counters to tell them apart; the placements are chosen by measurement.
 
 /// `K` arrays of `f64` in one allocation, each starting at a chosen byte offset modulo 4096 (an
 /// offset of its page; the page is the allocator's).

@@ -3,8 +3,9 @@
 //!
 //! **Enters:** a lumped [`Model`](crate::Model), the global step `dt` and [`ParkOptions`].
 //! **Leaves:** the state `u^n`, `v^n`, `a^n` and the energies of each step
-//! ([`StepEnergy`](crate::kernels::energy::StepEnergy)). It must not know the run loop, its outputs or the
-//! stability policy (the shared time loop drives it through [`crate::schemes::park`]), nor any I/O.
+//! ([`StepEnergy`](crate::kernels::energy::StepEnergy)). It must not know the run loop, its outputs
+//! or the stability policy (the shared time loop drives it through [`crate::schemes::park`]), nor
+//! any I/O.
 //!
 //! Files: `options` (what the user chooses), `step` ([`ParkStep`]: the per-element constants
 //! from the model, the loads, the AVX2 dispatch), `folded` (the folded step as one blocked sweep).

@@ -285,9 +285,9 @@ mod tests {
     use super::*;
     use crate::fixtures::graded_seed_bar;
 
-    /// The unfolded step, element by element as in steps 1-4 of the module doc of [`crate::kernels::park`].
-    /// `clamp`: alpha limited to 1 (as [`ParkStep::new`] does), else the true alpha (as
-    /// [`ParkStep::allowing_unstable`]).
+    /// The unfolded step, element by element as in steps 1-4 of the module doc of
+    /// [`crate::kernels::park`]. `clamp`: alpha limited to 1 (as [`ParkStep::new`] does), else the
+    /// true alpha (as [`ParkStep::allowing_unstable`]).
     fn reference_step(
         model: &Model,
         scheme: &ParkStep,

@@ -43,11 +43,11 @@ unsafe fn transpose(m: [__m256d; 4]) -> [__m256d; 4] {
     }
 }
 
-/// Solve the [`WINDOWS_PER_GROUP`] windows of a group with their `factors` (`SHARED`: `[l_k, 1/d_k]` per
-/// row for every window; otherwise per row `k` the `l_k` of the windows, then their `1/d_k`),
-/// window `c` reading `r[starts[c]..starts[c] + window]`; `rows` receives `z` in group layout,
-/// `solution` the rows `lowest..window` of `x` in window layout (`solution[c * window + k]`).
-/// `window` and `lowest` are multiples of 4.
+/// Solve the [`WINDOWS_PER_GROUP`] windows of a group with their `factors` (`SHARED`:
+/// `[l_k, 1/d_k]` per row for every window; otherwise per row `k` the `l_k` of the windows, then
+/// their `1/d_k`), window `c` reading `r[starts[c]..starts[c] + window]`; `rows` receives `z` in
+/// group layout, `solution` the rows `lowest..window` of `x` in window layout
+/// (`solution[c * window + k]`). `window` and `lowest` are multiples of 4.
 ///
 /// # Safety
 /// The CPU must support AVX2 and FMA.
@@ -64,8 +64,8 @@ pub(crate) unsafe fn solve_windows<const SHARED: bool>(
     assert!(starts.iter().all(|&s| s + window <= r.len()));
     let (fp, rp) = (factors.as_ptr(), r.as_ptr());
     let (zp, xp) = (rows.as_mut_ptr(), solution.as_mut_ptr());
-    // SAFETY: row offsets below are < window and window offsets < WINDOWS_PER_GROUP, so every index is
-    // within the lengths asserted above; loads and stores are unaligned.
+    // SAFETY: row offsets below are < window and window offsets < WINDOWS_PER_GROUP, so every index
+    // is within the lengths asserted above; loads and stores are unaligned.
     unsafe {
         let factor = |at: usize, q: usize| {
             if SHARED {

@@ -3,8 +3,8 @@
 //! still in cache, and twelve recurrences run side by side in three AVX2 registers.
 //!
 //! Why a window suffices. The inverse of a banded SPD matrix decays geometrically away from its
-//! diagonal (Demko, Moss and Smith, Math. Comp. 43 (1984) 491-499, the positive definite case): for a
-//! tridiagonal `S` with spectrum in `[a, b]`, `kappa = b/a`,
+//! diagonal (Demko, Moss and Smith, Math. Comp. 43 (1984) 491-499, the positive definite case): for
+//! a tridiagonal `S` with spectrum in `[a, b]`, `kappa = b/a`,
 //!
 //! ```text
 //!   |(S^-1)_ij| <= C q^|i-j|,   q = (sqrt(kappa) - 1)/(sqrt(kappa) + 1),
@@ -19,16 +19,16 @@
 //! AMM(1/2) (`q = 0.101`). Fixed nodes are decoupled rows; they only cut the matrix into
 //! blocks, each with the same bound.
 //!
-//! A tile of `T` rows (344 to 1024, as [`tile_rows`] fits them to the bar) is solved on a
-//! window of `T + 2H` rows, `H` (the halo) more on each side, shifted inward at the bar's ends.
-//! The window's solution differs from the whole solution by the response to the two couplings it
-//! cuts, at least `H` rows from any row of the tile:
-//! `|x_i - x~_i| <= C q^H s sqrt(m_cut/m_i) |x_cut|`, `s = |1 - beta|/3` the largest scaled
-//! coupling `M_i,i+1 / sqrt(A_i A_i+1)` and `x_cut` the solution just outside the window. `H` is
-//! the least multiple of 4 with `C q^H <= 2^-66`: with `s = 1/3` (CMM) the truncation stays below
-//! `2^-13 u |x_cut|` (`u = 2^-53`, the unit round-off) for mass ratios up to 9 across a halo and
-//! below `u |x_cut|` up to `9 2^26`: the tiles give the solution to round-off, like the global
-//! factor (`crate::mass::partitioned_ldl`), not bit-identical to it. CMM: `H = 36`; AMM(1/2): `H = 24`.
+//! A tile of `T` rows (344 to 1024, as [`tile_rows`] fits them to the bar) is solved on a window of
+//! `T + 2H` rows, `H` (the halo) more on each side, shifted inward at the bar's ends. The window's
+//! solution differs from the whole solution by the response to the two couplings it cuts, at least
+//! `H` rows from any row of the tile: `|x_i - x~_i| <= C q^H s sqrt(m_cut/m_i) |x_cut|`,
+//! `s = |1 - beta|/3` the largest scaled coupling `M_i,i+1 / sqrt(A_i A_i+1)` and `x_cut` the
+//! solution just outside the window. `H` is the least multiple of 4 with `C q^H <= 2^-66`: with
+//! `s = 1/3` (CMM) the truncation stays below `2^-13 u |x_cut|` (`u = 2^-53`, the unit round-off)
+//! for mass ratios up to 9 across a halo and below `u |x_cut|` up to `9 2^26`: the tiles give the
+//! solution to round-off, like the global factor (`crate::mass::partitioned_ldl`), not
+//! bit-identical to it. CMM: `H = 36`; AMM(1/2): `H = 24`.
 //!
 //! Each window is factored once (`L D L^T`, no pivoting: its rows are a principal submatrix of
 //! an SPD matrix); a step runs, per window, the forward recurrence `z_k = r_k - l_{k-1} z_{k-1}`
@@ -76,13 +76,13 @@ const MIN_TILE: usize = 4096usize
     .div_ceil(WINDOWS_PER_GROUP)
     .next_multiple_of(crate::simd::LANES);
 
-/// The tile length for a matrix of order `n`: as many groups of [`WINDOWS_PER_GROUP`] tiles as tiles of
-/// [`MAX_TILE`] need, and tiles just long enough (a multiple of [`crate::simd::LANES`]) for
-/// those groups to cover the rows, so a short last group is not padded with copies of its last
-/// window (with a fixed 1024, a bar of 20 000 nodes solved 24 windows for 20 tiles and its CMM
-/// step ran 0.97-0.99 ns against 0.87-0.90 with 512; benches/RESULTS.md). Between
-/// `WINDOWS_PER_GROUP MIN_TILE` and `WINDOWS_PER_GROUP MAX_TILE` rows it is one group; beyond, between `MAX_TILE / 2`
-/// and `MAX_TILE`.
+/// The tile length for a matrix of order `n`: as many groups of [`WINDOWS_PER_GROUP`] tiles as
+/// tiles of [`MAX_TILE`] need, and tiles just long enough (a multiple of [`crate::simd::LANES`])
+/// for those groups to cover the rows, so a short last group is not padded with copies of its last
+/// window (with a fixed 1024, a bar of 20 000 nodes solved 24 windows for 20 tiles and its CMM step
+/// ran 0.97-0.99 ns against 0.87-0.90 with 512; benches/RESULTS.md). Between
+/// `WINDOWS_PER_GROUP MIN_TILE` and `WINDOWS_PER_GROUP MAX_TILE` rows it is one group; beyond,
+/// between `MAX_TILE / 2` and `MAX_TILE`.
 pub(crate) fn tile_rows(n: usize) -> usize {
     let groups = n.div_ceil(WINDOWS_PER_GROUP * MAX_TILE).max(1);
     n.div_ceil(WINDOWS_PER_GROUP * groups)
@@ -130,8 +130,8 @@ pub struct HaloTiles {
     tile: usize,
     /// Rows of a window, `tile + 2 H`.
     window: usize,
-    /// First row of each window, [`WINDOWS_PER_GROUP`] per group (the last group padded with copies of the
-    /// last window).
+    /// First row of each window, [`WINDOWS_PER_GROUP`] per group (the last group padded with copies
+    /// of the last window).
     starts: Vec<usize>,
     /// Per group, where its factors are (`l` is 0 at a window's last row).
     group_factors: Vec<GroupFactors>,
@@ -443,11 +443,10 @@ impl HaloTiles {
     }
 }
 
-/// The group solve without intrinsics: for each window `c` (rows `starts[c]..starts[c] +
-/// window` of `r`), the forward recurrence into `rows` (group layout), then the backward one
-/// down to row `lowest` into `solution` (window layout), each `a - l b` one fused multiply-add
-/// (one rounding); the operations of
-/// [`avx2::solve_windows`], one lane at a time.
+/// The group solve without intrinsics: for each window `c` (rows `starts[c]..starts[c] + window` of
+/// `r`), the forward recurrence into `rows` (group layout), then the backward one down to row
+/// `lowest` into `solution` (window layout), each `a - l b` one fused multiply-add (one rounding);
+/// the operations of [`avx2::solve_windows`], one lane at a time.
 fn solve_windows_portable(
     (factors, starts, r): (Factors, &[usize; WINDOWS_PER_GROUP], &[f64]),
     (window, lowest): (usize, usize),

@@ -3,6 +3,7 @@
 //! against the portable loops bit for bit.
 
 use super::*;
+use crate::mass::partitioned_ldl::PartitionedLdl;
 
 /// The assembled mass of element masses `m` with lumped weight `beta`
 /// (`(1 - beta) CMM + beta LMM`), rows in `fixed` decoupled.
@@ -149,7 +150,7 @@ fn windows_give_the_global_solution_to_round_off() {
             let r = right_hand_side(n);
             let mut exact = r.clone();
             fixed.iter().for_each(|&i| exact[i] = 0.0);
-            m.factor_spd().unwrap().solve_in_place(&mut exact);
+            PartitionedLdl::new(&m).unwrap().solve_in_place(&mut exact);
             let mut x = r.clone();
             tiles.solve_in_place(&mut x);
             // Relative to the solution's scale near the row (masses vary by 1e5 along the bar):
