@@ -16,7 +16,7 @@
 //! scenes, reports or the analytic references (`courant-references` is compared with it by the
 //! `courant` crate), and it does no I/O.
 //!
-//! Folders, lowest first (each uses only those before it; `tests/architecture.rs` checks it):
+//! Folders, lowest first (each uses only those before it; `tests/architecture/main.rs` checks it):
 //! `simd` (lane width and CPU features), `error`, `output`; `model/` (the discrete bar);
 //! `mass/` (mass operators, their factors and windowed solves); `analysis/` (critical steps,
 //! spectra, step plans); `kernels/` (the step arithmetic: `lumped/`, `matrix_mass/`, `park/`);

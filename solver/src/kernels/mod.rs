@@ -4,6 +4,8 @@
 //! **Enters:** a [`Model`](crate::model::Model), the step `dt`, a start state, the loads of each
 //! step. **Leaves:** the new state and each step's energies ([`StepEnergy`](energy::StepEnergy)).
 //! The schemes in [`crate::schemes`] wrap these kernels into steppers the shared time loop drives.
+//! A kernel must not know the time loop, outputs, the stability policy or any scheme's
+//! registry entry: it is arithmetic a stepper calls, so a faster kernel changes nothing above it.
 //!
 //! Folders: `lumped/` (central difference with the lumped mass: the cache-blocked step, its
 //! AVX2 energy sweep, temporal blocking in tiles and the multi-threaded pipeline of blocks),
