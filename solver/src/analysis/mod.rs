@@ -14,5 +14,5 @@ pub(crate) mod stability;
 pub(crate) mod time_step;
 
 pub use spectrum::{MAX_DENSE_NODES, angular_frequencies};
-pub use stability::CriticalStep;
-pub use time_step::{TimePlan, plan, plan_keeping_step};
+pub use stability::{BISECTION_STEPS, BOUND_DOUBLINGS, CriticalStep};
+pub use time_step::{MAX_STEPS, ROUNDING_SLACK, TimePlan, plan, plan_keeping_step};

@@ -5,7 +5,7 @@
 //! a [`ContactScheme`] (with its [`Penalty`]) and a time step. **Leaves:** a [`ContactRun`]
 //! (samples, stress profiles, momenta) or a [`ContactError`], and the critical steps
 //! ([`ContactCriticalStep`]). It builds on the bulk's lumped kernel and banded inertia
-//! ([`crate::kernels::lumped::kernel`], [`crate::mass::banded`]); it must not know scenes, files or
+//! (`kernels::lumped::kernel`, `mass::banded`); it must not know scenes, files or
 //! the analytic references (no I/O; `courant_references::contact` is compared with it elsewhere),
 //! and the contact-free integrators do not know it.
 //!
@@ -131,7 +131,7 @@
 //!
 //! The exact critical step of the contact-active system is `2/omega_max` of the pencil
 //! `(K + K_p, M + M_p)`, found by bisection on Sturm counts (Sylvester's inertia of
-//! `K + K_p - x (M + M_p)`; Wilkinson (1965) §5.37), as in [`crate::analysis::stability`]; a run
+//! `K + K_p - x (M + M_p)`; Wilkinson (1965) §5.37), as in `analysis::stability`; a run
 //! passes through contact-free and contact-active states and must respect both. Closed forms to
 //! compare with: `courant_references::contact` (methods.md §7).
 //!

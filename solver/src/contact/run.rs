@@ -33,7 +33,7 @@ impl ContactIntegrator {
     }
 
     /// The critical steps, and an error if `dt` exceeds the applicable one (with the time plan's
-    /// relative allowance [`crate::analysis::time_step::ROUNDING_SLACK`]) and unstable runs are not
+    /// relative allowance [`crate::analysis::ROUNDING_SLACK`]) and unstable runs are not
     /// allowed.
     ///
     /// # Errors

@@ -190,8 +190,8 @@ impl ContactPencil {
 
     /// Largest eigenvalue by bisection on [`Self::count_below`], to a relative width of about two
     /// ulps, starting from [`Self::row_sum_bound`] (grown if round-off left an eigenvalue above):
-    /// at most [`crate::analysis::stability::BOUND_DOUBLINGS`] doublings and
-    /// [`crate::analysis::stability::BISECTION_STEPS`] halvings.
+    /// at most [`crate::analysis::BOUND_DOUBLINGS`] doublings and
+    /// [`crate::analysis::BISECTION_STEPS`] halvings.
     ///
     /// # Errors
     /// [`NoConvergence`] when no finite bound above the spectrum is found or the bisection does
@@ -207,8 +207,8 @@ impl ContactPencil {
         bisect_top(hi, 2.0 * f64::EPSILON, all_below)
     }
 
-    /// The same pencil as two [`SymmetricBanded`] matrices (bandwidth 1), for cross-checks with
-    /// [`SymmetricBanded::negative_pivots_of_shifted`].
+    /// The same pencil as two `SymmetricBanded` matrices (bandwidth 1), for cross-checks with
+    /// `SymmetricBanded::negative_pivots_of_shifted`.
     pub fn to_banded(&self) -> (SymmetricBanded, SymmetricBanded) {
         let n = self.order();
         let mut k = SymmetricBanded::zeros(n, 1);

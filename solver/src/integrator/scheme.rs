@@ -125,7 +125,7 @@ impl Integration {
 
     /// The critical steps of the mass, after refusing `dt` above the scheme's limit
     /// ([`Scheme::limit`]) with the relative allowance
-    /// [`crate::analysis::time_step::ROUNDING_SLACK`] of the time plan (so that Co = 1 on a
+    /// [`crate::analysis::ROUNDING_SLACK`] of the time plan (so that Co = 1 on a
     /// free-free uniform bar, where `dt = dt_crit`, is accepted after the plan's rounding), unless
     /// unstable runs are allowed.
     ///

@@ -18,7 +18,7 @@
 //! dissipative scheme its drift is the energy the scheme removed.
 //!
 //! **Blocks of steps.** A stepper with temporal blocking ([`BlockStepper`], run by
-//! [`run_in_blocks`]: lumped central difference, [`crate::kernels::lumped::tiled`]) takes up to
+//! [`run_in_blocks`]: lumped central difference, `kernels::lumped::tiled`) takes up to
 //! [`crate::kernels::lumped::tiled::MAX_BLOCK_STEPS`] steps per call when the run must stay stable
 //! (`allow_unstable` off); a block ends at the last step and at every profile step. The stepper
 //! returns every step's energies and the displacements of the loaded nodes and of each history node

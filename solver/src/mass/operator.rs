@@ -143,7 +143,7 @@ pub enum MassOperator {
         /// How `C y = b` is solved (`C` with fixed nodes decoupled): windows where they apply,
         /// else the global factor. `C`'s element matrices have lumped-scaled eigenvalue ratios
         /// 1 and `3/(1 + 2 beta)`, the reciprocals of AMM(beta)'s, so the same spectral ratio
-        /// and halo ([`crate::mass::windows`]).
+        /// and halo (`mass::windows`).
         c_solve: TridiagonalSolve,
         /// Lumped masses `A`.
         lumped: Vec<f64>,
@@ -157,7 +157,7 @@ pub enum MassOperator {
 pub enum TridiagonalSolve {
     /// The partitioned `L D L^T` factor of the whole matrix.
     Global(PartitionedLdl),
-    /// Overlapping windows ([`HaloTiles`]), which the step solves tile by tile: from a group of
+    /// Overlapping windows (`HaloTiles`), which the step solves tile by tile: from a group of
     /// windows on, when the inverse decays fast enough (CMM, AMM with `beta` not near -1/2);
     /// the solution to round-off, as the global factor's.
     Windows(HaloTiles),

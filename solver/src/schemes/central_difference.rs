@@ -1,6 +1,6 @@
 //! Central difference through the integrator interface: the `cd` registry entry, its steppers (the
-//! fused lumped kernel, [`crate::kernels::lumped::kernel`]; the matrix-mass kernel,
-//! [`crate::kernels::matrix_mass::kernel`]).
+//! fused lumped kernel, `kernels::lumped::kernel`; the matrix-mass kernel,
+//! `kernels::matrix_mass::kernel`).
 //!
 //! Half-step form of the seed's predictor-corrector eqs. 2-4 (methods.md §2): from `u^n`,
 //! `v^{n+1/2}`, `u^{n+1} = u^n + dt v^{n+1/2}`, `a^{n+1} = M^-1 (F^{n+1} - K u^{n+1})`,
@@ -121,7 +121,7 @@ pub trait CentralDifferenceKernel: Sized {
 }
 
 /// A central-difference kernel that also takes blocks of steps (the lumped kernel's temporal
-/// blocking, [`crate::kernels::lumped::tiled`]): its stepper is then a [`BlockStepper`].
+/// blocking, `kernels::lumped::tiled`): its stepper is then a [`BlockStepper`].
 pub trait BlockKernel: CentralDifferenceKernel {
     /// `steps` steps with their energies in one pass, bit-identical to single steps.
     fn step_block(&mut self, block: &mut StepBlock, steps: usize);
