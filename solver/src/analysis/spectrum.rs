@@ -30,9 +30,10 @@ pub fn angular_frequencies(model: &Model, kind: MassKind) -> Result<Vec<f64>, In
         return Ok(Vec::new());
     }
     if n > MAX_DENSE_NODES {
-        return Err(InputError::Other(format!(
-            "a dense spectrum of {n} free nodes is too large (at most {MAX_DENSE_NODES})"
-        )));
+        return Err(InputError::DenseSpectrumTooLarge {
+            nodes: n,
+            max: MAX_DENSE_NODES,
+        });
     }
     let position = |i: usize| free.binary_search(&i).ok();
     let mut k = DMatrix::<f64>::zeros(n, n);
@@ -48,12 +49,7 @@ pub fn angular_frequencies(model: &Model, kind: MassKind) -> Result<Vec<f64>, In
             }
         }
     }
-    let not_spd = || {
-        InputError::Other(format!(
-            "the {} mass matrix is not positive definite",
-            kind.label()
-        ))
-    };
+    let not_spd = || InputError::MassNotPositiveDefinite { mass: kind.label() };
     let s = match &operator {
         MassOperator::Diagonal { mass, .. } => {
             let d = DVector::from_iterator(n, free.iter().map(|&i| 1.0 / mass[i].sqrt()));

@@ -314,9 +314,7 @@ fn contact_node(
     sign: f64,
 ) -> Result<ContactNode, InputError> {
     if model.is_fixed(node) {
-        return Err(InputError::Other(format!(
-            "contact node {node} of body {body} is fixed: a contact end must be free"
-        )));
+        return Err(InputError::ContactNodeFixed { node, body });
     }
     let last = model.bar().node_count() - 1;
     let (neighbour, element) = if node == 0 {

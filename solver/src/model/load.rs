@@ -118,11 +118,10 @@ impl TimeFunction {
             }
             TimeFunction::Table { times, values } => {
                 if times.is_empty() || times.len() != values.len() {
-                    return Err(InputError::Other(format!(
-                        "a load table needs as many values as times and at least one point; it has {} times and {} values",
-                        times.len(),
-                        values.len()
-                    )));
+                    return Err(InputError::LoadTableShape {
+                        times: times.len(),
+                        values: values.len(),
+                    });
                 }
                 for (i, (&t, &v)) in times.iter().zip(values).enumerate() {
                     finite("table time", t)?;

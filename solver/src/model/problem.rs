@@ -143,10 +143,7 @@ impl Model {
                 || (i == last && supports.right == Support::Fixed)
         };
         if let Some(load) = resolved.iter().find(|l| fixed(l.node)) {
-            return Err(InputError::Other(format!(
-                "a load acts on node {}, which is fixed: it would do nothing; load a free node or free that end",
-                load.node
-            )));
+            return Err(InputError::LoadOnFixedNode { node: load.node });
         }
         let mut fields = [
             ("initial displacement", initial.displacement),

@@ -100,10 +100,12 @@ impl ParkStep {
             };
             let alpha = dt / dt_e;
             if alpha > 1.0 + crate::analysis::time_step::ROUNDING_SLACK && !allow_unstable {
-                return Err(InputError::Other(format!(
-                    "Park's scheme needs alpha_e = dt/dt_e <= 1 in every element; element {e} has alpha = {alpha:.6} \
-                     (dt = {dt:e}, dt_e = {dt_e:e}): lower the Courant number"
-                )));
+                return Err(InputError::ParkAlphaAboveOne {
+                    element: e,
+                    alpha,
+                    dt,
+                    dt_e,
+                });
             }
             // Refusing: alpha within the plan's rounding slack of 1 is 1. Allowing: the true alpha.
             let alpha = if allow_unstable {
