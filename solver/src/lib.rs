@@ -17,7 +17,7 @@
 //! `courant` crate), and it does no I/O.
 //!
 //! Folders, lowest first (each uses only those before it; `tests/architecture/main.rs` checks it):
-//! `simd` (lane width and CPU features), `error`, `output`; `model/` (the discrete bar);
+//! `simd` (lane width and CPU features), `output`, `error`; `model/` (the discrete bar);
 //! `mass/` (mass operators, their factors and windowed solves); `analysis/` (critical steps,
 //! spectra, step plans); `kernels/` (the step arithmetic: `lumped/`, `matrix_mass/`, `park/`);
 //! `integrator/` (the public integrator interface every scheme honours, the shared time loop);
