@@ -1,5 +1,5 @@
 //! Benchmark: ONE lumped-mass central-difference step of `courant_solver`'s
-//! `kernel::LumpedCentralDifference` (`step` and `step_with_energy`), on a GRADED bar.
+//! `kernel::LumpedStep` (`step` and `step_with_energy`), on a GRADED bar.
 //!
 //! What it measures: the wall time of one step for N = 1e3, 1e5, 1e6 elements. The bar is the
 //! unit bar with modulus linear 16 -> 1 (so every element has its own stiffness and every node
@@ -11,18 +11,19 @@
 //! "elem/s" is element-steps per second; ns per node-step = time per step / (N + 1).
 //!
 //! Target: as fast as the tight C loop doing the same arithmetic, `benches/c_reference/cd_step.c`
-//! compiled with `gcc -O3 -march=native` — the team's figure is about 1.6–1.8 ns per node-step
-//! for N <= 1e5 on the 2-core machines. `run.sh` there prints the C loop's own numbers (two-pass,
-//! fused and blocked variants); compare with those, measured on the same machine.
-//! ISA: the kernel selects an AVX2-compiled copy of the step at run time where the CPU has AVX2
-//! (bit-identical results; see kernel.rs), so a default `cargo bench` is comparable with the C
-//! loop at `-march=native`. `step_with_energy` adds three energy sums, kept in 8 independent
-//! lanes so they vectorise.
+//! compiled with `gcc -O3 -march=native` — the team's figure is about 1.6–1.8 ns per node-step for
+//! N <= 1e5 on the 2-core machines. `run.sh` there prints the C loop's own numbers (two-pass, fused
+//! and blocked variants); compare with those, measured on the same machine. ISA: the kernel selects
+//! an AVX2-compiled copy of the step at run time where the CPU has AVX2 (bit-identical results; see
+//! `kernels::lumped::kernel`), so a default `cargo bench` is comparable with the C loop at
+//! `-march=native`. `step_with_energy` adds three energy sums, kept in 8 independent lanes so they
+//! vectorise.
 //!
 //! Also: `run_loop`, a whole 1000-step run through the public time loop (N = 1e4; lumped CD, CMM,
 //! Park, Noh-Bathe): what the loop adds around the kernels; `noh_bathe_step`, one Noh-Bathe step
-//! (LMM, CMM) beside CD's, both through the `Integrator` interface; `memory_triad`, the STREAM triad at the same sizes (and 4e6), the machine's bandwidth
-//! the report compares each step's model bandwidth with.
+//! (LMM, CMM) beside CD's, both through the `Integrator` interface; `memory_triad`, the STREAM
+//! triad at the same sizes (and 4e6), the machine's bandwidth the report compares each step's model
+//! bandwidth with.
 //!
 //! Run:      cargo bench --bench cd_step
 //!           (one function only: cargo bench --bench cd_step -- 'lumped_cd_step/step/')
@@ -35,7 +36,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use courant_solver::kernel::LumpedCentralDifference;
+use courant_solver::bench::LumpedStep;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 /// Element counts.
@@ -45,23 +46,23 @@ const SIZES: [usize; 3] = [1_000, 100_000, 1_000_000];
 const NB_P: f64 = 0.54;
 
 /// Noh-Bathe's critical step over central difference's on the same mass:
-/// `Omega_crit(p) / 2` (`NohBathe::critical_omega`; 1.8725 at p = 0.54).
+/// `Omega_crit(p) / 2` (`NohBatheScheme::critical_omega`; 1.8725 at p = 0.54).
 fn noh_bathe_step_ratio() -> f64 {
-    courant_solver::schemes::noh_bathe::NohBathe::critical_omega(NB_P) / 2.0
+    courant_solver::schemes::noh_bathe::NohBatheScheme::critical_omega(NB_P) / 2.0
 }
 
-use courant_solver::fixtures::smooth_half_velocity;
+use courant_solver::bench::smooth_half_velocity;
 
 /// The graded, loaded, free-fixed bar of `n` elements and its kernel at Courant number 0.5.
-fn graded_kernel(n: usize) -> LumpedCentralDifference {
-    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+fn graded_kernel(n: usize) -> LumpedStep {
+    let model = courant_solver::bench::graded_seed_bar(n).unwrap();
     let dt = 0.5 * model.bar().stiffest_element().1;
     let u0 = vec![0.0; n + 1];
     let v_half = smooth_half_velocity(n);
-    LumpedCentralDifference::new(&model, dt, &u0, &v_half)
+    LumpedStep::new(&model, dt, &u0, &v_half)
 }
 
-fn assert_finite(kernel: &LumpedCentralDifference) {
+fn assert_finite(kernel: &LumpedStep) {
     assert!(
         kernel
             .displacement()
@@ -106,10 +107,10 @@ fn lumped_cd_step(c: &mut Criterion) {
 /// Temporal blocking: blocks of 1024 lumped steps (`advance_block`: tiles of 1024 nodes,
 /// sub-blocks of 64 steps) on one and on two threads, bare and with the energy sums, per
 /// node-step (throughput `1024 N`). Bit-identical to single steps whatever the thread count
-/// (unit tests of `kernel_pipeline`); issue 17 target 4: 0.54 ns at N = 1e6 on one core, 1.7x
-/// on two.
+/// (unit tests of `kernels::lumped::pipeline`). Target: 0.54 ns at N = 1e6 on one core, 1.7x on
+/// two (benches/RESULTS.md, "Target 4: both cores, temporal blocking").
 fn lumped_cd_block(c: &mut Criterion) {
-    use courant_solver::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock};
+    use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock};
     let steps = MAX_BLOCK_STEPS;
     let mut group = c.benchmark_group("lumped_cd_block");
     group
@@ -146,10 +147,11 @@ fn lumped_cd_block(c: &mut Criterion) {
     group.finish();
 }
 
-/// One run step (with energies, as runs take it) per mass kind on the graded bar, N = 1e3, 1e5, 1e6, at half
-/// of each kind's critical Courant number, and CMM on a bar of graded density too (each window
-/// with its own factors). Targets: issue 3, RMM within 2x of LMM, CMM and AMM
-/// within 3x; issue 17 (target 3), each within 1.5x at N = 1e5 and 1e6 (benches/RESULTS.md).
+/// One run step (with energies, as runs take it) per mass kind on the graded bar, N = 1e3, 1e5,
+/// 1e6, at half of each kind's critical Courant number, and CMM on a bar of graded density too
+/// (each window with its own factors). Targets: RMM within 2x of LMM, CMM and AMM within 3x (when
+/// the matrix masses were added), then each within 1.5x at N = 1e5 and 1e6 (benches/RESULTS.md,
+/// "Target 3: matrix masses against the lumped step").
 fn mass_kind_step(c: &mut Criterion) {
     use courant_solver::MassKind;
     let forces = [(0usize, 1.0f64)];
@@ -159,7 +161,7 @@ fn mass_kind_step(c: &mut Criterion) {
         .sample_size(20)
         .measurement_time(Duration::from_secs(3));
     for n in SIZES {
-        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let model = courant_solver::bench::graded_seed_bar(n).unwrap();
         group.throughput(Throughput::Elements(n as u64));
         let mut lumped = graded_kernel(n);
         group.bench_function(BenchmarkId::new("lmm", n), |b| {
@@ -167,7 +169,7 @@ fn mass_kind_step(c: &mut Criterion) {
         });
         assert_finite(&lumped);
         // CMM also on the bar with its density graded too (4 to 1): every window's rows differ,
-        // so each keeps its own factors (`halo_tiles`), streamed every step.
+        // so each keeps its own factors (`mass::windows`), streamed every step.
         let graded_density = courant_solver::Model::unloaded(
             courant_solver::Bar::new(
                 courant_solver::Mesh::uniform(1.0, n).unwrap(),
@@ -190,7 +192,7 @@ fn mass_kind_step(c: &mut Criterion) {
             ("rmm0.5", &model, MassKind::Reciprocal { beta: 0.5 }),
             ("cmm-graded-density", &graded_density, MassKind::Consistent),
         ] {
-            let mut kernel = courant_solver::fixtures::matrix_step(model, kind).unwrap();
+            let mut kernel = courant_solver::bench::matrix_step(model, kind).unwrap();
             group.bench_function(BenchmarkId::new(name, n), |b| {
                 b.iter(|| kernel.step_with_energy(black_box(&forces)))
             });
@@ -227,7 +229,7 @@ fn spectrum_dense(c: &mut Criterion) {
         let name = kind.label().replace(['(', ')'], "");
         group.bench_function(BenchmarkId::new(name, 200), |b| {
             b.iter(|| {
-                courant_solver::spectrum::angular_frequencies(black_box(&model), kind).unwrap()
+                courant_solver::analysis::angular_frequencies(black_box(&model), kind).unwrap()
             })
         });
     }
@@ -235,16 +237,18 @@ fn spectrum_dense(c: &mut Criterion) {
 }
 
 /// One step of Park's scheme (theta = 1/2, with and without local stepping) against the lumped
-/// CD run step on the Fig. 2 graded bar, N = 1e3, 1e5, 1e6, Co = 0.5. Target (issue 4): within 3x of CD.
+/// CD run step on the Fig. 2 graded bar, N = 1e3, 1e5, 1e6, Co = 0.5. Target: within 3x of CD
+/// (a Park step evaluates the internal forces twice).
 fn park_step(c: &mut Criterion) {
-    use courant_solver::{ParkOptions, ParkScheme};
+    use courant_solver::ParkOptions;
+    use courant_solver::bench::ParkStep;
     let mut group = c.benchmark_group("park_step");
     group
         .warm_up_time(Duration::from_secs(1))
         .sample_size(20)
         .measurement_time(Duration::from_secs(3));
     for n in SIZES {
-        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let model = courant_solver::bench::graded_seed_bar(n).unwrap();
         let dt = 0.5 * model.bar().stiffest_element().1;
         group.throughput(Throughput::Elements(n as u64));
         let forces = [(0usize, 1.0f64)];
@@ -257,7 +261,7 @@ fn park_step(c: &mut Criterion) {
                 local_stepping,
                 ..ParkOptions::default()
             };
-            let mut park = ParkScheme::new(&model, dt, options).unwrap();
+            let mut park = ParkStep::new(&model, dt, options).unwrap();
             park.start(&model);
             let mut t = 0.0;
             group.bench_function(BenchmarkId::new(options.label(), n), |b| {
@@ -297,6 +301,7 @@ fn noh_bathe_step(c: &mut Criterion) {
             start: Start::HalfStep,
             allow_unstable: false,
             mass: MassOperator::new(model, kind).unwrap(),
+            threads: 1,
         };
         I::start(p, state).unwrap()
     }
@@ -328,7 +333,7 @@ fn noh_bathe_step(c: &mut Criterion) {
         .sample_size(20)
         .measurement_time(Duration::from_secs(3));
     for n in SIZES {
-        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let model = courant_solver::bench::graded_seed_bar(n).unwrap();
         let element_dt = model.bar().stiffest_element().1;
         group.throughput(Throughput::Elements(n as u64));
         let lumped = 0.5 * element_dt;
@@ -414,7 +419,7 @@ fn run_loop(c: &mut Criterion) {
         .sample_size(20)
         .measurement_time(Duration::from_secs(4));
     let (n, steps) = (10_000, 1_000);
-    let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+    let model = courant_solver::bench::graded_seed_bar(n).unwrap();
     let element_dt = model.bar().stiffest_element().1;
     let request = OutputRequest {
         energy_every: steps,
@@ -445,7 +450,7 @@ fn run_loop(c: &mut Criterion) {
         "noh-bathe",
         courant_solver::Integration::new(
             0.5 * noh_bathe_step_ratio() * element_dt,
-            std::sync::Arc::new(courant_solver::schemes::noh_bathe::NohBathe { p: NB_P }),
+            std::sync::Arc::new(courant_solver::schemes::noh_bathe::NohBatheScheme { p: NB_P }),
         ),
     )]) {
         group.bench_function(BenchmarkId::new(name, n), |b| {
@@ -459,16 +464,16 @@ fn run_loop(c: &mut Criterion) {
     group.finish();
 }
 
-/// The run loop at scale (issue 17, target 1): `Scheme::run` (the shared time loop: the start,
-/// the steps with the energy balance checked every step, the blow-up guard, the work of the
-/// loads, an energy sample at every step as a scene takes them for runs of up to 10^4 steps
-/// (with `T*` recomputed from the mass at every 64th: `MASS_CHECK_EVERY`), no profiles or
-/// histories) on the graded bar of
-/// N = 1e5 (1000 steps) and 1e6 (300 steps) elements, for lumped CD (compare with
-/// `lumped_cd_step/step`, the bare kernel), CMM, AMM(1/2), RMM(1/2) (with `mass_kind_step`, their
-/// own step) and Park with local stepping (with `park_step`), each at half its critical Courant
-/// number. The mass is assembled and factored outside the timing (`iter_batched`); the start is
-/// inside. Time per run; ns per node-step = time / (steps (N + 1)).
+/// The run loop at scale (benches/RESULTS.md, "Target 1: the run loop against the bare kernel"):
+/// `Scheme::run` (the shared time loop: the start, the steps with the energy balance checked every
+/// step, the blow-up guard, the work of the loads, an energy sample at every step as a scene takes
+/// them for runs of up to 10^4 steps (with `T*` recomputed from the mass at every 64th:
+/// `MASS_CHECK_EVERY`), no profiles or histories) on the graded bar of N = 1e5 (1000 steps) and 1e6
+/// (300 steps) elements, for lumped CD (compare with `lumped_cd_step/step`, the bare kernel), CMM,
+/// AMM(1/2), RMM(1/2) (with `mass_kind_step`, their own step) and Park with local stepping (with
+/// `park_step`), each at half its critical Courant number. The mass is assembled and factored
+/// outside the timing (`iter_batched`); the start is inside. Time per run; ns per node-step = time
+/// / (steps (N + 1)).
 fn run_loop_large(c: &mut Criterion) {
     use courant_solver::integrator::OutputRequest;
     use courant_solver::{CentralDifference, MassKind, MassOperator, ParkOptions};
@@ -478,7 +483,7 @@ fn run_loop_large(c: &mut Criterion) {
         .sample_size(10)
         .measurement_time(Duration::from_secs(3));
     for (n, steps) in [(100_000, 1_000), (1_000_000, 300)] {
-        let model = courant_solver::fixtures::graded_seed_bar(n).unwrap();
+        let model = courant_solver::bench::graded_seed_bar(n).unwrap();
         let element_dt = model.bar().stiffest_element().1;
         let request = OutputRequest {
             energy_every: 1,

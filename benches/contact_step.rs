@@ -4,18 +4,18 @@
 //! beta_s = 0.25e4.
 //!
 //! What it measures (wall time of one step, both bars):
-//! - `baseline`: the two bars' lumped kernels (`kernel::LumpedCentralDifference::
-//!   step_with_energy`, one zero nodal force each) from the contact run's start state, with no
+//! - `baseline`: the two bars' lumped kernels (`LumpedStep::step_with_energy`, one zero nodal
+//!   force each) from the contact run's start state, with no
 //!   contact: what a contact-free run of the same bodies costs;
 //! - `predictor_corrector`, `cd_bipenalty`, `lagrange_multiplier`: `contact::ContactStepper::
 //!   step` of each scheme: the same two kernel steps plus the O(1) contact update (a few nodal
 //!   reads, one scalar update, the contact momentum handed to the kernels as a nodal force) and
 //!   the sample it returns.
 //!
-//! The striker starts in contact (the steppers begin at the impact and the contact lasts
-//! 2 L1/c = 4 N steps). Every timed stretch restarts from a clone of the start state after at
-//! most min(N, 2000) steps (the clone is not timed), so the contact branch is the one timed at every N.
-//! Target (issue 5): contact adds at most 5 % to the step; compare the medians.
+//! The striker starts in contact (the steppers begin at the impact and the contact lasts 2 L1/c = 4
+//! N steps). Every timed stretch restarts from a clone of the start state after at most min(N,
+//! 2000) steps (the clone is not timed), so the contact branch is the one timed at every N. Target:
+//! contact adds at most 5 % to the step; compare the medians.
 //!
 //! Run:      cargo bench --bench contact_step
 //! Numbers:  target/criterion/contact_step/<name>/<N>/new/estimates.json
@@ -26,8 +26,8 @@ use std::f64::consts::PI;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
+use courant_solver::bench::LumpedStep;
 use courant_solver::contact::{ContactProblem, ContactScheme, ContactStepper, MassPenalty};
-use courant_solver::kernel::LumpedCentralDifference;
 use courant_solver::{Bar, InitialConditions, Mesh, Model, Supports};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
@@ -91,12 +91,12 @@ fn contact_step(c: &mut Criterion) {
 
         // Baseline: the same two kernels without contact, from the contact stepper's start state.
         let start = ContactStepper::new(&problem, dt, ContactScheme::LagrangeMultiplier).unwrap();
-        let kernels: Vec<LumpedCentralDifference> = problem
+        let kernels: Vec<LumpedStep> = problem
             .bodies()
             .iter()
             .enumerate()
             .map(|(b, model)| {
-                LumpedCentralDifference::new(
+                LumpedStep::new(
                     model,
                     dt,
                     start.displacement(b),

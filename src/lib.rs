@@ -12,7 +12,7 @@
 //!   io: atomic writes, clock, ordered parallel collection (used by every stage)
 //! ```
 //!
-//! Dependencies point one way (checked by `tests/architecture.rs`): a stage uses only the
+//! Dependencies point one way (checked by `tests/architecture/main.rs`): a stage uses only the
 //! stages upstream of it and `io`; `compare` never runs a solver, `run` never compares, `report`
 //! only renders compared records.
 

@@ -143,7 +143,7 @@ enum Command {
 fn main() -> ExitCode {
     courant::cli::exit_quietly_on_closed_pipe();
     let command = Cli::parse().command;
-    if let Err(message) = courant::cli::check_thread_setting() {
+    if let Err(message) = courant::cli::read_thread_setting() {
         eprintln!("error: {message}");
         return ExitCode::from(2);
     }

@@ -1,4 +1,5 @@
-//! Source of truth: issue 17, target 5 (a `courant bench` command that times the C reference,
+//! Source of truth: speed target 5 (benches/RESULTS.md, "`courant bench` and the lumped step
+//! (targets 1, 4, 5)": a `courant bench` command that times the C reference,
 //! courant's kernel and its run loop side by side and writes the ratios) and the README's
 //! "Speed" section, which tells a user to run it.
 //!

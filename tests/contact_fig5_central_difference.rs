@@ -118,7 +118,7 @@ fn allowed_cd_penalty_pumps_energy_and_the_guard_stops_it_keeping_the_history() 
         "{error}"
     );
     // Persistent contact under a load: the default guard trips.
-    let wall = courant_solver::fixtures::loaded_wall(100, 0.0).unwrap();
+    let wall = courant_solver::bench::loaded_wall(100, 0.0).unwrap();
     let penalty = wall.penalty(25.0, MassPenalty::None).unwrap();
     let error = allowed(
         ContactScheme::Penalty {
@@ -207,7 +207,7 @@ fn cd_bipenalty_with_ratio_one_is_accepted_and_bounded_but_chatters_at_large_bet
 
 #[test]
 fn cd_bipenalty_gains_energy_on_a_chattering_persistent_contact_though_its_limit_holds() {
-    let problem = courant_solver::fixtures::loaded_wall(100, 0.0).unwrap();
+    let problem = courant_solver::bench::loaded_wall(100, 0.0).unwrap();
     let peak = |beta_s: f64| {
         let scheme =
             ContactScheme::Bipenalty(problem.penalty(beta_s, MassPenalty::Ratio(1.0)).unwrap());

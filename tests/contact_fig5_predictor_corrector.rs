@@ -161,7 +161,7 @@ fn predictor_corrector_tends_to_the_lagrange_multiplier_reference_as_beta_s_grow
 
 #[test]
 fn predictor_corrector_is_refused_above_its_own_limit_and_then_gains_energy() {
-    let problem = courant_solver::fixtures::loaded_wall(100, 0.0).unwrap();
+    let problem = courant_solver::bench::loaded_wall(100, 0.0).unwrap();
     let scheme = ContactScheme::PredictorCorrector(
         problem.penalty(0.25e4, MassPenalty::Ratio(1.0)).unwrap(),
     );

@@ -17,8 +17,8 @@
 //! conservative where theory says so, and Fried's fails for RMM (beta = 3) on a uniform mesh.
 
 use courant_references::spectra::{self as closed, BarEnds, UniformBar};
-use courant_solver::fixtures::seed_bar;
-use courant_solver::spectrum::angular_frequencies;
+use courant_solver::analysis::angular_frequencies;
+use courant_solver::bench::seed_bar;
 use courant_solver::{
     Bar, CentralDifference, CriticalStep, Field, MassKind, MassOperator, Mesh, Model,
     OutputRequest, RunError, StabilityPolicy, Support, Supports, TimeFunction,
@@ -239,7 +239,7 @@ fn runs_just_above_the_critical_step_blow_up_and_just_below_stay_bounded() {
 fn estimators_are_conservative_where_theory_says_and_fried_fails_for_rmm() {
     // Graded and geometric meshes, every support pair: Gershgorin is always conservative, the
     // element (Fried) estimate for the assembled masses.
-    let graded = courant_solver::fixtures::graded_bar(40).unwrap();
+    let graded = courant_solver::bench::graded_bar(40).unwrap();
     let geometric = Bar::new(
         Mesh::geometric(1.0, 40, 1.1).unwrap(),
         &Field::Constant(3.0),

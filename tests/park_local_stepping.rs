@@ -18,10 +18,10 @@
 mod common;
 
 use common::*;
-use courant_solver::fixtures::{graded_seed_bar, seed_bar};
+use courant_solver::bench::{ParkStep, graded_seed_bar, seed_bar};
 use courant_solver::{
     Bar, CentralDifference, End, Field, InitialConditions, Load, Mesh, Model, OutputRequest,
-    ParkOptions, ParkScheme, ParkVariant, RunError, Supports, TimeFunction,
+    ParkOptions, ParkVariant, RunError, Supports, TimeFunction,
 };
 
 fn run(
@@ -125,7 +125,7 @@ fn alpha_above_one_is_refused_naming_the_element() {
         .filter(|&e| dt > model.bar().element_transit_time(e))
         .collect();
     assert_eq!(refused, [18, 19]);
-    let err = ParkScheme::new(&model, dt, ParkOptions::default())
+    let err = ParkStep::new(&model, dt, ParkOptions::default())
         .unwrap_err()
         .to_string();
     let alpha = dt / model.bar().element_transit_time(18);
@@ -139,7 +139,7 @@ fn alpha_above_one_is_refused_naming_the_element() {
         local_stepping: false,
         ..ParkOptions::default()
     };
-    let err = ParkScheme::new(&model, dt, global).unwrap_err().to_string();
+    let err = ParkStep::new(&model, dt, global).unwrap_err().to_string();
     assert!(err.contains("element 0 has alpha = 1.050000"), "{err}");
     // A run is refused before it starts unless unstable runs are allowed...
     let integrator = CentralDifference {
@@ -206,7 +206,7 @@ fn static_state(bar: Bar) -> Model {
 
 #[test]
 fn incremental_variant_keeps_a_static_state_static_and_free_drifts() {
-    let graded = courant_solver::fixtures::graded_bar(50).unwrap();
+    let graded = courant_solver::bench::graded_bar(50).unwrap();
     let layered_modulus: Vec<f64> = (0..50).map(|e| if e < 25 { 16.0 } else { 1.0 }).collect();
     let layered = Bar::new(
         Mesh::uniform(1.0, 50).unwrap(),

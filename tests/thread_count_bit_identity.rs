@@ -1,5 +1,6 @@
 //! Source of truth: the project's determinism rule ("the same scene gives bit-identical output
-//! whatever the thread count") and issue 17 target 4 (a case of N >= 1e5 uses both cores).
+//! whatever the thread count") and the speed target that a case of N >= 1e5 uses both cores
+//! (benches/RESULTS.md, "Target 4: both cores, temporal blocking").
 //!
 //! ```text
 //!   COURANT_THREADS=1  courant run bar.toml --out A ┐
@@ -14,7 +15,7 @@
 //! values pass from one thread to the next during a sub-block; profiles between blocks) writes
 //! the same profiles, histories, energies
 //! and errors on one, two and three threads. The kernel-level proof (states, energies and
-//! probes against single steps, loads on region edges) is `kernel_pipeline`'s unit test.
+//! probes against single steps, loads on region edges) is `kernels::lumped::pipeline`'s unit test.
 
 #[path = "common/cli.rs"]
 mod cli;

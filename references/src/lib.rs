@@ -10,7 +10,7 @@
 //! impedances, loads, penalties) and evaluation points. **Leaves:** exact fields, frequencies,
 //! critical Courant numbers and contact forces, or a [`ReferenceError`] for invalid data. It must
 //! never know the solver (`courant-solver`): no dependency, no shared code, no solver types
-//! (checked by `tests/architecture.rs`); nor files or scenes (no I/O).
+//! (checked by `tests/architecture/main.rs`); nor files or scenes (no I/O).
 //!
 //! - [`dalembert`]: the homogeneous free-fixed bar under a Heaviside end traction.
 //! - [`graded`]: the linearly graded bar (two full-field routes) and layered bars.
@@ -18,6 +18,8 @@
 //!   central difference.
 //! - [`contact`]: the stability limit of penalty contact and the contact forces of 1D impact.
 //! - [`error`]: the validation error shared by all references.
+
+#![warn(missing_docs)]
 
 pub mod contact;
 pub mod dalembert;

@@ -1,4 +1,5 @@
-//! Whole runs timed (the harness of benches/RESULTS.md, fifth session): central difference with
+//! Whole runs timed (the harness of benches/RESULTS.md, heading "... the run's start, the mass
+//! check, where the state lives ..."): central difference with
 //! one mass on the graded seed bar of N elements at half its critical Courant number, an energy
 //! sample every step (as scenes take them), through `Integration::run_assembled`; the mass is
 //! assembled outside the timing, the run's start inside, as in criterion's `run_loop_large`.
@@ -19,7 +20,7 @@ mod harness;
 fn main() {
     let (n, steps, kind, reps) = harness::arguments(1_000_000, 300);
     let reps = reps.map_or(5, |s| harness::whole_number("REPS", &s));
-    let model = courant_solver::fixtures::graded_seed_bar(n).expect("bar");
+    let model = courant_solver::bench::graded_seed_bar(n).expect("bar");
     let element_dt = model.bar().stiffest_element().1;
     let request = OutputRequest {
         energy_every: 1,

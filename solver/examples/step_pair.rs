@@ -1,5 +1,6 @@
 //! The matrix-mass step and the lumped step timed alternately in one process (the harness of
-//! benches/RESULTS.md, fifth session): both on the graded seed bar of N elements at half their
+//! benches/RESULTS.md, heading "... the run's start, the mass check, where the state lives ..."
+//! and later): both on the graded seed bar of N elements at half their
 //! critical Courant numbers, nine repetitions of STEPS/9 steps each, medians in ns per
 //! node-step and their ratio. Alternating in one process puts both under the same machine load;
 //! criterion (`cargo bench --bench cd_step`) remains the reference.
@@ -10,8 +11,8 @@
 //!   WHICH: both (default) | matrix | lumped | check (the mass check alone, ms)
 //! ```
 
-use courant_solver::fixtures::smooth_half_velocity;
-use courant_solver::kernel::LumpedCentralDifference;
+use courant_solver::bench::LumpedStep;
+use courant_solver::bench::smooth_half_velocity;
 use std::time::Instant;
 
 mod harness;
@@ -29,11 +30,11 @@ fn main() {
             "WHICH: {which} is not one of both, matrix, lumped, check"
         ));
     }
-    let model = courant_solver::fixtures::graded_seed_bar(n).expect("bar");
+    let model = courant_solver::bench::graded_seed_bar(n).expect("bar");
     let element_dt = model.bar().stiffest_element().1;
-    let mut matrix = courant_solver::fixtures::matrix_step(&model, kind).expect("mass");
+    let mut matrix = courant_solver::bench::matrix_step(&model, kind).expect("mass");
     let (v, zeros) = (smooth_half_velocity(n), vec![0.0; n + 1]);
-    let mut lumped = LumpedCentralDifference::new(&model, 0.5 * element_dt, &zeros, &v);
+    let mut lumped = LumpedStep::new(&model, 0.5 * element_dt, &zeros, &v);
     let forces = [(0usize, 1.0f64)];
     for _ in 0..steps / 10 {
         matrix.step_with_energy(&forces);

@@ -64,10 +64,96 @@ pub enum InputError {
     /// resolves, e.g. entries whose products overflow).
     #[error(transparent)]
     NoConvergence(#[from] NoConvergence),
+    /// An assembled mass matrix is not positive definite (an AMM or RMM `beta` outside the
+    /// range its element matrices stay definite in, or element masses that cancel).
+    #[error("the {mass} mass matrix is not positive definite")]
+    MassNotPositiveDefinite {
+        /// The mass as outputs label it (`cmm`, `amm(0.5)`, ...).
+        mass: String,
+    },
+    /// A scheme that runs with the lumped mass only was given another.
+    #[error("{scheme} runs with the lumped mass only, not {mass}")]
+    LumpedMassOnly {
+        /// The scheme's name.
+        scheme: String,
+        /// The mass it was given, as outputs label it.
+        mass: String,
+    },
+    /// Critical steps computed for one mass were given for a run with another.
+    #[error("critical steps of the {given} mass given for a run with the {run} mass")]
+    CriticalStepsOfAnotherMass {
+        /// The mass the critical steps belong to.
+        given: String,
+        /// The mass of the run.
+        run: String,
+    },
+    /// A load on a fixed node: it would do nothing.
+    #[error(
+        "a load acts on node {node}, which is fixed: it would do nothing; load a free node or free that end"
+    )]
+    LoadOnFixedNode {
+        /// The loaded node.
+        node: usize,
+    },
+    /// A load table whose times and values do not pair up.
+    #[error(
+        "a load table needs as many values as times and at least one point; it has {times} times and {values} values"
+    )]
+    LoadTableShape {
+        /// Times given.
+        times: usize,
+        /// Values given.
+        values: usize,
+    },
+    /// A contact end that is fixed (contact needs a free end to move).
+    #[error("contact node {node} of body {body} is fixed: a contact end must be free")]
+    ContactNodeFixed {
+        /// The contact node.
+        node: usize,
+        /// The body it belongs to.
+        body: usize,
+    },
+    /// A profile asked at a step the run does not reach.
+    #[error("profile step {step} is after the last step {last}")]
+    ProfileAfterLastStep {
+        /// The profile's step.
+        step: usize,
+        /// The run's last step.
+        last: usize,
+    },
+    /// A dense spectrum (an `n x n` eigenproblem) beyond the size it is meant for.
+    #[error("a dense spectrum of {nodes} free nodes is too large (at most {max})")]
+    DenseSpectrumTooLarge {
+        /// Free nodes of the model.
+        nodes: usize,
+        /// The largest count allowed.
+        max: usize,
+    },
+    /// Park's step above its limit, `alpha_e = dt/dt_e > 1` in an element (methods.md §6), when
+    /// unstable runs are not allowed.
+    #[error(
+        "Park's scheme needs alpha_e = dt/dt_e <= 1 in every element; element {element} has alpha = {alpha:.6} (dt = {dt:e}, dt_e = {dt_e:e}): lower the Courant number"
+    )]
+    ParkAlphaAboveOne {
+        /// The first element above the limit.
+        element: usize,
+        /// Its `alpha_e`.
+        alpha: f64,
+        /// The step.
+        dt: f64,
+        /// The element's critical step `h_e/c_e`.
+        dt_e: f64,
+    },
     /// Anything else, with a sentence that names the field and the rule.
     #[error("{0}")]
     Other(String),
 }
+
+/// A symmetric tridiagonal matrix that is not positive definite: its `L D L^T` factorisation
+/// met a pivot that is not positive (or not finite), so it has no SPD factor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Error)]
+#[error("the matrix is not positive definite")]
+pub struct NotPositiveDefinite;
 
 /// An iterative method stopped at its iteration bound without an answer. Every iterative method
 /// of the solver has such a bound: none can loop forever, whatever its input.

@@ -5,10 +5,10 @@
 //!                   x = 0              x = L = 1
 //! ```
 
-use crate::bar::{Bar, Field};
 use crate::error::InputError;
-use crate::load::{End, Load, TimeFunction};
-use crate::mesh::Mesh;
+use crate::model::bar::{Bar, Field};
+use crate::model::load::{End, Load, TimeFunction};
+use crate::model::mesh::Mesh;
 use crate::model::{InitialConditions, Model, Supports};
 
 /// The unit free-fixed bar of the seed's Figs. 1 and 2 (L = A = rho = 1, `elements` uniform
@@ -106,12 +106,12 @@ pub fn smooth_half_velocity(elements: usize) -> Vec<f64> {
 pub fn matrix_step(
     model: &Model,
     kind: crate::mass::MassKind,
-) -> Result<crate::matrix_kernel::MatrixCentralDifference, InputError> {
+) -> Result<crate::kernels::matrix_mass::kernel::MatrixMassStep, InputError> {
     let n = model.bar().element_count();
     let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
     let mass = crate::mass::MassOperator::new(model, kind)?;
     let (v_half, zeros) = (smooth_half_velocity(n), vec![0.0; n + 1]);
-    let start = crate::matrix_kernel::StartState {
+    let start = crate::kernels::matrix_mass::kernel::StartState {
         displacement: &zeros,
         half_step_velocity: &v_half,
         acceleration: &zeros,
@@ -119,7 +119,7 @@ pub fn matrix_step(
         kinetic_staggered: 0.0,
     };
     let stiffness = model.stiffness();
-    Ok(crate::matrix_kernel::MatrixCentralDifference::new(
+    Ok(crate::kernels::matrix_mass::kernel::MatrixMassStep::new(
         dt, stiffness, mass, &start,
     ))
 }
@@ -128,11 +128,11 @@ pub fn matrix_step(
 /// from rest with the half-step velocity `sin(0.37 i)` (0 at the fixed end): the lumped kernels'
 /// unit-test bar.
 #[cfg(test)]
-pub(crate) fn graded_test_kernel(n: usize) -> crate::kernel::LumpedCentralDifference {
+pub(crate) fn graded_test_kernel(n: usize) -> crate::kernels::lumped::kernel::LumpedStep {
     let model = graded_seed_bar(n).unwrap();
     let dt = 0.5 * model.bar().stiffest_element().1;
     let v: Vec<f64> = (0..=n)
         .map(|i| if i == n { 0.0 } else { (i as f64 * 0.37).sin() })
         .collect();
-    crate::kernel::LumpedCentralDifference::new(&model, dt, &vec![0.0; n + 1], &v)
+    crate::kernels::lumped::kernel::LumpedStep::new(&model, dt, &vec![0.0; n + 1], &v)
 }

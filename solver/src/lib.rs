@@ -16,60 +16,48 @@
 //! scenes, reports or the analytic references (`courant-references` is compared with it by the
 //! `courant` crate), and it does no I/O.
 //!
-//! Layers, lowest first: `mesh`, `bar`, `load`, `model` (the problem); `tridiagonal`,
-//! `partitioned_ldl`, `halo_tiles` (with `halo_avx2`), `banded`, `mass` (operators);
-//! `stability`, `spectrum`, `time_step`;
-//! `kernel`, `kernel_tiled` and `kernel_pipeline` (the lumped step, and blocks of it: temporal
-//! blocking on one or several threads), `matrix_kernel` (with `matrix_passes`, `matrix_avx2`),
-//! `park` (step kernels); `integrator` (the public integrator
-//! interface every scheme honours, the shared time loop); `schemes` (central difference, Park,
-//! Noh-Bathe, each written against the interface, and the registry scenes name them through);
-//! `contact` (contact runs, stepping the bulk with the `cd` stepper); `output`, `error`,
-//! `fixtures`.
+//! Folders, lowest first (each uses only those before it; `tests/architecture/main.rs` checks it):
+//! `simd` (lane width and CPU features), `output`, `error`; `model/` (the discrete bar);
+//! `mass/` (mass operators, their factors and windowed solves); `analysis/` (critical steps,
+//! spectra, step plans); `kernels/` (the step arithmetic: `lumped/`, `matrix_mass/`, `park/`);
+//! `integrator/` (the public integrator interface every scheme honours, the shared time loop);
+//! `schemes/` (central difference, Park, Noh-Bathe, each written against the interface, and
+//! the registry scenes name them through); `contact/` (contact runs, stepping the bulk with the
+//! `cd` stepper); `fixtures` (bars for tests, benches and examples).
+//!
+//! Public surface: the types re-exported here, and the modules `model`, `mass`, `analysis`
+//! (their public items only; their files are private), `integrator` (the contract a scheme
+//! honours, with the [`integrator::StepEnergy`] and [`integrator::StepBlock`] it exchanges with
+//! the loop), `schemes` and `contact`. The step kernels, the fixtures and the kernels' constants
+//! are private; what benches, timing examples and kernel-level tests need of them is gathered in
+//! the hidden `bench` module, which is not a stable interface.
 
-pub mod banded;
-pub mod bar;
+#![warn(missing_docs)]
+
+pub mod analysis;
+#[doc(hidden)]
+pub mod bench;
 pub mod contact;
-pub mod error;
-pub mod fixtures;
-#[cfg(target_arch = "x86_64")]
-mod halo_avx2;
-pub mod halo_tiles;
+mod error;
+mod fixtures;
 pub mod integrator;
-pub mod kernel;
-#[cfg(target_arch = "x86_64")]
-mod kernel_avx2;
-mod kernel_pipeline;
-pub mod kernel_tiled;
-pub mod load;
+mod kernels;
 pub mod mass;
-#[cfg(target_arch = "x86_64")]
-mod matrix_avx2;
-pub mod matrix_kernel;
-mod matrix_passes;
-pub mod mesh;
 pub mod model;
-pub mod output;
-pub mod park;
-pub mod partitioned_ldl;
-mod placed_arrays;
+mod output;
 pub mod schemes;
-pub mod spectrum;
-pub mod stability;
-pub mod time_step;
-mod tridiagonal;
+mod simd;
 
-pub use bar::{Bar, Field};
+pub use analysis::{CriticalStep, TimePlan, plan, plan_keeping_step};
 pub use error::{DivergenceError, InputError, NoConvergence, RunError, UnstableStepError};
 pub use integrator::{
     Integration, LimitKind, OutputRequest, Scheme, SchemeEntry, SchemeLimit, StabilityPolicy, Start,
 };
-pub use load::{End, Load, NodalLoad, TimeFunction};
+pub use kernels::park::{ParkOptions, ParkVariant};
 pub use mass::{MassKind, MassOperator};
-pub use mesh::Mesh;
-pub use model::{InitialConditions, Model, Support, Supports};
+pub use model::{
+    Bar, End, Field, InitialConditions, Load, Mesh, Model, NodalLoad, Support, Supports,
+    TimeFunction,
+};
 pub use output::{EnergyLog, EnergySample, HistorySample, NodeHistory, RunOutput, StressProfile};
-pub use park::{ParkOptions, ParkScheme, ParkVariant};
 pub use schemes::seed::CentralDifference;
-pub use stability::CriticalStep;
-pub use time_step::{TimePlan, plan, plan_keeping_step};

@@ -1,6 +1,7 @@
 //! Source of truth: the central-difference step itself (seed eqs. 2-4, methods.md §2): a block of
-//! steps (temporal blocking, `kernel_tiled` / `kernel_pipeline`) must be the same arithmetic as
-//! the steps one at a time, so the shared time loop must give the same run either way.
+//! steps (temporal blocking, `kernels::lumped::tiled` / `kernels::lumped::pipeline`) must be the
+//! same arithmetic as the steps one at a time, so the shared time loop must give the same run
+//! either way.
 //!
 //! ```text
 //!   allow_unstable = false  ->  blocks of up to 1024 steps  ┐  every profile, history sample,
@@ -192,23 +193,29 @@ fn a_guard_trip_inside_a_block_names_the_node_of_its_own_step() {
     }
 }
 
+/// The thread count is a setting of the run: a lumped run that must stay stable uses
+/// `Integration::threads` from 1e5 nodes on and one thread below; a run that steps singly (a
+/// matrix mass, or unstable runs allowed) uses one whatever the setting.
 #[test]
-fn a_scene_plans_with_the_kernels_thread_count() {
-    courant_solver::kernel::set_default_threads(Some(2));
+fn a_run_takes_its_thread_count_from_its_integration() {
     for elements in [99_998usize, 99_999] {
-        let model = courant_solver::fixtures::graded_seed_bar(elements).unwrap();
+        let model = courant_solver::bench::graded_seed_bar(elements).unwrap();
         let dt = 0.5 * model.bar().stiffest_element().1;
-        let integration = CentralDifference::new(dt).integration();
-        let zeros = vec![0.0; elements + 1];
-        let kernel =
-            courant_solver::kernel::LumpedCentralDifference::new(&model, dt, &zeros, &zeros);
+        let two = |seed: CentralDifference| courant_solver::Integration {
+            threads: Some(2),
+            ..seed.integration()
+        };
         let expected = if elements + 1 >= 100_000 { 2 } else { 1 };
-        assert_eq!(
-            (integration.threads(&model), kernel.threads()),
-            (expected, expected),
-            "{} nodes",
-            elements + 1
-        );
+        let lumped = two(CentralDifference::new(dt));
+        assert_eq!(lumped.threads(&model), expected, "{} nodes", elements + 1);
+        let mut unstable = CentralDifference::new(dt);
+        unstable.stability.allow_unstable = true;
+        let consistent = CentralDifference {
+            mass: courant_solver::MassKind::Consistent,
+            ..CentralDifference::new(dt)
+        };
+        for single in [unstable, consistent] {
+            assert_eq!(two(single).threads(&model), 1, "{single:?}");
+        }
     }
-    courant_solver::kernel::set_default_threads(None);
 }

@@ -195,7 +195,7 @@ fn every_scheme_is_the_dense_textbook_scheme_to_round_off() {
         ("pair", pair, 0.45),
         (
             "loaded wall",
-            courant_solver::fixtures::loaded_wall(12, 0.01).unwrap(),
+            courant_solver::bench::loaded_wall(12, 0.01).unwrap(),
             0.5,
         ),
     ] {

@@ -121,7 +121,7 @@ fn sturm_bisection_equals_dense_eigen_and_estimates_are_conservative() {
 /// Gershgorin (all kinds) and Fried (assembled masses) are conservative against the dense value.
 #[test]
 fn every_mass_kind_matches_dense_eigen_and_estimates_are_conservative() {
-    use courant_solver::spectrum::angular_frequencies;
+    use courant_solver::analysis::angular_frequencies;
     use courant_solver::{MassKind, MassOperator};
     let mut kinds = vec![MassKind::Lumped, MassKind::Consistent];
     for beta in [0.0, 0.5, 1.0, 1.5, 3.0] {

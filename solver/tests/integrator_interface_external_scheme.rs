@@ -9,19 +9,20 @@
 //! ```
 //!
 //! Proves: a scheme written outside the crate, against the public interface alone (no registry
-//! entry needed to run it), runs through the shared time loop with its outputs, energy balance
-//! and guard: its profiles and histories equal the registered `cd` to 1e-12 of the peak, its
-//! balance (it reports `T* = T`, having no energy of its own) is its full-step energy error;
-//! a scheme without a stability analysis declares `LimitKind::Measured`, the interface measures
-//! its critical step (within `MEASURED_PRECISION` below `2/omega_max`) and refuses a step above
-//! it naming the measured limit.
+//! entry needed to run it; no block stepping, an opt-in capability, `BlockStepper`, it does not
+//! take), runs through the shared time loop with its outputs, energy balance and guard: its
+//! profiles and histories equal the registered `cd` to 1e-12 of the peak, its balance (it reports
+//! `T* = T`, having no energy of its own) is its full-step energy error; a scheme without a
+//! stability analysis declares `LimitKind::Measured`, the interface measures its critical step
+//! (within `MEASURED_PRECISION` below `2/omega_max`) and refuses a step above it naming the
+//! measured limit.
 
-use courant_solver::fixtures::graded_seed_bar;
+use courant_solver::bench::graded_seed_bar;
+use courant_solver::integrator::StepEnergy;
 use courant_solver::integrator::{
     InitialState, Integrator, LimitKind, MEASURED_PRECISION, RunSetup, SchemeLimit,
     measure_critical_step, time_loop,
 };
-use courant_solver::kernel::StepEnergy;
 use courant_solver::{
     CentralDifference, CriticalStep, InputError, Integration, MassKind, MassOperator, Model,
     OutputRequest, RunError, RunOutput, Scheme, Start,

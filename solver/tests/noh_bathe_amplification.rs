@@ -20,8 +20,8 @@
 mod common;
 
 use common::{amplification, determinant, noh_bathe, run, spectral_radius};
-use courant_solver::fixtures::graded_seed_bar;
-use courant_solver::schemes::noh_bathe::NohBathe;
+use courant_solver::bench::graded_seed_bar;
+use courant_solver::schemes::noh_bathe::NohBatheScheme;
 use courant_solver::{
     Bar, CentralDifference, InitialConditions, MassKind, Mesh, Model, OutputRequest, Supports,
 };
@@ -54,7 +54,7 @@ fn one_step(p: f64, dt: f64, u0: f64, v0: f64) -> ([f64; 2], [f64; 2]) {
 fn one_step_equals_the_closed_form_amplification_matrix() {
     let omega = 3.0;
     for p in [0.5, 0.54, 0.6, 0.7, 0.75] {
-        let limit = NohBathe::critical_omega(p);
+        let limit = NohBatheScheme::critical_omega(p);
         for w in [0.01, 0.1, 0.5, 1.0, 2.0, 3.0, 2.0 / p, 0.999 * limit, limit] {
             let (u0, v0) = (0.7, -0.2);
             let dt = w / omega;
@@ -92,7 +92,7 @@ fn one_step_equals_the_closed_form_amplification_matrix() {
 #[test]
 fn the_closed_form_limit_is_where_the_spectral_radius_leaves_one() {
     for p in [0.5, 0.52, 0.54, 0.6, 0.65, 0.7, 0.75] {
-        let limit = NohBathe::critical_omega(p);
+        let limit = NohBatheScheme::critical_omega(p);
         // A11 = A22 and det A as stated.
         let a = amplification(1.3, p);
         assert_eq!(a[0][0], a[1][1]);
@@ -123,7 +123,7 @@ fn the_closed_form_limit_is_where_the_spectral_radius_leaves_one() {
         );
     }
     // p = 0.54: 1.8725 times central difference's Omega = 2, radius 0.4513 at 2/p.
-    let limit = NohBathe::critical_omega(0.54);
+    let limit = NohBatheScheme::critical_omega(0.54);
     assert!((limit / 2.0 - 1.87251).abs() < 1e-5, "{limit}");
     assert!((spectral_radius(amplification(2.0 / 0.54, 0.54)) - 0.451303).abs() < 1e-5);
 }

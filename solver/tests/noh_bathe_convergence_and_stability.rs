@@ -22,10 +22,10 @@
 mod common;
 
 use common::{determinant, free_bar, noh_bathe, run};
-use courant_solver::fixtures::graded_seed_bar;
+use courant_solver::bench::graded_seed_bar;
 use courant_solver::integrator::{MEASURED_PRECISION, measure_critical_step};
 use courant_solver::schemes::central_difference::CentralDifferenceScheme;
-use courant_solver::schemes::noh_bathe::NohBathe;
+use courant_solver::schemes::noh_bathe::NohBatheScheme;
 use courant_solver::{CriticalStep, MassKind, MassOperator, Model, RunError, Scheme};
 use std::f64::consts::PI;
 use std::sync::Arc;
@@ -35,7 +35,7 @@ const P: f64 = 0.54;
 /// `(exact dt, 2/omega_max)` of `model` with `mass`: Noh-Bathe's limit and central difference's.
 fn limits(model: &Model, mass: MassKind) -> (f64, f64) {
     let critical = CriticalStep::of(model, mass, &MassOperator::new(model, mass).unwrap()).unwrap();
-    let limit = NohBathe { p: P }.limit(model, &critical);
+    let limit = NohBatheScheme { p: P }.limit(model, &critical);
     (limit.dt(), critical.exact)
 }
 
@@ -86,7 +86,7 @@ fn bounded_at_0_999_of_the_limit_caught_at_1_001_refused_above_it() {
     let model = graded_seed_bar(20).unwrap();
     for mass in [MassKind::Lumped, MassKind::Consistent] {
         let (dt_crit, cd) = limits(&model, mass);
-        assert!((dt_crit / cd - 0.5 * NohBathe::critical_omega(P)).abs() < 1e-12);
+        assert!((dt_crit / cd - 0.5 * NohBatheScheme::critical_omega(P)).abs() < 1e-12);
         let bounded = run(
             &noh_bathe(P, 0.999 * dt_crit, mass, true),
             &model,
@@ -194,7 +194,7 @@ fn the_measured_critical_step_finds_the_closed_form_limits() {
     for mass in [MassKind::Lumped, MassKind::Consistent] {
         let (nb, cd) = limits(&model, mass);
         for (scheme, exact) in [
-            (Arc::new(NohBathe { p: P }) as Arc<dyn Scheme>, nb),
+            (Arc::new(NohBatheScheme { p: P }) as Arc<dyn Scheme>, nb),
             (Arc::new(CentralDifferenceScheme) as Arc<dyn Scheme>, cd),
         ] {
             // A guess well below both limits: the search must bracket and bisect to find them.

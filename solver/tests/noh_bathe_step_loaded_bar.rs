@@ -20,7 +20,7 @@
 mod common;
 
 use common::run;
-use courant_solver::schemes::noh_bathe::NohBathe;
+use courant_solver::schemes::noh_bathe::NohBatheScheme;
 use courant_solver::{
     Bar, CentralDifference, InitialConditions, Integration, Load, MassKind, Mesh, Model,
     OutputRequest, Supports, TimeFunction,
@@ -90,7 +90,7 @@ fn noh_bathe_near_its_bifurcation_leaves_one_overshoot_and_no_trailing_oscillati
     let (_, min, variation, _) = velocity_at_mid(&cd(0.5));
     assert!(min < 0.9 && variation > 5.0, "CD at 0.5: {min} {variation}");
 
-    let nb = Arc::new(NohBathe { p: 0.54 });
+    let nb = Arc::new(NohBatheScheme { p: 0.54 });
     let (max, min, variation, max_after) = velocity_at_mid(&at_courant(nb.clone(), 1.85));
     assert!((max - 1.1136).abs() < 5e-4, "max v {max}");
     assert!(
@@ -109,7 +109,7 @@ fn the_consistent_mass_runs_to_its_own_limit() {
     // With CMM omega_max = 2 sqrt(3) c/h: the Noh-Bathe limit is c dt/h = 1.8725/sqrt(3) = 1.081.
     let nb = Integration {
         mass: MassKind::Consistent,
-        ..Integration::new(1.07 / N as f64, Arc::new(NohBathe { p: 0.54 }))
+        ..Integration::new(1.07 / N as f64, Arc::new(NohBatheScheme { p: 0.54 }))
     };
     let (max, min, _, _) = velocity_at_mid(&nb);
     // The independent implementation: max 1.0267, min (t > 0.6) 0.9798.

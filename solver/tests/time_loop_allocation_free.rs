@@ -1,6 +1,6 @@
 //! Source of truth: the project's cost rule ("a lumped-mass run stays diagonal and O(N) per step,
-//! with no dense or global matrices in a time loop") and issue 4's "the element loop does no
-//! allocation": every per-step kernel is set up once and then steps without touching the heap.
+//! with no dense or global matrices in a time loop") and its companion, "the element loop does
+//! no allocation": every per-step kernel is set up once and then steps without touching the heap.
 //!
 //! ```text
 //!   new(model, dt)  --allocates-->  [ step  step  step ... ]  --0 allocations-->
@@ -18,13 +18,14 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use courant_solver::fixtures::graded_seed_bar;
+use courant_solver::bench::LumpedStep;
+use courant_solver::bench::ParkStep;
+use courant_solver::bench::graded_seed_bar;
+use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock, TILE};
+use courant_solver::bench::{MatrixMassStep, StartState};
 use courant_solver::integrator::{InitialState, Integrator};
-use courant_solver::kernel::LumpedCentralDifference;
-use courant_solver::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock, TILE};
-use courant_solver::matrix_kernel::{MatrixCentralDifference, StartState};
 use courant_solver::schemes::noh_bathe::NohBatheStepper;
-use courant_solver::{MassKind, MassOperator, ParkOptions, ParkScheme, ParkVariant, Start};
+use courant_solver::{MassKind, MassOperator, ParkOptions, ParkVariant, Start};
 
 /// The system allocator, counting allocations and reallocations.
 struct Counting;
@@ -78,7 +79,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
     let forces = [(0usize, -1.0f64)];
 
     let v_half = vec![0.0; n + 1];
-    let mut lumped = LumpedCentralDifference::new(&model, 0.5 * element_dt, &v_half, &v_half);
+    let mut lumped = LumpedStep::new(&model, 0.5 * element_dt, &v_half, &v_half);
     assert_eq!(
         allocations_during(200, || {
             std::hint::black_box(lumped.step_with_energy(&forces));
@@ -99,7 +100,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
     );
     let wide = graded_seed_bar(6 * TILE).unwrap();
     let zeros = vec![0.0; 6 * TILE + 1];
-    let mut lumped = LumpedCentralDifference::new(&wide, 0.5 * element_dt, &zeros, &zeros);
+    let mut lumped = LumpedStep::new(&wide, 0.5 * element_dt, &zeros, &zeros);
     lumped.set_threads(2);
     lumped.advance_block::<true>(&mut block, MAX_BLOCK_STEPS);
     let per_block = allocations_during(5, || {
@@ -145,7 +146,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
             "{}: windows on the long bar only",
             kind.label()
         );
-        let mut kernel = MatrixCentralDifference::new(dt, model.stiffness(), operator, &start);
+        let mut kernel = MatrixMassStep::new(dt, model.stiffness(), operator, &start);
         assert_eq!(
             allocations_during(200, || {
                 std::hint::black_box(kernel.step_with_energy(&forces));
@@ -174,7 +175,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
                 ..ParkOptions::default()
             };
             let dt = 0.5 * element_dt;
-            let mut park = ParkScheme::new(&model, dt, options).unwrap();
+            let mut park = ParkStep::new(&model, dt, options).unwrap();
             park.start(&model);
             let mut t = 0.0;
             assert_eq!(
@@ -209,6 +210,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
             start: Start::HalfStep,
             allow_unstable: false,
             mass: MassOperator::new(&model, kind).unwrap(),
+            threads: 1,
         };
         let mut stepper = NohBatheStepper::start(&0.54, state).unwrap();
         let mut t = 0.0;

@@ -1,7 +1,8 @@
 //! `courant bench`: the C reference of the lumped central-difference step, courant's kernels and
-//! courant's run loop, timed side by side in one session on the machine at hand, and their
-//! ratios (issue 17, targets 1, 4 and 5), so that a user sees on their own machine what the
-//! README's speed table claims.
+//! courant's run loop, timed side by side in one process on the machine at hand, and their
+//! ratios (the speed targets 1, 4 and 5 of benches/RESULTS.md, heading "`courant bench` and the
+//! lumped step (targets 1, 4, 5)"), so that a user sees on their own machine what the README's
+//! speed table claims.
 //!
 //! What is timed, per element count N (node-steps = steps x (N + 1)), each the median over
 //! `reps` repetitions of about `node_steps` node-steps:
@@ -9,7 +10,7 @@
 //!   `benches/c_reference/cd_step.c` (compiled into the binary as text, built here with `$CC`,
 //!   default `gcc`, and `$CFLAGS`, default `-O3 -march=native`: the flags of
 //!   `benches/c_reference/run.sh`), which prints its own medians: one step per sweep;
-//! - `kernel_ns`: `LumpedCentralDifference::step`, one step per sweep, on the same graded bar
+//! - `kernel_ns`: `LumpedStep::step`, one step per sweep, on the same graded bar
 //!   and start state (`fixtures::graded_seed_bar`, Co 0.5, `fixtures::smooth_half_velocity`,
 //!   F = 1 on node 0); `kernel_energy_ns`: `step_with_energy`;
 //! - `blocked_ns`, `blocked_energy_ns`: `advance_block` (temporal blocking: blocks of 1024
@@ -33,11 +34,12 @@
 
 use crate::io::atomic::write_file_atomically;
 use crate::results::table::{Precision, Table};
-use courant_solver::fixtures::{graded_seed_bar, smooth_half_velocity};
+use crate::run::threads;
+use courant_solver::bench::LumpedStep;
+use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock};
+use courant_solver::bench::{graded_seed_bar, smooth_half_velocity};
 use courant_solver::integrator::OutputRequest;
-use courant_solver::kernel::{LumpedCentralDifference, default_threads, set_default_threads};
-use courant_solver::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock};
-use courant_solver::{CentralDifference, MassOperator, Model};
+use courant_solver::{CentralDifference, Integration, MassOperator, Model};
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -144,12 +146,12 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
                 for (time, mode) in kernel.iter_mut().zip(modes) {
                     *time = time_kernel(&model, options, mode)?;
                 }
-                set_default_threads(Some(1));
-                let one = time_run_loop(&model, options);
-                set_default_threads(None);
-                Ok((kernel, one?, time_run_loop(&model, options)?))
+                let one = time_run_loop(&model, options, Some(1))?;
+                let all = time_run_loop(&model, options, threads::setting())?;
+                Ok((model, kernel, one, all))
             });
-        let ([kernel, energy, blocked, blocked_energy], loop_one, run_loop) = match measured {
+        let (model, [kernel, energy, blocked, blocked_energy], loop_one, run_loop) = match measured
+        {
             Ok(m) => m,
             Err(e) => {
                 eprintln!("error: N = {n}: {e}");
@@ -163,7 +165,9 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
         let ratio = |x: f64| c_row.map(|r| x / r.2);
         table.push(vec![
             n.into(),
-            default_threads(n + 1).into(),
+            run_loop_integration(&model, threads::setting())
+                .threads(&model)
+                .into(),
             c_row.map(|r| r.1.clone()).into(),
             c_row.map(|r| r.2).into(),
             kernel.into(),
@@ -202,11 +206,11 @@ fn check(options: &BenchOptions) -> Result<(), String> {
     if let Some(n) = options
         .sizes
         .iter()
-        .find(|&&n| !(2..=courant_solver::mesh::MAX_ELEMENTS).contains(&n))
+        .find(|&&n| !(2..=courant_solver::model::MAX_ELEMENTS).contains(&n))
     {
         return Err(format!(
             "--sizes: {n} must lie in 2..={} (elements of the bar)",
-            courant_solver::mesh::MAX_ELEMENTS
+            courant_solver::model::MAX_ELEMENTS
         ));
     }
     if !(options.node_steps.is_finite() && (1.0..=1e12).contains(&options.node_steps)) {
@@ -252,7 +256,7 @@ fn steps_for(n: usize, options: &BenchOptions) -> usize {
 /// as in a real run (with fewer steps it would mostly fill and drain).
 fn block_steps_for(n: usize, options: &BenchOptions) -> usize {
     let steps = steps_for(n, options);
-    if n + 1 >= courant_solver::kernel::PARALLEL_FROM_NODES {
+    if n + 1 >= courant_solver::bench::PARALLEL_FROM_NODES {
         steps.max(MAX_BLOCK_STEPS)
     } else {
         steps
@@ -269,8 +273,7 @@ fn median(mut times: Vec<f64>) -> f64 {
 fn time_kernel(model: &Model, options: &BenchOptions, mode: KernelMode) -> Result<f64, String> {
     let n = model.bar().element_count();
     let dt = 0.5 * model.bar().stiffest_element().1;
-    let mut kernel =
-        LumpedCentralDifference::new(model, dt, &vec![0.0; n + 1], &smooth_half_velocity(n));
+    let mut kernel = LumpedStep::new(model, dt, &vec![0.0; n + 1], &smooth_half_velocity(n));
     kernel.set_threads(1);
     let forces = [(0usize, 1.0f64)];
     let mut block = StepBlock::new(&[0], &[], &[]);
@@ -280,7 +283,7 @@ fn time_kernel(model: &Model, options: &BenchOptions, mode: KernelMode) -> Resul
         KernelMode::Blocked | KernelMode::BlockedWithEnergy => block_steps_for(n, options),
     };
     // Blocks of up to MAX_BLOCK_STEPS steps adding up to `steps`.
-    let mut run = |kernel: &mut LumpedCentralDifference, steps: usize| match mode {
+    let mut run = |kernel: &mut LumpedStep, steps: usize| match mode {
         KernelMode::Step => (0..steps).for_each(|_| kernel.step(black_box(&forces))),
         KernelMode::StepWithEnergy => (0..steps).for_each(|_| {
             black_box(kernel.step_with_energy(black_box(&forces)));
@@ -312,12 +315,25 @@ fn time_kernel(model: &Model, options: &BenchOptions, mode: KernelMode) -> Resul
     }
 }
 
+/// The run the run loop is timed with: lumped central difference at half the critical step of
+/// `model`, on `threads` threads (`None`: every core) when it takes blocks of steps.
+fn run_loop_integration(model: &Model, threads: Option<usize>) -> Integration {
+    Integration {
+        threads,
+        ..CentralDifference::new(0.5 * model.bar().stiffest_element().1).integration()
+    }
+}
+
 /// ns per node-step of the run loop: runs of `2 S` and `S` steps, their difference per
 /// node-step, median over the repetitions.
-fn time_run_loop(model: &Model, options: &BenchOptions) -> Result<f64, String> {
+fn time_run_loop(
+    model: &Model,
+    options: &BenchOptions,
+    threads: Option<usize>,
+) -> Result<f64, String> {
     let n = model.bar().element_count();
     let steps = block_steps_for(n, options);
-    let integration = CentralDifference::new(0.5 * model.bar().stiffest_element().1).integration();
+    let integration = run_loop_integration(model, threads);
     let run = |steps: usize| -> Result<f64, String> {
         let request = OutputRequest {
             energy_every: steps,

@@ -11,22 +11,15 @@ pub mod run;
 pub mod schemes;
 pub mod score;
 
-/// Refuse a `COURANT_THREADS` that is set but not a positive integer, naming the variable, the
-/// value and the rule (the solver would otherwise fall back to every core without a word).
+/// Read `COURANT_THREADS` once and keep it for every run of the process
+/// ([`crate::run::threads`]); a value that is set but not a positive integer is refused, naming
+/// the variable, the value and the rule.
 ///
 /// # Errors
 /// The message to print; the caller exits with status 2.
-pub fn check_thread_setting() -> Result<(), String> {
-    match std::env::var("COURANT_THREADS") {
-        Err(std::env::VarError::NotPresent) => Ok(()),
-        Ok(text) if text.trim().parse::<usize>().is_ok_and(|t| t > 0) => Ok(()),
-        Ok(text) => Err(format!(
-            "COURANT_THREADS: {text:?} must be a positive integer (the threads of a lumped run of 1e5 nodes or more; unset: every core)"
-        )),
-        Err(std::env::VarError::NotUnicode(_)) => {
-            Err("COURANT_THREADS: not valid Unicode; it must be a positive integer".to_string())
-        }
-    }
+pub fn read_thread_setting() -> Result<(), String> {
+    crate::run::threads::set(crate::run::threads::from_environment()?);
+    Ok(())
 }
 
 /// Let a closed pipe end the process quietly, as Unix tools do (`courant list | head`): Rust

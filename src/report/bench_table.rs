@@ -8,16 +8,16 @@
 use crate::results::table::Table;
 use std::path::Path;
 
-/// Bytes each node-step reads or writes in the model (8-byte values, every array touched once
-/// per pass): the lumped step reads and writes u and v and reads k and dt/m (48 B); with
-/// energies it also reads m (56 B); the matrix-mass steps as `courant_solver::matrix_kernel`'s
+/// Bytes each node-step reads or writes in the model (8-byte values, every array touched once per
+/// pass): the lumped step reads and writes u and v and reads k and dt/m (48 B); with energies it
+/// also reads m (56 B); the matrix-mass steps as `courant_solver::kernels::matrix_mass::kernel`'s
 /// docs count them: RMM 9 words (72 B), CMM and AMM about 19 (152 B); Park reads u, v, a, dt_e,
-/// q_e, A_i, k_e, 1/m and m and writes u, v, a (12 arrays, 96 B; its u^{n+1} block stays in
-/// cache); a contact step is two lumped steps with energies plus O(1) contact work (56 B per
-/// node); a block of lumped steps (`lumped_cd_block`) passes over the arrays once per sub-block
-/// of [`courant_solver::kernel_tiled::DEPTH`] = 64 steps (48 / 64 and 56 / 64 B).
+/// q_e, A_i, k_e, 1/m and m and writes u, v, a (12 arrays, 96 B; its u^{n+1} block stays in cache);
+/// a contact step is two lumped steps with energies plus O(1) contact work (56 B per node); a block
+/// of lumped steps (`lumped_cd_block`) passes over the arrays once per sub-block of
+/// [`courant_solver::bench::DEPTH`] = 64 steps (48 / 64 and 56 / 64 B).
 fn bytes_per_node_step(group: &str, function: &str) -> Option<f64> {
-    let depth = courant_solver::kernel_tiled::DEPTH as f64;
+    let depth = courant_solver::bench::DEPTH as f64;
     match (group, function) {
         ("lumped_cd_step", "step") => Some(48.0),
         ("lumped_cd_step", "step_with_energy")
@@ -34,10 +34,10 @@ fn bytes_per_node_step(group: &str, function: &str) -> Option<f64> {
 }
 
 /// Time steps one criterion iteration of `group` takes (a block of lumped steps takes
-/// [`courant_solver::kernel_tiled::MAX_BLOCK_STEPS`]).
+/// [`courant_solver::bench::MAX_BLOCK_STEPS`]).
 fn steps_per_iteration(group: &str) -> f64 {
     if group == "lumped_cd_block" {
-        courant_solver::kernel_tiled::MAX_BLOCK_STEPS as f64
+        courant_solver::bench::MAX_BLOCK_STEPS as f64
     } else {
         1.0
     }
@@ -61,10 +61,9 @@ pub fn empty_bench_table() -> Table {
 /// The STREAM triad benchmark (group, function) and its bytes per element.
 const TRIAD: (&str, &str, f64) = ("memory_triad", "triad", 24.0);
 
-/// `benchmark, N, median_ns_per_iteration, ns_per_node_step, model_bytes_per_node_step,
-/// model_GB_per_s, triad_GB_per_s, fraction_of_triad` for every criterion result found under
-/// `criterion_dir` (the triad columns where the triad was measured at the same N); `None` when
-/// there are none (run `cargo bench` first).
+/// `benchmark, N, median_ns_per_iteration, ns_per_node_step, model_bytes_per_node_step, model_GB_per_s, triad_GB_per_s, fraction_of_triad`
+/// for every criterion result found under `criterion_dir` (the triad columns where the triad was
+/// measured at the same N); `None` when there are none (run `cargo bench` first).
 pub fn bench_table(criterion_dir: &Path) -> Option<Table> {
     let mut rows: Vec<(String, String, u64, f64)> = Vec::new();
     for group in std::fs::read_dir(criterion_dir).ok()?.flatten() {

@@ -62,7 +62,8 @@ pub fn measure_mode(
         history_nodes: nodes,
         ..Default::default()
     };
-    let out = integrator.run(&model, steps, &request)?;
+    let out =
+        super::threads::with_setting(&integrator.integration()).run(&model, steps, &request)?;
     let (u_first, u_last) = (u0[0], out.histories[0].samples[steps].displacement);
     let phase_per_step = (u_last / u_first).clamp(-1.0, 1.0).acos() / steps as f64;
     let mut mode_leak = 0.0_f64;

@@ -8,7 +8,8 @@
 //! - [`stepping`]: a time-stepping case (central difference with any mass, Park's scheme);
 //! - [`contact`], [`spectrum`], [`dispersion`], [`sweep`]: contact impacts, dense spectra,
 //!   single-mode phase measurements, critical Courant numbers of contact-active systems;
-//! - [`scene`]: every case of a scene, in parallel, records in case order.
+//! - [`scene`]: every case of a scene, in parallel, records in case order;
+//! - [`threads`]: the thread setting (`COURANT_THREADS`) every run takes.
 //!
 //! Enters: validated cases (`scene`). Leaves: records (`results`), with what each run cost.
 //! Must not know: references, norms, expectations, verdicts, tables, reports.
@@ -19,3 +20,4 @@ pub mod scene;
 pub mod spectrum;
 pub mod stepping;
 pub mod sweep;
+pub mod threads;

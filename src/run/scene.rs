@@ -54,7 +54,8 @@ pub fn run_scene(scene: &Scene) -> Result<SceneRecords, RunError> {
 /// share the cores (scenes of a report and convergence studies still run in parallel with each
 /// other). The records do not depend on the order of running.
 fn run_cases(cases: &[Case]) -> Result<Vec<CaseRecord>, RunError> {
-    let threaded = |case: &Case| case.integrator.threads(&case.model) > 1;
+    let threaded =
+        |case: &Case| super::threads::with_setting(&case.integrator).threads(&case.model) > 1;
     let mut records: Vec<Option<Result<CaseRecord, RunError>>> = cases
         .par_iter()
         .map(|case| (!threaded(case)).then(|| super::stepping::run_case(case)))

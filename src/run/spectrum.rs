@@ -15,7 +15,7 @@ pub fn run_spectrum(case: &SpectrumCase) -> Result<SpectrumRecord, InputError> {
     let computed = case
         .masses
         .iter()
-        .map(|&kind| courant_solver::spectrum::angular_frequencies(&case.model, kind))
+        .map(|&kind| courant_solver::analysis::angular_frequencies(&case.model, kind))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(SpectrumRecord {
         case: case.name.clone(),

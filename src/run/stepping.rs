@@ -15,9 +15,12 @@ pub fn run_case(case: &Case) -> Result<CaseRecord, RunError> {
     let started = Instant::now();
     // The critical steps were computed when the scene was read.
     let (steps, request) = (case.plan.steps, &case.request);
-    let outcome = case
-        .integrator
-        .run_with_critical(&case.model, steps, request, case.critical);
+    let outcome = super::threads::with_setting(&case.integrator).run_with_critical(
+        &case.model,
+        steps,
+        request,
+        case.critical,
+    );
     let wall_time = started.elapsed();
     let (output, status) = match outcome {
         Ok(output) => (output, Status::Completed),

@@ -17,7 +17,7 @@
 //!
 //! Large runs are an explicit opt-in ([`Limits::LARGE`], `courant run --large`): the elements of
 //! one bar, the elements validated and the output values are raised so that a bar of up to
-//! 10^7 elements (the solver's own mesh cap, `courant_solver::mesh::MAX_ELEMENTS`) runs with one
+//! 10^7 elements (the solver's own mesh cap, `courant_solver::model::MAX_ELEMENTS`) runs with one
 //! profile time; the node-step, case and reference limits stay. The defaults ([`Limits::DEFAULT`])
 //! are what every other command, the report and the fuzz tests use.
 //! What a validated scene asks for is estimated by [`super::work`].

@@ -26,7 +26,7 @@ pub struct Limits {
 /// of speed and memory; and validating one takes seconds (10^6 lumped elements validated in 0.47
 /// to 0.9 s here, `scene::budget::MAX_VALIDATED_ELEMENTS`), not the default's quarter second:
 /// that is why they are an opt-in.
-pub const LARGE_ELEMENTS: i64 = courant_solver::mesh::MAX_ELEMENTS as i64;
+pub const LARGE_ELEMENTS: i64 = courant_solver::model::MAX_ELEMENTS as i64;
 
 /// Output values with `--large`: one profile time of the largest bar (six columns), doubled.
 pub const LARGE_OUTPUT_VALUES: f64 = 12.0 * LARGE_ELEMENTS as f64;

@@ -95,13 +95,13 @@ pub(super) fn build(
         };
         for &elements in &geometry.element_counts {
             let bar = bar_of(src, raw, geometry, elements)?;
-            if bar.node_count() > courant_solver::spectrum::MAX_DENSE_NODES {
+            if bar.node_count() > courant_solver::analysis::MAX_DENSE_NODES {
                 return Err(fail(
                     raw.mesh.elements.span(),
                     "mesh.elements",
                     format!(
                         "{elements} elements: a dense spectrum is limited to {} nodes",
-                        courant_solver::spectrum::MAX_DENSE_NODES
+                        courant_solver::analysis::MAX_DENSE_NODES
                     ),
                 ));
             }

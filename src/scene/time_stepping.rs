@@ -122,6 +122,7 @@ pub(super) fn build(
                     start: stepping.start,
                     stability: stepping.stability,
                     scheme: named.scheme.clone(),
+                    threads: None,
                 };
                 let checked = match critical_of_mass {
                     Some(critical) => integrator.check_stability_given(&model, critical),

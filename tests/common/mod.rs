@@ -7,7 +7,7 @@ use courant_solver::{CentralDifference, Model, OutputRequest, RunOutput, Start, 
 /// The homogeneous unit bar of the seed's Fig. 1 (L = A = rho = E = 1, sigma0 = -1), N elements,
 /// loaded by `time` at the free left end, fixed at the right end.
 pub fn fig1_model(n: usize, time: TimeFunction) -> Model {
-    courant_solver::fixtures::seed_bar(n, courant_solver::Field::Constant(1.0), time).unwrap()
+    courant_solver::bench::seed_bar(n, courant_solver::Field::Constant(1.0), time).unwrap()
 }
 
 /// d'Alembert's solution of that bar.

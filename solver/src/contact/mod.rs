@@ -1,13 +1,13 @@
 //! Contact-impact of 1D bars: node-to-node penalty, bipenalty, the stabilized predictor-corrector
 //! scheme and the forward-increment Lagrange multiplier method, on lumped central difference.
 //!
-//! **Enters:** one or two lumped [`Model`](crate::Model)s and a gap made into a
-//! [`ContactProblem`], a [`ContactScheme`] (with its [`Penalty`]) and a time step. **Leaves:** a
-//! [`ContactRun`] (samples, stress profiles, momenta) or a [`ContactError`], and the critical
-//! steps ([`ContactCriticalStep`]). It builds on the bulk's lumped kernel and banded inertia
-//! ([`crate::kernel`], [`crate::banded`]); it must not know scenes, files or the analytic
-//! references (no I/O; `courant_references::contact` is compared with it elsewhere), and the
-//! contact-free integrators do not know it.
+//! **Enters:** one or two lumped [`Model`](crate::Model)s and a gap made into a [`ContactProblem`],
+//! a [`ContactScheme`] (with its [`Penalty`]) and a time step. **Leaves:** a [`ContactRun`]
+//! (samples, stress profiles, momenta) or a [`ContactError`], and the critical steps
+//! ([`ContactCriticalStep`]). It builds on the bulk's lumped kernel and banded inertia
+//! (`kernels::lumped::kernel`, `mass::banded`); it must not know scenes, files or
+//! the analytic references (no I/O; `courant_references::contact` is compared with it elsewhere),
+//! and the contact-free integrators do not know it.
 //!
 //! Files: `problem` (bodies, contact nodes, gap), `penalty` (penalty parameters), `scheme` (the
 //! schemes and their O(1) level update), `stability` (critical steps), `stepper` (the time
@@ -50,7 +50,7 @@
 //! # The level update (all schemes)
 //!
 //! The bulk is the project's lumped central difference in half-step form
-//! ([`crate::kernel::LumpedCentralDifference`], methods.md §2): from `u^n`, `v^{n-1/2}`,
+//! ([`crate::kernels::lumped::kernel::LumpedStep`], methods.md §2): from `u^n`, `v^{n-1/2}`,
 //!
 //! ```text
 //!   u^n = u^{n-1} + dt v^{n-1/2},   a^n = M^-1 (F^n - K u^n + N J^n/dt),   v^{n+1/2} = v^{n-1/2} + dt a^n,
@@ -131,8 +131,8 @@
 //!
 //! The exact critical step of the contact-active system is `2/omega_max` of the pencil
 //! `(K + K_p, M + M_p)`, found by bisection on Sturm counts (Sylvester's inertia of
-//! `K + K_p - x (M + M_p)`; Wilkinson (1965) §5.37), as in [`crate::stability`]; a run passes
-//! through contact-free and contact-active states and must respect both. Closed forms to
+//! `K + K_p - x (M + M_p)`; Wilkinson (1965) §5.37), as in `analysis::stability`; a run
+//! passes through contact-free and contact-active states and must respect both. Closed forms to
 //! compare with: `courant_references::contact` (methods.md §7).
 //!
 //! # Cost

@@ -1,10 +1,10 @@
 //! Contact problems: a bar against a rigid wall (Signorini) or two bars meeting end to end.
 
 use super::penalty::{MassPenalty, Penalty};
-use crate::bar::Bar;
 use crate::error::InputError;
-use crate::load::End;
-use crate::mesh::Mesh;
+use crate::model::bar::Bar;
+use crate::model::load::End;
+use crate::model::mesh::Mesh;
 use crate::model::{InitialConditions, Model, Supports};
 
 /// Which contact a problem has.
@@ -98,7 +98,7 @@ impl ContactProblem {
         velocity: f64,
         initial_gap: f64,
     ) -> Result<Self, InputError> {
-        crate::mesh::positive("impact velocity", velocity)?;
+        crate::model::mesh::positive("impact velocity", velocity)?;
         let free = Supports::default();
         let nodes = striker.node_count();
         let striker = Model::new(
@@ -123,7 +123,7 @@ impl ContactProblem {
         velocity: f64,
         initial_gap: f64,
     ) -> Result<Self, InputError> {
-        crate::mesh::positive("impact velocity", velocity)?;
+        crate::model::mesh::positive("impact velocity", velocity)?;
         let toward = match side {
             End::Left => -velocity,
             End::Right => velocity,
@@ -260,11 +260,11 @@ impl ContactProblem {
     /// [`InputError`] if `beta_s` is not positive and finite, or the mass penalty is invalid
     /// (`r` not positive and finite, `beta_m` negative or not finite).
     pub fn penalty(&self, beta_s: f64, mass: MassPenalty) -> Result<Penalty, InputError> {
-        crate::mesh::positive("beta_s", beta_s)?;
+        crate::model::mesh::positive("beta_s", beta_s)?;
         let beta_m = match mass {
             MassPenalty::None => 0.0,
             MassPenalty::Ratio(r) => {
-                crate::mesh::positive("penalty ratio r", r)?;
+                crate::model::mesh::positive("penalty ratio r", r)?;
                 beta_s / (4.0 * r)
             }
             MassPenalty::Dimensionless(beta_m) => {
@@ -314,9 +314,7 @@ fn contact_node(
     sign: f64,
 ) -> Result<ContactNode, InputError> {
     if model.is_fixed(node) {
-        return Err(InputError::Other(format!(
-            "contact node {node} of body {body} is fixed: a contact end must be free"
-        )));
+        return Err(InputError::ContactNodeFixed { node, body });
     }
     let last = model.bar().node_count() - 1;
     let (neighbour, element) = if node == 0 {

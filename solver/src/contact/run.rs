@@ -33,7 +33,7 @@ impl ContactIntegrator {
     }
 
     /// The critical steps, and an error if `dt` exceeds the applicable one (with the time plan's
-    /// relative allowance [`crate::time_step::ROUNDING_SLACK`]) and unstable runs are not
+    /// relative allowance [`crate::analysis::ROUNDING_SLACK`]) and unstable runs are not
     /// allowed.
     ///
     /// # Errors
@@ -42,10 +42,10 @@ impl ContactIntegrator {
         &self,
         problem: &ContactProblem,
     ) -> Result<ContactCriticalStep, ContactError> {
-        crate::mesh::positive("dt", self.dt)?;
+        crate::model::mesh::positive("dt", self.dt)?;
         self.scheme.validate()?;
         let critical = ContactCriticalStep::of(problem, &self.scheme).map_err(InputError::from)?;
-        if self.dt > critical.applicable * (1.0 + crate::time_step::ROUNDING_SLACK)
+        if self.dt > critical.applicable * (1.0 + crate::analysis::time_step::ROUNDING_SLACK)
             && !self.stability.allow_unstable
         {
             return Err(ContactUnstableError {
@@ -67,12 +67,12 @@ impl ContactIntegrator {
     /// [`ContactError::Input`] for bad parameters or a problem nothing excites,
     /// [`ContactError::Unstable`] above the critical step (unless allowed),
     /// [`ContactError::Diverged`] when an allowed unstable run blows up: the energy of the real
-    /// masses, `kinetic + strain`, exceeds `blowup_energy_ratio` times the largest of its
-    /// initial value, the external work and the loads' one-step impulse energy (as
-    /// the shared time loop's guard ([`crate::integrator`])). Contact is passive: a stable scheme can only keep
-    /// or dissipate energy, so on an impact a ratio of ten already detects an unstable one.
-    /// The penalty terms are left out: the spring energy of a first-step penetration
-    /// `k_s (dt v0)^2/2` grows without bound with `k_s` even when the run is stable.
+    /// masses, `kinetic + strain`, exceeds `blowup_energy_ratio` times the largest of its initial
+    /// value, the external work and the loads' one-step impulse energy (as the shared time loop's
+    /// guard ([`crate::integrator`])). Contact is passive: a stable scheme can only keep or
+    /// dissipate energy, so on an impact a ratio of ten already detects an unstable one. The
+    /// penalty terms are left out: the spring energy of a first-step penetration `k_s (dt v0)^2/2`
+    /// grows without bound with `k_s` even when the run is stable.
     pub fn run(
         &self,
         problem: &ContactProblem,

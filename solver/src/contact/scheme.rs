@@ -114,7 +114,7 @@ impl ContactScheme {
             return Ok(());
         }
         let p = self.penalty();
-        crate::mesh::positive("penalty stiffness k_s", p.stiffness)?;
+        crate::model::mesh::positive("penalty stiffness k_s", p.stiffness)?;
         if !(p.mass.is_finite() && p.mass >= 0.0) {
             return Err(InputError::Parameter {
                 field: "penalty mass m_p",

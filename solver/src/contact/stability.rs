@@ -7,9 +7,9 @@ use std::fmt;
 use super::penalty::Penalty;
 use super::problem::ContactProblem;
 use super::scheme::ContactScheme;
-use crate::banded::SymmetricBanded;
+use crate::analysis::stability::{bisect_top, lift_above_spectrum};
 use crate::error::NoConvergence;
-use crate::stability::{bisect_top, lift_above_spectrum};
+use crate::mass::banded::SymmetricBanded;
 
 /// The symmetric tridiagonal pencil `(K + K_p, M + M_p)` of a contact problem over the global
 /// node numbering (the bodies' nodes one after the other), lumped `M`. Rows and columns of
@@ -190,8 +190,8 @@ impl ContactPencil {
 
     /// Largest eigenvalue by bisection on [`Self::count_below`], to a relative width of about two
     /// ulps, starting from [`Self::row_sum_bound`] (grown if round-off left an eigenvalue above):
-    /// at most [`crate::stability::BOUND_DOUBLINGS`] doublings and
-    /// [`crate::stability::BISECTION_STEPS`] halvings.
+    /// at most [`crate::analysis::BOUND_DOUBLINGS`] doublings and
+    /// [`crate::analysis::BISECTION_STEPS`] halvings.
     ///
     /// # Errors
     /// [`NoConvergence`] when no finite bound above the spectrum is found or the bisection does
@@ -207,8 +207,8 @@ impl ContactPencil {
         bisect_top(hi, 2.0 * f64::EPSILON, all_below)
     }
 
-    /// The same pencil as two [`SymmetricBanded`] matrices (bandwidth 1), for cross-checks with
-    /// [`SymmetricBanded::negative_pivots_of_shifted`].
+    /// The same pencil as two `SymmetricBanded` matrices (bandwidth 1), for cross-checks with
+    /// `SymmetricBanded::negative_pivots_of_shifted`.
     pub fn to_banded(&self) -> (SymmetricBanded, SymmetricBanded) {
         let n = self.order();
         let mut k = SymmetricBanded::zeros(n, 1);
@@ -371,10 +371,10 @@ impl ContactCriticalStep {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bar::Bar;
     use crate::contact::MassPenalty;
-    use crate::load::End;
-    use crate::mesh::Mesh;
+    use crate::model::bar::Bar;
+    use crate::model::load::End;
+    use crate::model::mesh::Mesh;
 
     fn wall(n: usize) -> ContactProblem {
         let bar = Bar::homogeneous(Mesh::uniform(1.0, n).unwrap(), 1.0, 1.0, 1.0).unwrap();

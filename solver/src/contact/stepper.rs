@@ -1,14 +1,15 @@
 //! The contact time loop's state: the per-body bulk steppers (central difference with the lumped
 //! mass, the registry's `cd` stepper, stepped through the [`Integrator`] interface), their loads
-//! and the O(1) contact update of every level (module docs of [`crate::contact`], "The level update"), with the
-//! energies and momenta a run records. It does not check stability or record anything.
+//! and the O(1) contact update of every level (module docs of [`crate::contact`], "The level
+//! update"), with the energies and momenta a run records. It does not check stability or record
+//! anything.
 
 use super::output::{ContactProfile, ContactSample};
 use super::problem::ContactProblem;
 use super::scheme::{ContactScheme, LevelInput, LevelUpdate, level_update};
 use crate::error::InputError;
 use crate::integrator::Integrator;
-use crate::kernel::LumpedCentralDifference;
+use crate::kernels::lumped::kernel::LumpedStep;
 use crate::model::Model;
 use crate::schemes::central_difference::LumpedStepper;
 
@@ -63,8 +64,8 @@ impl BodyForces {
 }
 
 /// A contact problem being integrated: the per-body lumped kernels plus the O(1) contact update.
-/// [`ContactIntegrator::run`](super::ContactIntegrator::run) drives it; benchmarks and tests may step it directly. It does not
-/// check stability.
+/// [`ContactIntegrator::run`](super::ContactIntegrator::run) drives it; benchmarks and tests may
+/// step it directly. It does not check stability.
 #[derive(Debug, Clone)]
 pub struct ContactStepper<'a> {
     problem: &'a ContactProblem,
@@ -93,7 +94,7 @@ impl<'a> ContactStepper<'a> {
         dt: f64,
         scheme: ContactScheme,
     ) -> Result<Self, InputError> {
-        crate::mesh::positive("dt", dt)?;
+        crate::model::mesh::positive("dt", dt)?;
         scheme.validate()?;
         let nodes = problem.contact_nodes();
         let mut bodies = Vec::new();
@@ -147,7 +148,7 @@ impl<'a> ContactStepper<'a> {
                     .map(|(m, v)| m * v * v)
                     .sum::<f64>();
             strain += model.strain_energy(u0);
-            kernels.push(LumpedStepper::from_kernel(LumpedCentralDifference::new(
+            kernels.push(LumpedStepper::from_kernel(LumpedStep::new(
                 model, dt, u0, &v_half,
             )));
         }

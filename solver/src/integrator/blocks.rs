@@ -1,12 +1,15 @@
-//! What the time loop needs to take blocks of steps (temporal blocking, [`crate::kernel_tiled`]):
-//! where the next block ends, and the buffers of a block with the probes that give the loop each
-//! step's loads' displacements and history samples.
+//! What the time loop needs to take blocks of steps (temporal blocking,
+//! [`crate::kernels::lumped::tiled`]): where the next block ends, and the buffers of a block with
+//! the probes that give the loop each step's loads' displacements and history samples.
 
-use super::contract::Integrator;
 use super::settings::OutputRequest;
-use crate::kernel_tiled::{MAX_BLOCK_STEPS, StepBlock};
+use crate::kernels::lumped::tiled::{MAX_BLOCK_STEPS, StepBlock};
 use crate::model::Model;
 use crate::output::{HistorySample, RunOutput};
+
+/// A [`BlockStepper::probed_velocity_and_acceleration`](super::contract::BlockStepper):
+/// `(v^n, a^n)` at a node from the three displacements and the half-step velocity a block recorded.
+pub(super) type Probe<I> = fn(&I, &Model, usize, f64, [f64; 3], f64) -> (f64, f64);
 
 /// The steps of the next block: up to [`MAX_BLOCK_STEPS`], ending at the last step and at the
 /// next profile step (a profile needs the whole bar at its level).
@@ -71,10 +74,12 @@ impl BlockBuffers {
 
     /// The history samples of block row `s` (step `step`, time `t`), as
     /// [`super::record::record`] takes them from the state.
-    pub(super) fn record_histories<I: Integrator>(
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn record_histories<I>(
         &self,
         model: &Model,
         integrator: &I,
+        probe: Probe<I>,
         s: usize,
         step: usize,
         t: f64,
@@ -84,8 +89,7 @@ impl BlockBuffers {
         for (history, (around, at)) in output.histories.iter_mut().zip(&self.history_probes) {
             let i = history.node;
             let three = around.map(|p| u[p]);
-            let (velocity, acceleration) =
-                integrator.probed_velocity_and_acceleration(model, i, t, three, v[*at]);
+            let (velocity, acceleration) = probe(integrator, model, i, t, three, v[*at]);
             history.samples.push(HistorySample {
                 step,
                 time: t,

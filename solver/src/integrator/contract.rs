@@ -3,8 +3,8 @@
 
 use super::settings::Start;
 use crate::error::InputError;
-use crate::kernel::StepEnergy;
-use crate::kernel_tiled::StepBlock;
+use crate::kernels::energy::StepEnergy;
+use crate::kernels::lumped::tiled::StepBlock;
 use crate::mass::MassOperator;
 use crate::model::Model;
 
@@ -35,6 +35,10 @@ pub struct InitialState<'a> {
     pub allow_unstable: bool,
     /// The assembled mass of the run (its to keep: matrix masses are factored once).
     pub mass: MassOperator,
+    /// The threads a [`BlockStepper`]'s blocks of steps may use (resolved by
+    /// [`super::Integration::threads`]; a stepper without blocks steps on one). The results do
+    /// not depend on it.
+    pub threads: usize,
 }
 
 /// One scheme's time stepper, as the shared time loop drives it (static dispatch: the loop is
@@ -92,26 +96,27 @@ pub trait Integrator: Sized {
     fn recomputed_balance_kinetic(&mut self) -> Option<f64> {
         None
     }
+}
 
-    /// Whether the stepper takes blocks of steps in one pass over the bar (temporal blocking,
-    /// [`crate::kernel_tiled`]): then the loop may call [`Integrator::step_block`] and
-    /// [`Integrator::probed_velocity_and_acceleration`] instead of single steps.
-    fn steps_in_blocks(&self) -> bool {
-        false
-    }
-
+/// A stepper that can also take blocks of steps in one pass over the bar (temporal blocking,
+/// [`StepBlock`]): a capability a scheme opts into by implementing this trait for its stepper
+/// and running it with [`time_loop::run_in_blocks`](super::time_loop::run_in_blocks). A stepper
+/// without it implements [`Integrator`] alone and runs with
+/// [`time_loop::run`](super::time_loop::run), by single steps.
+///
+/// Blocks pay where a step streams the whole bar from memory: a block of `S` steps reads each
+/// array once per pass instead of once per step (benches/RESULTS.md, "Blocks of steps (temporal
+/// blocking) and both cores"). The loop then needs, for each step of the block, what a single
+/// step gives it: the energies, the displacements of the loaded nodes, and the history samples,
+/// which a block records as probes.
+pub trait BlockStepper: Integrator {
     /// Advance `steps` steps with the loads of `block.forces`, filling the block's energies and
-    /// probes: bit-identical to `steps` calls of [`Integrator::step`]. Called only when
-    /// [`Integrator::steps_in_blocks`] is true.
-    fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
-        let _ = (block, steps);
-        unreachable!("step_block called on a stepper without blocks of steps");
-    }
+    /// probes: bit-identical to `steps` calls of [`Integrator::step`].
+    fn step_block(&mut self, block: &mut StepBlock, steps: usize);
 
     /// `(v^n, a^n)` at node `i`, time `t = t^n`, from `[u_{i-1}, u_i, u_{i+1}]` and the
     /// half-step velocity `v^{n+1/2}_i` recorded by a block: what
-    /// [`Integrator::velocity_and_acceleration_at`] gives at that level. Called only when
-    /// [`Integrator::steps_in_blocks`] is true.
+    /// [`Integrator::velocity_and_acceleration_at`] gives at that level.
     fn probed_velocity_and_acceleration(
         &self,
         model: &Model,
@@ -119,8 +124,5 @@ pub trait Integrator: Sized {
         t: f64,
         u: [f64; 3],
         half_step_velocity: f64,
-    ) -> (f64, f64) {
-        let _ = (model, i, t, u, half_step_velocity);
-        unreachable!("probed values asked of a stepper without blocks of steps");
-    }
+    ) -> (f64, f64);
 }

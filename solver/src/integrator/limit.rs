@@ -1,7 +1,7 @@
 //! The stability limit of a scheme on a model: the step, what it is called in tables, and what
 //! kind of statement it is (exact, a sufficient bound, or measured).
 
-use crate::stability::CriticalStep;
+use crate::analysis::stability::CriticalStep;
 
 /// What a scheme's limit promises (the refusal rule is the same for all three: a step above
 /// `dt` is refused unless unstable runs are allowed; what theory predicts above it differs).

@@ -23,7 +23,10 @@
 //!    compares with the trapezoidal work at every step (round-off for a conserving scheme, the
 //!    dissipated energy otherwise; a scheme without an energy of its own reports `T* = T`).
 //!    The blow-up guard needs nothing of the scheme: it stops a run whose `T + U` exceeds
-//!    `blowup_energy_ratio` times the largest energy that entered the bar.
+//!    `blowup_energy_ratio` times the largest energy that entered the bar. A stepper that can
+//!    also take blocks of steps in one pass over the bar opts into it by implementing
+//!    [`BlockStepper`] and running with [`time_loop::run_in_blocks`]; every other stepper
+//!    implements [`Integrator`] alone and runs with [`time_loop::run`].
 //! 2. a [`Scheme`]: the stepper with its parameter values, object-safe so a registry can hold
 //!    it. It names itself and its parameters ([`Scheme::label`]), states its cost in
 //!    internal-force evaluations per step ([`Scheme::force_evaluations`]), refuses masses or
@@ -38,11 +41,12 @@
 //! parameters (keys of a scene's `[integrator]`, with defaults, rules and meaning), the masses
 //! and the source, and builds the [`Scheme`] from the values.
 //!
-//! Files: `contract` ([`Integrator`], [`InitialState`]), `scheme` ([`Scheme`], [`Integration`]),
-//! `registry` ([`SchemeEntry`] and parameters), `limit` ([`SchemeLimit`]), `measure` (the
-//! measured critical step), `time_loop` (the loop, by single steps or by blocks of steps for a
-//! stepper with temporal blocking), `blocks` (a block's end and buffers), `guard` (blow-up detection), `record`
-//! (profiles and histories), `settings` (start, stability policy, output request).
+//! Files: `contract` ([`Integrator`], [`BlockStepper`], [`InitialState`]), `scheme`
+//! ([`Scheme`], [`Integration`]), `registry` ([`SchemeEntry`] and parameters), `limit`
+//! ([`SchemeLimit`]), `measure` (the measured critical step), `time_loop` (the loop, by single
+//! steps or by blocks of steps for a [`BlockStepper`]), `blocks` (a block's end and buffers),
+//! `guard` (blow-up detection), `record` (profiles and histories), `settings` (start, stability
+//! policy, output request).
 
 mod blocks;
 mod contract;
@@ -55,7 +59,9 @@ mod scheme;
 mod settings;
 pub mod time_loop;
 
-pub use contract::{InitialState, Integrator};
+pub use crate::kernels::energy::StepEnergy;
+pub use crate::kernels::lumped::tiled::StepBlock;
+pub use contract::{BlockStepper, InitialState, Integrator};
 pub use limit::{LimitKind, SchemeLimit};
 pub use measure::{MEASURED_PRECISION, measure_critical_step};
 pub use registry::{

@@ -22,9 +22,7 @@ pub(super) fn validate_request(
         });
     }
     if let Some(&step) = request.profile_steps.iter().find(|&&s| s > steps) {
-        return Err(InputError::Other(format!(
-            "profile step {step} is after the last step {steps}"
-        )));
+        return Err(InputError::ProfileAfterLastStep { step, last: steps });
     }
     if request.history_every == 0 || request.energy_every == 0 {
         return Err(InputError::Other(

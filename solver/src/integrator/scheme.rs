@@ -5,11 +5,12 @@
 use super::limit::SchemeLimit;
 use super::record::validate_request;
 use super::settings::{OutputRequest, StabilityPolicy, Start};
+use crate::analysis::stability::CriticalStep;
 use crate::error::{InputError, RunError, UnstableStepError};
+use crate::kernels::lumped::PARALLEL_FROM_NODES;
 use crate::mass::{MassKind, MassOperator};
 use crate::model::Model;
 use crate::output::RunOutput;
-use crate::stability::CriticalStep;
 use std::sync::Arc;
 
 /// What the time loop is given besides the scheme's parameters.
@@ -29,6 +30,8 @@ pub struct RunSetup<'a> {
     pub steps: usize,
     /// What to record.
     pub request: &'a OutputRequest,
+    /// The threads a stepper's blocks of steps may use ([`Integration::threads`]).
+    pub threads: usize,
 }
 
 /// A scheme with its parameters, ready to run on any model (what a registry entry builds from
@@ -60,13 +63,12 @@ pub trait Scheme: std::fmt::Debug + Send + Sync {
     /// As [`Integration::run`].
     fn run(&self, setup: RunSetup<'_>) -> Result<RunOutput, RunError>;
 
-    /// Threads one run of this scheme with `mass` on `model` uses (1 unless its stepper runs
-    /// blocks of steps on several threads: lumped central difference from
-    /// [`crate::kernel::PARALLEL_FROM_NODES`] on). A caller running several cases at once runs
-    /// the multi-threaded ones one at a time.
-    fn threads(&self, model: &Model, mass: MassKind, allow_unstable: bool) -> usize {
-        let _ = (model, mass, allow_unstable);
-        1
+    /// Whether a run of this scheme with `mass` takes blocks of steps
+    /// ([`super::time_loop::run_in_blocks`]: lumped central difference, when the run must stay
+    /// stable), the only runs that use several threads ([`Integration::threads`]).
+    fn takes_blocks(&self, mass: MassKind, allow_unstable: bool) -> bool {
+        let _ = (mass, allow_unstable);
+        false
     }
 }
 
@@ -84,6 +86,12 @@ pub struct Integration {
     pub stability: StabilityPolicy,
     /// The scheme.
     pub scheme: Arc<dyn Scheme>,
+    /// The threads a run that takes blocks of steps ([`Scheme::takes_blocks`]) uses on a bar of
+    /// [`PARALLEL_FROM_NODES`] nodes or more: `None` for every core the process may use
+    /// (`std::thread::available_parallelism`). A setting of the run, not of the process: the
+    /// `courant` binary resolves `COURANT_THREADS` once and sets it here. The results do not
+    /// depend on it (bit-identical whatever the count).
+    pub threads: Option<usize>,
 }
 
 impl Integration {
@@ -95,19 +103,31 @@ impl Integration {
             start: Start::HalfStep,
             stability: StabilityPolicy::default(),
             scheme,
+            threads: None,
         }
     }
 
-    /// Threads a run with these settings uses on `model` ([`Scheme::threads`]).
+    /// Threads a run with these settings uses on `model`: 1 unless it takes blocks of steps
+    /// ([`Scheme::takes_blocks`]) on a bar of [`PARALLEL_FROM_NODES`] nodes or more, then
+    /// [`Integration::threads`] (every core the process may use if unset). A caller running
+    /// several cases at once runs the multi-threaded ones one at a time.
     pub fn threads(&self, model: &Model) -> usize {
-        self.scheme
-            .threads(model, self.mass, self.stability.allow_unstable)
+        let blocks = self
+            .scheme
+            .takes_blocks(self.mass, self.stability.allow_unstable);
+        if !blocks || model.bar().node_count() < PARALLEL_FROM_NODES {
+            return 1;
+        }
+        self.threads
+            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+            .max(1)
     }
 
     /// The critical steps of the mass, after refusing `dt` above the scheme's limit
-    /// ([`Scheme::limit`]) with the relative allowance [`crate::time_step::ROUNDING_SLACK`] of
-    /// the time plan (so that Co = 1 on a free-free uniform bar, where `dt = dt_crit`, is
-    /// accepted after the plan's rounding), unless unstable runs are allowed.
+    /// ([`Scheme::limit`]) with the relative allowance
+    /// [`crate::analysis::ROUNDING_SLACK`] of the time plan (so that Co = 1 on a
+    /// free-free uniform bar, where `dt = dt_crit`, is accepted after the plan's rounding), unless
+    /// unstable runs are allowed.
     ///
     /// # Errors
     /// [`RunError::Input`] for settings the scheme does not take, [`RunError::Unstable`] above
@@ -152,18 +172,17 @@ impl Integration {
     /// [`Self::check_stability`]).
     fn check_step(&self, model: &Model, critical: CriticalStep) -> Result<CriticalStep, RunError> {
         if critical.mass != self.mass {
-            return Err(InputError::Other(format!(
-                "critical steps of the {} mass given for a run with the {} mass",
-                critical.mass.label(),
-                self.mass.label()
-            ))
+            return Err(InputError::CriticalStepsOfAnotherMass {
+                given: critical.mass.label(),
+                run: self.mass.label(),
+            }
             .into());
         }
         if self.stability.allow_unstable {
             return Ok(critical);
         }
         let limit = self.limit(model, &critical);
-        if self.dt > limit.dt() * (1.0 + crate::time_step::ROUNDING_SLACK) {
+        if self.dt > limit.dt() * (1.0 + crate::analysis::time_step::ROUNDING_SLACK) {
             return Err(UnstableStepError {
                 dt: self.dt,
                 dt_crit: limit.dt(),
@@ -189,7 +208,7 @@ impl Integration {
         steps: usize,
         request: &OutputRequest,
     ) -> Result<RunOutput, RunError> {
-        crate::mesh::positive("dt", self.dt)?;
+        crate::model::mesh::positive("dt", self.dt)?;
         validate_request(model, steps, request)?;
         self.scheme.check_settings(self.mass, self.start)?;
         let operator = MassOperator::new(model, self.mass)?;
@@ -210,16 +229,16 @@ impl Integration {
         request: &OutputRequest,
         critical: CriticalStep,
     ) -> Result<RunOutput, RunError> {
-        crate::mesh::positive("dt", self.dt)?;
+        crate::model::mesh::positive("dt", self.dt)?;
         validate_request(model, steps, request)?;
         self.check_stability_given(model, critical)?;
         let operator = MassOperator::new(model, self.mass)?;
         self.run_assembled(model, steps, request, operator)
     }
 
-    /// The time loop of [`Self::run`] with the mass already assembled (`MassOperator::new(model,
-    /// self.mass)`) and the request and step already checked: what the benchmarks time, the
-    /// assembly and the critical step left out.
+    /// The time loop of [`Self::run`] with the mass already assembled
+    /// (`MassOperator::new(model, self.mass)`) and the request and step already checked: what the
+    /// benchmarks time, the assembly and the critical step left out.
     ///
     /// # Errors
     /// As [`Self::run`]'s time loop.
@@ -238,6 +257,7 @@ impl Integration {
             mass,
             steps,
             request,
+            threads: self.threads(model),
         })
     }
 }
@@ -247,10 +267,10 @@ pub fn lumped_only(scheme: &str, mass: MassKind) -> Result<(), InputError> {
     if mass == MassKind::Lumped {
         Ok(())
     } else {
-        Err(InputError::Other(format!(
-            "{scheme} runs with the lumped mass only, not {}",
-            mass.label()
-        )))
+        Err(InputError::LumpedMassOnly {
+            scheme: scheme.to_string(),
+            mass: mass.label(),
+        })
     }
 }
 

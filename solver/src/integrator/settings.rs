@@ -19,7 +19,7 @@ pub enum Start {
 pub struct StabilityPolicy {
     /// Run even when `dt` exceeds the exact critical step (for Park's scheme also
     /// `alpha_e > 1`, run with the true `alpha_e`:
-    /// [`ParkScheme::allowing_unstable`](crate::park::ParkScheme::allowing_unstable)).
+    /// [`ParkStep::allowing_unstable`](crate::kernels::park::ParkStep::allowing_unstable)).
     pub allow_unstable: bool,
     /// A run stops as diverged when `kinetic + strain` exceeds this multiple of its energy
     /// reference (largest of the initial energy and the external work so far).

@@ -17,34 +17,34 @@
 //! the trapezoidal work increment, exactly. So `E^n - W^n` is constant to round-off; for a
 //! dissipative scheme its drift is the energy the scheme removed.
 //!
-//! **Blocks of steps.** A stepper with temporal blocking ([`Integrator::steps_in_blocks`]:
-//! lumped central difference, [`crate::kernel_tiled`]) takes up to [`crate::kernel_tiled::MAX_BLOCK_STEPS`] steps per
-//! call when the run must stay stable (`allow_unstable` off); a block ends at the last step and
-//! at every profile step. The stepper returns every step's energies and the displacements of the
-//! loaded nodes and of each history node and its neighbours (with its half-step velocity), so
-//! the loop does exactly the per-step work above on exactly the same numbers: the work, the
-//! balance, the guard, the energy samples and the histories of every step are bit-identical to
-//! single steps. If the guard trips inside a block (a stable run can trip it: the guard's ratio
-//! is the scene's `blowup_energy_ratio`, any positive value), the step, time and energy ratio
-//! are the step's, but the state is past it; the run is then repeated by single steps (it is
-//! deterministic: the same trip, the same partial output), so the error names the node of
-//! largest `|u|` at its own step. That second run is the only cost, and only on failure. A run
-//! allowed to be unstable steps singly from the start.
+//! **Blocks of steps.** A stepper with temporal blocking ([`BlockStepper`], run by
+//! [`run_in_blocks`]: lumped central difference, `kernels::lumped::tiled`) takes up to
+//! [`crate::kernels::lumped::tiled::MAX_BLOCK_STEPS`] steps per call when the run must stay stable
+//! (`allow_unstable` off); a block ends at the last step and at every profile step. The stepper
+//! returns every step's energies and the displacements of the loaded nodes and of each history node
+//! and its neighbours (with its half-step velocity), so the loop does exactly the per-step work
+//! above on exactly the same numbers: the work, the balance, the guard, the energy samples and the
+//! histories of every step are bit-identical to single steps. If the guard trips inside a block (a
+//! stable run can trip it: the guard's ratio is the scene's `blowup_energy_ratio`, any positive
+//! value), the step, time and energy ratio are the step's, but the state is past it; the run is
+//! then repeated by single steps (it is deterministic: the same trip, the same partial output), so
+//! the error names the node of largest `|u|` at its own step. That second run is the only cost, and
+//! only on failure. A run allowed to be unstable steps singly from the start.
 
-use super::blocks::{BlockBuffers, block_depth};
-use super::contract::{InitialState, Integrator};
+use super::blocks::{BlockBuffers, Probe, block_depth};
+use super::contract::{BlockStepper, InitialState, Integrator};
 use super::guard::{BlowUpGuard, impulse_energy};
 use super::record::{record, record_profile};
 use super::scheme::RunSetup;
 use super::settings::OutputRequest;
 use crate::error::{DivergenceError, RunError};
-use crate::kernel::StepEnergy;
-use crate::mass::MassOperator;
+use crate::kernels::energy::StepEnergy;
+use crate::kernels::lumped::tiled::StepBlock;
 use crate::model::Model;
 use crate::output::{EnergyLog, EnergySample, NodeHistory, RunOutput};
 
-/// Run `setup.steps` steps of the scheme whose stepper is `I`, with its `parameters`. The caller
-/// ([`super::Integration::run`]) has validated the request and the step.
+/// Run `setup.steps` steps of the scheme whose stepper is `I`, with its `parameters`, by single
+/// steps. The caller ([`super::Integration::run`]) has validated the request and the step.
 ///
 /// # Errors
 /// [`RunError::Input`] when the stepper refuses its parameters, [`RunError::Diverged`] with the
@@ -53,14 +53,54 @@ pub fn run<I: Integrator>(
     parameters: &I::Parameters,
     setup: RunSetup<'_>,
 ) -> Result<RunOutput, RunError> {
-    // Kept to repeat the run by single steps if the guard trips inside a block (only a lumped
-    // run that must stay stable takes blocks; its mass is shared, so the copy is cheap).
-    let lumped = matches!(setup.mass, MassOperator::Diagonal { .. });
-    let single_steps = takes_blocks(lumped, setup.stability.allow_unstable).then(|| setup.clone());
-    match run_steps::<I>(parameters, setup, true) {
+    run_with::<I>(parameters, setup, None)
+}
+
+/// [`run`] for a stepper that takes blocks of steps ([`BlockStepper`]): blocks when the run must
+/// stay stable ([`takes_blocks`]), single steps otherwise; the same outputs either way.
+///
+/// # Errors
+/// As [`run`].
+pub fn run_in_blocks<I: BlockStepper>(
+    parameters: &I::Parameters,
+    setup: RunSetup<'_>,
+) -> Result<RunOutput, RunError> {
+    let blocks = Blocks {
+        step: I::step_block,
+        probe: I::probed_velocity_and_acceleration,
+    };
+    run_with(parameters, setup, Some(blocks))
+}
+
+/// The block capability of a [`BlockStepper`], as the loop calls it (once per block, and once per
+/// history sample of a block): the loop itself is compiled once per stepper for both kinds.
+struct Blocks<I> {
+    step: fn(&mut I, &mut StepBlock, usize),
+    probe: Probe<I>,
+}
+
+impl<I> Clone for Blocks<I> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<I> Copy for Blocks<I> {}
+
+/// The run, repeated by single steps if the guard trips inside a block.
+fn run_with<I: Integrator>(
+    parameters: &I::Parameters,
+    setup: RunSetup<'_>,
+    blocks: Option<Blocks<I>>,
+) -> Result<RunOutput, RunError> {
+    // Kept to repeat the run by single steps if the guard trips inside a block (only a run
+    // that takes blocks can; its mass is diagonal and shared, so the copy is cheap).
+    let single_steps =
+        takes_blocks(blocks.is_some(), setup.stability.allow_unstable).then(|| setup.clone());
+    match run_steps::<I>(parameters, setup, blocks) {
         Stop::Finished(result) => result,
         Stop::TrippedInsideBlock(error) => match single_steps {
-            Some(setup) => match run_steps::<I>(parameters, setup, false) {
+            Some(setup) => match run_steps::<I>(parameters, setup, None) {
                 Stop::Finished(result) => result,
                 Stop::TrippedInsideBlock(error) => Err(error),
             },
@@ -69,11 +109,11 @@ pub fn run<I: Integrator>(
     }
 }
 
-/// Whether a run steps in blocks of steps: its stepper has them (`stepper_has_blocks`: the
-/// lumped central-difference kernel) and the run must stay stable (an allowed unstable run
-/// steps singly, so a divergence names the node of its own step). The one statement of the
-/// rule: the loop, and [`crate::integrator::Scheme::threads`] (blocks are what run on several
-/// threads), ask it.
+/// Whether a run steps in blocks of steps: its stepper has them (`stepper_has_blocks`: a
+/// [`BlockStepper`], as lumped central difference's) and the run must stay stable (an allowed
+/// unstable run steps singly, so a divergence names the node of its own step). The one statement of
+/// the rule: the loop, and [`crate::integrator::Scheme::takes_blocks`] (blocks are what run on
+/// several threads), ask it.
 pub fn takes_blocks(stepper_has_blocks: bool, allow_unstable: bool) -> bool {
     stepper_has_blocks && !allow_unstable
 }
@@ -86,8 +126,12 @@ enum Stop {
     TrippedInsideBlock(RunError),
 }
 
-/// The loop of [`run`]; `blocks`: whether a stepper with temporal blocking may take blocks.
-fn run_steps<I: Integrator>(parameters: &I::Parameters, setup: RunSetup<'_>, blocks: bool) -> Stop {
+/// The loop of [`run`]; `blocks`: the stepper's blocks of steps, if it has them and may take them.
+fn run_steps<I: Integrator>(
+    parameters: &I::Parameters,
+    setup: RunSetup<'_>,
+    blocks: Option<Blocks<I>>,
+) -> Stop {
     match run_steps_result::<I>(parameters, setup, blocks) {
         Ok(output) => Stop::Finished(Ok(output)),
         Err(Tripped::InsideBlock(error)) => Stop::TrippedInsideBlock(error),
@@ -104,7 +148,7 @@ enum Tripped {
 fn run_steps_result<I: Integrator>(
     parameters: &I::Parameters,
     setup: RunSetup<'_>,
-    allow_blocks: bool,
+    block_steps: Option<Blocks<I>>,
 ) -> Result<RunOutput, Tripped> {
     let RunSetup {
         model,
@@ -114,6 +158,7 @@ fn run_steps_result<I: Integrator>(
         mass: operator,
         steps,
         request,
+        threads,
     } = setup;
     let nodes = model.bar().node_count();
 
@@ -161,6 +206,7 @@ fn run_steps_result<I: Integrator>(
             start,
             allow_unstable: stability.allow_unstable,
             mass: operator,
+            threads,
         },
     )
     .map_err(|e| Tripped::No(e.into()))?;
@@ -228,16 +274,16 @@ fn run_steps_result<I: Integrator>(
     let mut after = vec![0.0; forces.len()];
     // Temporal blocking where the stepper has it, for runs that must stay stable (an allowed
     // unstable run steps singly, so a divergence names the node of its own step).
-    let mut blocks = (allow_blocks
-        && takes_blocks(integrator.steps_in_blocks(), stability.allow_unstable))
-    .then(|| BlockBuffers::new(model, &load_nodes, request));
+    let mut blocks = block_steps
+        .filter(|_| takes_blocks(true, stability.allow_unstable))
+        .map(|ops| (ops, BlockBuffers::new(model, &load_nodes, request)));
     let mut step = 0;
     while step < steps {
         let depth = match &blocks {
             Some(_) => block_depth(step, steps, next_profile.peek().copied().copied()),
             None => 1,
         };
-        if let (Some(buffers), true) = (&mut blocks, depth >= 2) {
+        if let (Some((ops, buffers)), true) = (&mut blocks, depth >= 2) {
             for (slot, f) in displaced.iter_mut().zip(&forces) {
                 *slot = integrator.displacement()[f.0];
             }
@@ -249,7 +295,7 @@ fn run_steps_result<I: Integrator>(
                     *cell = f.1;
                 }
             }
-            integrator.step_block(&mut buffers.block, depth);
+            (ops.step)(&mut integrator, &mut buffers.block, depth);
             for s in 0..depth {
                 step += 1;
                 let t = step as f64 * dt;
@@ -271,7 +317,15 @@ fn run_steps_result<I: Integrator>(
                 }
                 sample_energy(&ledger, step, steps, t, sums, request, &mut output, || None);
                 if step.is_multiple_of(request.history_every) {
-                    buffers.record_histories(model, &integrator, s, step, t, &mut output);
+                    buffers.record_histories(
+                        model,
+                        &integrator,
+                        ops.probe,
+                        s,
+                        step,
+                        t,
+                        &mut output,
+                    );
                 }
                 std::mem::swap(&mut displaced, &mut after);
             }

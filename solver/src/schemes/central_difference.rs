@@ -1,5 +1,6 @@
-//! Central difference through the integrator interface: the `cd` registry entry, its steppers
-//! (the fused lumped kernel, [`crate::kernel`]; the matrix-mass kernel, [`crate::matrix_kernel`]).
+//! Central difference through the integrator interface: the `cd` registry entry, its steppers (the
+//! fused lumped kernel, `kernels::lumped::kernel`; the matrix-mass kernel,
+//! `kernels::matrix_mass::kernel`).
 //!
 //! Half-step form of the seed's predictor-corrector eqs. 2-4 (methods.md §2): from `u^n`,
 //! `v^{n+1/2}`, `u^{n+1} = u^n + dt v^{n+1/2}`, `a^{n+1} = M^-1 (F^{n+1} - K u^{n+1})`,
@@ -8,17 +9,19 @@
 //! conserved exactly (module docs of [`crate::integrator::time_loop`]). Limit `2/omega_max`.
 //! One internal-force evaluation per step.
 
+use crate::analysis::stability::CriticalStep;
 use crate::error::{InputError, RunError};
 use crate::integrator::{
-    InitialState, Integrator, RunSetup, Scheme, SchemeEntry, SchemeLimit, Start, time_loop,
+    BlockStepper, InitialState, Integrator, RunSetup, Scheme, SchemeEntry, SchemeLimit, Start,
+    time_loop,
 };
-use crate::kernel::{LumpedCentralDifference, StepEnergy};
-use crate::kernel_tiled::StepBlock;
+use crate::kernels::energy::StepEnergy;
+use crate::kernels::lumped::kernel::LumpedStep;
+use crate::kernels::lumped::tiled::StepBlock;
+use crate::kernels::matrix_mass::kernel::{MatrixMassStep, StartState};
 use crate::mass::{MassKind, MassOperator};
-use crate::matrix_kernel::{MatrixCentralDifference, StartState};
 use crate::model::Model;
 use crate::output::RunOutput;
-use crate::stability::CriticalStep;
 use std::sync::Arc;
 
 /// The registry entry of central difference.
@@ -57,19 +60,15 @@ impl Scheme for CentralDifferenceScheme {
         SchemeLimit::central_difference(critical)
     }
 
-    /// Runs that take blocks of steps ([`time_loop::takes_blocks`]: the lumped kernel has them)
-    /// run them on [`crate::kernel::default_threads`] threads; every other run on one.
-    fn threads(&self, model: &Model, mass: MassKind, allow_unstable: bool) -> usize {
-        if time_loop::takes_blocks(mass == MassKind::Lumped, allow_unstable) {
-            crate::kernel::default_threads(model.bar().node_count())
-        } else {
-            1
-        }
+    /// The lumped stepper has blocks of steps ([`time_loop::takes_blocks`] says when a run
+    /// takes them); the matrix-mass steppers step singly.
+    fn takes_blocks(&self, mass: MassKind, allow_unstable: bool) -> bool {
+        time_loop::takes_blocks(mass == MassKind::Lumped, allow_unstable)
     }
 
     fn run(&self, setup: RunSetup<'_>) -> Result<RunOutput, RunError> {
         match setup.mass {
-            MassOperator::Diagonal { .. } => time_loop::run::<LumpedStepper>(&(), setup),
+            MassOperator::Diagonal { .. } => time_loop::run_in_blocks::<LumpedStepper>(&(), setup),
             _ => time_loop::run::<MatrixStepper>(&(), setup),
         }
     }
@@ -119,31 +118,28 @@ pub trait CentralDifferenceKernel: Sized {
     fn staggered_from_mass(&mut self) -> Option<f64> {
         None
     }
-    /// Whether [`Self::step_block`] is available (the lumped kernel's temporal blocking).
-    fn steps_in_blocks(&self) -> bool {
-        false
-    }
-    /// `steps` steps with their energies in one pass ([`crate::kernel_tiled`]).
-    fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
-        let _ = (block, steps);
-        unreachable!("a matrix-mass kernel has no blocks of steps");
-    }
-    /// `a^n` at node `i` from `[u_{i-1}, u_i, u_{i+1}]` recorded by a block (only a kernel with
-    /// blocks of steps is asked).
-    fn probed_acceleration(&self, model: &Model, i: usize, t: f64, u: [f64; 3]) -> f64 {
-        let _ = (model, i, t, u);
-        unreachable!("a matrix-mass kernel has no blocks of steps");
-    }
 }
 
-impl CentralDifferenceKernel for LumpedCentralDifference {
+/// A central-difference kernel that also takes blocks of steps (the lumped kernel's temporal
+/// blocking, `kernels::lumped::tiled`): its stepper is then a [`BlockStepper`].
+pub trait BlockKernel: CentralDifferenceKernel {
+    /// `steps` steps with their energies in one pass, bit-identical to single steps.
+    fn step_block(&mut self, block: &mut StepBlock, steps: usize);
+    /// `a^n` at node `i` from `[u_{i-1}, u_i, u_{i+1}]` recorded by a block, as
+    /// [`CentralDifferenceKernel::acceleration_at`] forms it from the state.
+    fn probed_acceleration(&self, model: &Model, i: usize, t: f64, u: [f64; 3]) -> f64;
+}
+
+impl CentralDifferenceKernel for LumpedStep {
     fn build(state: InitialState<'_>, half_step_velocity: Vec<f64>, _: f64) -> Self {
-        Self::with_half_step_velocity(
+        let mut kernel = Self::with_half_step_velocity(
             state.model,
             state.dt,
             state.displacement,
             half_step_velocity,
-        )
+        );
+        kernel.set_threads(state.threads);
+        kernel
     }
     fn dt(&self) -> f64 {
         self.dt()
@@ -162,19 +158,19 @@ impl CentralDifferenceKernel for LumpedCentralDifference {
     fn step_with_energy(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
         self.step_with_energy(forces)
     }
-    fn steps_in_blocks(&self) -> bool {
-        true
-    }
+}
+
+impl BlockKernel for LumpedStep {
     fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
         self.advance_block::<true>(block, steps);
     }
-    /// The lumped acceleration, as [`Self::acceleration_at`] forms it from the state.
+    /// The lumped acceleration, as `acceleration_at` forms it from the state.
     fn probed_acceleration(&self, model: &Model, i: usize, t: f64, u: [f64; 3]) -> f64 {
         model.acceleration_from(i, u, t)
     }
 }
 
-impl CentralDifferenceKernel for MatrixCentralDifference {
+impl CentralDifferenceKernel for MatrixMassStep {
     fn build(state: InitialState<'_>, half_step_velocity: Vec<f64>, staggered0: f64) -> Self {
         let start = StartState {
             displacement: state.displacement,
@@ -216,10 +212,10 @@ pub struct CentralDifferenceStepper<K> {
 }
 
 /// Central difference with the lumped mass: the fused kernel.
-pub type LumpedStepper = CentralDifferenceStepper<LumpedCentralDifference>;
+pub type LumpedStepper = CentralDifferenceStepper<LumpedStep>;
 
 /// Central difference with a consistent, averaged or reciprocal mass.
-pub type MatrixStepper = CentralDifferenceStepper<MatrixCentralDifference>;
+pub type MatrixStepper = CentralDifferenceStepper<MatrixMassStep>;
 
 impl<K: CentralDifferenceKernel> CentralDifferenceStepper<K> {
     /// The stepper around a kernel already started (the contact schemes start it with their
@@ -274,11 +270,9 @@ impl<K: CentralDifferenceKernel> Integrator for CentralDifferenceStepper<K> {
     fn recomputed_balance_kinetic(&mut self) -> Option<f64> {
         self.kernel.staggered_from_mass()
     }
+}
 
-    fn steps_in_blocks(&self) -> bool {
-        self.kernel.steps_in_blocks()
-    }
-
+impl<K: BlockKernel> BlockStepper for CentralDifferenceStepper<K> {
     fn step_block(&mut self, block: &mut StepBlock, steps: usize) {
         self.kernel.step_block(block, steps);
     }

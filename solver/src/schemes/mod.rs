@@ -1,10 +1,15 @@
 //! The time-integration schemes, each written against the public integrator interface
 //! ([`crate::integrator`]), and the registry scenes name them through.
 //!
-//! **Enters:** the interface and the step kernels (`kernel`, `matrix_kernel`, `park`).
-//! **Leaves:** [`REGISTRY`] (what scenes, `courant list --schemes` and the report see) and each
-//! scheme's public types. Schemes know the interface, never the reverse, and never each other
+//! **Enters:** the interface and the step kernels (`kernels`: `lumped`, `matrix_mass`,
+//! `park`). **Leaves:** [`REGISTRY`] (what scenes, `courant list --schemes` and the report see) and
+//! each scheme's public types. Schemes know the interface, never the reverse, and never each other
 //! (Park's start reuses central difference's `half_step_start`, the one exception).
+//!
+//! Names: a scheme's `Scheme` (its parameters, what the registry builds) is `XxxScheme`, its
+//! `Integrator` (what the time loop drives) `XxxStepper`, and the arithmetic of its step, where
+//! it is a type of its own in `kernels`, `XxxStep` (`LumpedStep`, `MatrixMassStep`,
+//! `ParkStep`).
 //!
 //! Adding a scheme: one file here (its `Integrator`, its `Scheme` and its `SchemeEntry`, as
 //! `noh_bathe.rs`), its `pub mod` line and its line in [`REGISTRY`]. Nothing else changes: every

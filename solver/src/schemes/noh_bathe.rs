@@ -52,16 +52,16 @@
 //!   p^2 Omega^2/4), 1)`), so it is the balance energy here: `T* = T - (p dt)^2/8 a M a`, and
 //!   the balance reports what the scheme dissipates.
 
+use crate::analysis::stability::CriticalStep;
 use crate::error::{InputError, RunError};
 use crate::integrator::{
     InitialState, Integrator, LimitKind, Parameter, ParameterDefault, RunSetup, Scheme,
     SchemeEntry, SchemeLimit, Start, time_loop,
 };
-use crate::kernel::StepEnergy;
+use crate::kernels::energy::StepEnergy;
 use crate::mass::{MassKind, MassOperator};
 use crate::model::Model;
 use crate::output::RunOutput;
-use crate::stability::CriticalStep;
 use std::sync::Arc;
 
 /// The registry entry.
@@ -80,7 +80,7 @@ pub const ENTRY: SchemeEntry = SchemeEntry {
                   every mode grows; above 3/4 the limit is another root, not implemented)",
     }],
     build: |values| {
-        Ok(Arc::new(NohBathe {
+        Ok(Arc::new(NohBatheScheme {
             p: values.number_in("p", 0.5, 0.75)?,
         }) as Arc<dyn Scheme>)
     },
@@ -88,12 +88,12 @@ pub const ENTRY: SchemeEntry = SchemeEntry {
 
 /// The Noh-Bathe scheme with splitting parameter `p`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct NohBathe {
+pub struct NohBatheScheme {
     /// Splitting parameter, in `[1/2, 3/4]`.
     pub p: f64,
 }
 
-impl NohBathe {
+impl NohBatheScheme {
     /// `Omega_crit = omega_max dt_crit = 2/sqrt((1 - p)(3p - 1))` for `1/2 <= p <= 3/4`.
     pub fn critical_omega(p: f64) -> f64 {
         2.0 / ((1.0 - p) * (3.0 * p - 1.0)).sqrt()
@@ -121,7 +121,7 @@ impl NohBathe {
     }
 }
 
-impl Scheme for NohBathe {
+impl Scheme for NohBatheScheme {
     fn name(&self) -> &'static str {
         ENTRY.name
     }
@@ -211,10 +211,10 @@ impl Integrator for NohBatheStepper {
     type Parameters = f64;
 
     fn start(&p: &f64, state: InitialState<'_>) -> Result<Self, InputError> {
-        NohBathe::check(p)?;
+        NohBatheScheme::check(p)?;
         let (dt, n) = (state.dt, state.displacement.len());
         let (h1, h2) = (p * dt, (1.0 - p) * dt);
-        let [w0, w1, w2] = NohBathe::velocity_weights(p);
+        let [w0, w1, w2] = NohBatheScheme::velocity_weights(p);
         let mut stiffness = vec![0.0; n + 1];
         stiffness[1..n].copy_from_slice(state.model.stiffness());
         let mut load_nodes: Vec<usize> = state.model.loads().iter().map(|l| l.node).collect();

@@ -1,5 +1,5 @@
 //! Park's scheme through the integrator interface: the `park-lts` and `park-global` registry
-//! entries and their stepper around [`crate::park::ParkScheme`] (the folded, blocked step;
+//! entries and their stepper around [`crate::kernels::park::ParkStep`] (the folded, blocked step;
 //! methods.md §6).
 //!
 //! Balance energy: `1/2 v M v - dt^2/8 a M a + 1/2 u K u`, which is central difference's
@@ -9,17 +9,17 @@
 //! `K u^{n+1}`. Lumped mass only.
 
 use super::central_difference::half_step_start;
+use crate::analysis::stability::CriticalStep;
 use crate::error::{InputError, RunError};
 use crate::integrator::{
     InitialState, Integrator, LimitKind, Parameter, ParameterDefault, ParameterError,
     ParameterValues, RunSetup, Scheme, SchemeEntry, SchemeLimit, Start, lumped_only, time_loop,
 };
-use crate::kernel::StepEnergy;
+use crate::kernels::energy::StepEnergy;
+use crate::kernels::park::{ParkOptions, ParkStep, ParkVariant};
 use crate::mass::MassKind;
 use crate::model::Model;
 use crate::output::RunOutput;
-use crate::park::{ParkOptions, ParkScheme, ParkVariant};
-use crate::stability::CriticalStep;
 use std::sync::Arc;
 
 /// Park's parameters, shared by both entries.
@@ -74,7 +74,7 @@ fn build(
             ("incremental", ParkVariant::Incremental),
         ],
     )?;
-    Ok(Arc::new(Park {
+    Ok(Arc::new(ParkScheme {
         options: ParkOptions {
             theta,
             variant,
@@ -85,12 +85,12 @@ fn build(
 
 /// Park's scheme with its options.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Park {
+pub struct ParkScheme {
     /// theta, variant, local stepping.
     pub options: ParkOptions,
 }
 
-impl Scheme for Park {
+impl Scheme for ParkScheme {
     fn name(&self) -> &'static str {
         if self.options.local_stepping {
             LOCAL_STEPPING.name
@@ -112,7 +112,7 @@ impl Scheme for Park {
     }
 
     /// `alpha_e = dt/dt_e <= 1` in every element (methods.md §6), i.e. `dt <= min_e dt_e`
-    /// ([`ParkScheme::limit_step`]), at or below CD's `2/omega_max` (Fried's bound
+    /// ([`ParkStep::limit_step`]), at or below CD's `2/omega_max` (Fried's bound
     /// `omega_max <= max_e 2 c_e/h_e`). It comes from the amplification analysis of a uniform
     /// mesh, whose spectral radius exceeds 1 just above `alpha = 1` at `kh = pi`
     /// (tests/park_amplification_analysis.rs): where every element has the same `dt_e` it is the
@@ -121,7 +121,7 @@ impl Scheme for Park {
     /// `graded_1e4` mesh stays bounded at `alpha = 1.012`).
     fn limit(&self, model: &Model, _critical: &CriticalStep) -> SchemeLimit {
         let bar = model.bar();
-        let dt = ParkScheme::limit_step(model);
+        let dt = ParkStep::limit_step(model);
         let slowest = (0..bar.element_count())
             .map(|e| bar.element_transit_time(e))
             .fold(dt, f64::max);
@@ -148,7 +148,7 @@ impl Scheme for Park {
 /// Park's scheme as a stepper of the time loop.
 #[derive(Debug, Clone)]
 pub struct ParkStepper {
-    park: ParkScheme,
+    park: ParkStep,
     staggered0: f64,
 }
 
@@ -156,15 +156,15 @@ impl Integrator for ParkStepper {
     type Parameters = ParkOptions;
 
     /// Above `alpha_e = 1` the scheme is refused, or run with its true `alpha_e` when unstable
-    /// runs are allowed ([`ParkScheme::allowing_unstable`]). The balance starts from central
+    /// runs are allowed ([`ParkStep::allowing_unstable`]). The balance starts from central
     /// difference's `T*^0`, which is Park's `T - dt^2/8 a M a` at `t^0` for the half-step start.
     fn start(options: &ParkOptions, state: InitialState<'_>) -> Result<Self, InputError> {
         let (_, staggered0) = half_step_start(&state);
         let (model, dt) = (state.model, state.dt);
         let mut park = if state.allow_unstable {
-            ParkScheme::allowing_unstable(model, dt, *options)?
+            ParkStep::allowing_unstable(model, dt, *options)?
         } else {
-            ParkScheme::new(model, dt, *options)?
+            ParkStep::new(model, dt, *options)?
         };
         park.start(model);
         Ok(Self { park, staggered0 })

@@ -3,14 +3,14 @@
 //! scheme is the registry's `cd` or a Park entry: it runs through the same interface and loop.
 
 use super::central_difference::CentralDifferenceScheme;
-use super::park::Park;
+use super::park::ParkScheme;
+use crate::analysis::stability::CriticalStep;
 use crate::error::RunError;
 use crate::integrator::{Integration, OutputRequest, Scheme, SchemeLimit, StabilityPolicy, Start};
+use crate::kernels::park::ParkOptions;
 use crate::mass::MassKind;
 use crate::model::Model;
 use crate::output::RunOutput;
-use crate::park::ParkOptions;
-use crate::stability::CriticalStep;
 use std::sync::Arc;
 
 /// The seed's schemes as plain settings: central difference with a mass, or Park's scheme in
@@ -46,7 +46,7 @@ impl CentralDifference {
     pub fn integration(&self) -> Integration {
         let scheme: Arc<dyn Scheme> = match self.park {
             None => Arc::new(CentralDifferenceScheme),
-            Some(options) => Arc::new(Park { options }),
+            Some(options) => Arc::new(ParkScheme { options }),
         };
         Integration {
             dt: self.dt,
@@ -54,6 +54,7 @@ impl CentralDifference {
             start: self.start,
             stability: self.stability,
             scheme,
+            threads: None,
         }
     }
 

@@ -4,7 +4,7 @@
 
 #![allow(dead_code)]
 
-use courant_solver::schemes::noh_bathe::NohBathe;
+use courant_solver::schemes::noh_bathe::NohBatheScheme;
 use courant_solver::{
     Bar, InitialConditions, Integration, MassKind, Mesh, Model, OutputRequest, RunError, RunOutput,
     StabilityPolicy, Supports,
@@ -63,7 +63,7 @@ pub fn noh_bathe(p: f64, dt: f64, mass: MassKind, allow_unstable: bool) -> Integ
             allow_unstable,
             ..StabilityPolicy::default()
         },
-        ..Integration::new(dt, Arc::new(NohBathe { p }))
+        ..Integration::new(dt, Arc::new(NohBatheScheme { p }))
     }
 }
 
