@@ -16,7 +16,10 @@ fn sets(dir: &Path, out: &mut Vec<PathBuf>) {
     };
     let mut paths: Vec<PathBuf> = entries.flatten().map(|e| e.path()).collect();
     paths.sort();
-    if paths.iter().any(|p| p.file_name().is_some_and(|n| n == "results.toml")) {
+    if paths
+        .iter()
+        .any(|p| p.file_name().is_some_and(|n| n == "results.toml"))
+    {
         out.push(dir.to_path_buf());
         return;
     }
@@ -30,7 +33,12 @@ fn main() {
     let external = root.join("external");
     println!("cargo:rerun-if-changed=external");
     let mut codes: Vec<PathBuf> = fs::read_dir(&external)
-        .map(|e| e.flatten().map(|e| e.path()).filter(|p| p.is_dir()).collect())
+        .map(|e| {
+            e.flatten()
+                .map(|e| e.path())
+                .filter(|p| p.is_dir())
+                .collect()
+        })
         .unwrap_or_default();
     codes.sort();
     let mut text = String::from("&[\n");
@@ -40,7 +48,11 @@ fn main() {
         let mut found = Vec::new();
         sets(&results, &mut found);
         for dir in found {
-            let rel = dir.strip_prefix(&root).unwrap().to_string_lossy().replace('\\', "/");
+            let rel = dir
+                .strip_prefix(&root)
+                .unwrap()
+                .to_string_lossy()
+                .replace('\\', "/");
             let scene = dir.file_name().unwrap().to_string_lossy().into_owned();
             let inner = dir.parent().unwrap().strip_prefix(&results).unwrap();
             let label = if inner.as_os_str().is_empty() {

@@ -158,7 +158,10 @@ pub fn check_rows(set: &ScoredSet) -> Vec<[String; 6]> {
             s.stated.check.clone(),
             "passes".into(),
             "stated to fail".into(),
-            format!("stated as a finding, but it does not fail: {}", s.stated.finding),
+            format!(
+                "stated as a finding, but it does not fail: {}",
+                s.stated.finding
+            ),
         ]);
     }
     for missing in &set.missing_cases {

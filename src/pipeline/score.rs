@@ -3,9 +3,9 @@
 //! committed in this repository, scored for the report.
 
 use crate::compare::score::bind::bind;
-use crate::compare::score::stated::{apply, parse};
 use crate::compare::score::outcome::{ScoreError, ScoreOutcome, ScoredSet};
 use crate::compare::score::set::{score, score_set};
+use crate::compare::score::stated::{apply, parse};
 use crate::results::exchange::committed::{COMMITTED, CommittedSet};
 use crate::results::exchange::error::ExchangeErrors;
 use crate::results::exchange::files::read_dir_partial;

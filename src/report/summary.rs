@@ -76,6 +76,9 @@ pub fn failures(
         .collect()
 }
 
+/// The findings of one code and variant: its label, the scenes, and each check with its count.
+type OtherFindings<'a> = (&'a str, Vec<&'a str>, Vec<(String, usize)>);
+
 /// One summary row: a linked name, its counts (coloured where not zero) and where to look.
 fn row(name: Inline, tally: Tally, look: Inline) -> Vec<Inline> {
     let count = |n: usize, verdict: &'static str| {
@@ -160,7 +163,7 @@ pub fn head(
         .collect();
     // Findings of other codes, one line per code and variant: how many, on which scenes, of
     // which checks (each finding's words are in its set's section).
-    let mut other_findings: Vec<(&str, Vec<&str>, Vec<(String, usize)>)> = Vec::new();
+    let mut other_findings: Vec<OtherFindings> = Vec::new();
     let mut other_count = 0;
     for (set, index, scored) in others {
         for s in scored.stated.iter().filter(|s| s.holds) {
