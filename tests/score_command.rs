@@ -14,7 +14,10 @@
 //! file named after no case or holding another kind of data, an unknown or bad `results.toml`
 //! key, a scene without an exchange form) exits 2 naming file, line, column and key, and writes
 //! neither the tables nor the JUnit file; `courant reference` writes every built-in kind's
-//! answers with the reference that produced them, at a query's rows too.
+//! answers with the reference that produced them, at a query's rows too; `score` takes the
+//! directory `reference --out` writes, one set per `--results`, counts what it read, fails what
+//! is not supplied only with `--require-all`, and with `--stated` passes a stated failure as a
+//! finding and fails a stated one that passes.
 
 #[path = "common/exchange.rs"]
 mod exchange;
@@ -348,4 +351,93 @@ fn the_readme_example_scores_as_documented() {
             "{row:?} in:\n{rows:#?}"
         );
     }
+}
+
+#[test]
+fn score_takes_the_directory_reference_writes_and_one_set_per_flag() {
+    // `reference --out R` writes R/<scene>/; `score --results R` finds it there.
+    let dir = scratch("cli-layout");
+    let out = courant(&["reference", "fig1", "--out", s(&dir)]);
+    assert!(out.status.success(), "{}", text(&out));
+    let out = courant(&["score", "fig1", "--results", s(&dir)]);
+    assert!(out.status.success(), "{}", text(&out));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains("co1: 100 elements x 2 time(s) read (200 rows)"),
+        "the values and times read are counted: {stdout}"
+    );
+    // Two directories after one flag: the second is not swallowed as a set (nor as the scene).
+    let out = courant(&["score", "fig1", "--results", s(&dir), s(&dir)]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+}
+
+#[test]
+fn require_all_fails_what_is_not_supplied_and_stated_findings_pass_only_as_stated() {
+    let dir = scratch("cli-require");
+    let results = exported(&dir);
+    std::fs::remove_file(results.join("co0.1.csv")).unwrap();
+    let toml = std::fs::read_to_string(results.join("results.toml")).unwrap();
+    let cut = toml.find("[cases.\"co0.1\"]").unwrap();
+    let end = toml[cut..].find("\n\n").map_or(toml.len(), |e| cut + e + 2);
+    std::fs::write(
+        results.join("results.toml"),
+        format!("{}{}", &toml[..cut], &toml[end..]),
+    )
+    .unwrap();
+    let out = courant(&["score", "fig1", "--results", s(&results)]);
+    assert!(
+        out.status.success(),
+        "not supplied is no failure: {}",
+        text(&out)
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("missing co0.1"), "{stdout}");
+    let out = courant(&["score", "fig1", "--results", s(&results), "--require-all"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    // A set one step late fails its time level; stated, it is a finding and the score passes;
+    // the same statement on the on-time set fails (a verdict that differs from the statement).
+    let late = dir.join("late/fig1");
+    std::fs::create_dir_all(&late).unwrap();
+    exchange::through_files(&one_step_late(&scene("fig1")), &late);
+    let stated = dir.join("stated.toml");
+    let mut text_stated = String::new();
+    for (case, check) in [("co1", "linf"), ("co0.1", "tv_ratio / co0.5")] {
+        text_stated += &format!(
+            "[[finding]]\ncase = \"{case}\"\ncheck = \"{check}\"\nfinding = \"one step late\"\n\n"
+        );
+    }
+    for case in ["co1", "co0.5", "co0.1"] {
+        text_stated += &format!(
+            "[[finding]]\ncase = \"{case}\"\ncheck = \"time_level\"\nfinding = \"one step late\"\n\n"
+        );
+    }
+    std::fs::write(&stated, text_stated).unwrap();
+    let out = courant(&[
+        "score",
+        "fig1",
+        "--results",
+        s(&late),
+        "--stated",
+        s(&stated),
+    ]);
+    assert!(out.status.success(), "{}", text(&out));
+    assert!(
+        String::from_utf8_lossy(&out.stdout).contains("5 stated finding(s), 0 failed"),
+        "{}",
+        text(&out)
+    );
+    let out = courant(&[
+        "score",
+        "fig1",
+        "--results",
+        s(&exported(&dir.join("again"))),
+        "--stated",
+        s(&stated),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(
+        String::from_utf8_lossy(&out.stdout).contains("stated as a finding, but it does not fail"),
+        "{}",
+        text(&out)
+    );
 }

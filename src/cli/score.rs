@@ -3,7 +3,8 @@
 
 use crate::check::score_junit::xml;
 use crate::check::score_render::terminal;
-use crate::compare::score::stated::{Stated, apply, parse};
+use crate::compare::score::outcome::Stated;
+use crate::compare::score::stated::{apply, parse};
 use crate::compare::score::tables::score_files;
 use crate::io::atomic::{write_dir_atomically, write_file_atomically};
 use crate::io::clock::date;

@@ -4,13 +4,13 @@
 
 use super::applies::Applies;
 use super::diagnostics::{DiagnosticRow, Diagnostics};
-use super::stated::StatedOutcome;
 use crate::compare::contact::ForceErrors;
 use crate::compare::convergence::ConvergenceResult;
 use crate::compare::norms::ErrorNorms;
 use crate::compare::verdict::Verdict;
 use crate::results::exchange::error::{ExchangeError, ExchangeErrors};
 use crate::scene::expectation::Metric;
+use serde::Deserialize;
 use thiserror::Error;
 
 /// Why a result set cannot be scored.
@@ -251,6 +251,28 @@ impl ScoredSet {
                 .all(|(_, row, stated)| row.verdict != Some(false) || *stated)
             && self.stated.iter().all(|s| s.holds)
     }
+}
+
+/// One stated finding.
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Stated {
+    /// The case.
+    pub case: String,
+    /// An expectation's metric label (`linf`, `overshoot / co0.5`) or a diagnostic's name
+    /// (`time_level`, `sign`, `layout`, `magnitude`).
+    pub check: String,
+    /// What it says of the code, in words.
+    pub finding: String,
+}
+
+/// A stated finding and whether the set bears it out.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct StatedOutcome {
+    /// The finding as stated.
+    pub stated: Stated,
+    /// True when the stated check fails on the set, as stated.
+    pub holds: bool,
 }
 
 /// Orders of one case across result sets at different N.

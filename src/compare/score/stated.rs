@@ -11,21 +11,8 @@
 //! finding = "the first step carries F0 dt/2 too much impulse (three-level start)"
 //! ```
 
-use super::outcome::ScoredSet;
+use super::outcome::{ScoredSet, Stated, StatedOutcome};
 use serde::Deserialize;
-
-/// One stated finding.
-#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Stated {
-    /// The case.
-    pub case: String,
-    /// An expectation's metric label (`linf`, `overshoot / co0.5`) or a diagnostic's name
-    /// (`time_level`, `sign`, `layout`, `magnitude`).
-    pub check: String,
-    /// What it says of the code, in words.
-    pub finding: String,
-}
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -42,15 +29,6 @@ pub fn parse(file: &str, text: &str) -> Result<Vec<Stated>, String> {
     toml::from_str::<StatedFile>(text)
         .map(|f| f.finding)
         .map_err(|e| format!("{file}: {}", e.message().trim()))
-}
-
-/// A stated finding and whether the set bears it out.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct StatedOutcome {
-    /// The finding as stated.
-    pub stated: Stated,
-    /// True when the stated check fails on the set, as stated.
-    pub holds: bool,
 }
 
 /// Mark the set's stated checks: an expectation verdict that fails and is stated becomes a
