@@ -2,7 +2,7 @@
 //! errors naming line and key, as in scene files.
 //!
 //! ```toml
-//! format = 1                 # the exchange format's version (default 1)
+//! format = 2                 # the exchange format's version (default 1; 2 adds `parameters`)
 //! code = "sfepy"             # the producing code
 //! version = "2026.3"         # its version
 //!
@@ -197,6 +197,15 @@ pub fn parse(file: &str, text: &str) -> Result<ResultsMeta, ExchangeError> {
         });
         let mut parameters = Vec::new();
         for (k, v) in raw.parameters.unwrap_or_default() {
+            if format < 2 {
+                return Err(at(
+                    v.span().start,
+                    &format!("cases.\"{name}\".parameters.{k}"),
+                    format!(
+                        "`parameters` is a key of format 2; this file says format = {format} (write format = 2)"
+                    ),
+                ));
+            }
             let (line, column) = line_column(text, v.span().start);
             let value = match v.get_ref() {
                 toml::Value::Float(x) if x.is_finite() => MetaValue::Number(*x),
@@ -306,7 +315,7 @@ mod tests {
         };
         let text = render("courant", "0.1.0", &[("co0.5".into(), case)]);
         let meta = parse("r.toml", &text).unwrap();
-        assert_eq!(meta.format, 1);
+        assert_eq!(meta.format, FORMAT);
         assert_eq!(meta.code.as_deref(), Some("courant"));
         let c = meta.case("co0.5").unwrap();
         assert_eq!(c.dt, Some(0.1 + 0.2));
@@ -324,8 +333,18 @@ mod tests {
         assert_eq!((e.line, e.key.as_str()), (3, "sheme"), "{e}");
         let e = parse("r.toml", "[cases.a]\ndt = -1\n").unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (2, "cases.\"a\".dt"), "{e}");
-        let e = parse("r.toml", "format = 2\n").unwrap_err();
+        let e = parse("r.toml", "format = 3\n").unwrap_err();
         assert!(e.message.contains("newer courant"), "{e}");
+        let e = parse(
+            "r.toml",
+            "format = 1\n[cases.a]\nscheme = \"cd\"\nparameters = { p = 1 }\n",
+        )
+        .unwrap_err();
+        assert_eq!(
+            (e.line, e.key.as_str()),
+            (4, "cases.\"a\".parameters.p"),
+            "{e}"
+        );
         let e = parse("r.toml", "[cases.a]\nelements = 0\n").unwrap_err();
         assert_eq!(e.line, 2);
     }

@@ -8,7 +8,8 @@
 //!   courant reference ┘
 //! ```
 //!
-//! **Format 1** (the README's "Results exchange format" has a complete example):
+//! **Format 2** (the README's "Results exchange format" has a complete example; format 2 adds
+//! `parameters` to `results.toml`'s case tables, and a format-1 set reads as before):
 //!
 //! - a directory per scene; one CSV file per case, `<case>.csv`, the stem naming a case of the
 //!   scene; columns matched by name, in any order; one header line; numbers in any notation Rust
@@ -52,4 +53,4 @@ pub mod set;
 pub mod writer;
 
 /// The format version this courant reads and writes.
-pub const FORMAT: u32 = 1;
+pub const FORMAT: u32 = 2;
