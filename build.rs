@@ -4,7 +4,7 @@
 //! scene (`central-difference-as-it-comes`), or the code; every file of the directory is listed,
 //! so a set cannot be committed half-listed. A `stated.toml` beside the files holds the
 //! findings stated for the set (what courant finds in that code, so that only a change of
-//! verdict fails).
+//! verdict fails). An `external/<code>/cost.csv` is that code's measured cost beside courant's.
 
 use std::fmt::Write as _;
 use std::fs;
@@ -42,8 +42,17 @@ fn main() {
         .unwrap_or_default();
     codes.sort();
     let mut text = String::from("&[\n");
+    let mut costs = String::from("&[\n");
     for code_dir in codes {
         let code = code_dir.file_name().unwrap().to_string_lossy().into_owned();
+        let cost = code_dir.join("cost.csv");
+        if cost.is_file() {
+            let _ = writeln!(
+                costs,
+                "    ({code:?}, include_str!({:?})),",
+                cost.to_string_lossy()
+            );
+        }
         let results = code_dir.join("results");
         let mut found = Vec::new();
         sets(&results, &mut found);
@@ -85,6 +94,8 @@ fn main() {
         }
     }
     text.push(']');
-    let out = PathBuf::from(std::env::var("OUT_DIR").unwrap()).join("committed_sets.rs");
-    fs::write(out, text).unwrap();
+    costs.push(']');
+    let out = PathBuf::from(std::env::var("OUT_DIR").unwrap());
+    fs::write(out.join("committed_sets.rs"), text).unwrap();
+    fs::write(out.join("committed_costs.rs"), costs).unwrap();
 }

@@ -160,6 +160,39 @@ def courant_cases(courant, scene):
         shutil.rmtree(tmp, ignore_errors=True)
 
 
+def courant_walls(courant, scene, repeat):
+    """{case: (median wall time s, steps)} of `courant run <scene>` on one thread (cases one at a
+    time: COURANT_THREADS=1, RAYON_NUM_THREADS=1), median of `repeat` runs: the `wall_time_s`
+    and `steps` of its summary.csv."""
+    env = dict(os.environ, COURANT_THREADS='1', RAYON_NUM_THREADS='1')
+    walls = {}
+    steps = {}
+    for _ in range(max(1, repeat)):
+        tmp = tempfile.mkdtemp(prefix='opensees-courant-')
+        try:
+            subprocess.run(courant + ['run', scene, '--out', tmp], check=True, env=env,
+                           stdout=subprocess.DEVNULL)
+            rows = np.genfromtxt(os.path.join(tmp, scene, 'summary.csv'), delimiter=',',
+                                 names=True, dtype=None, encoding='utf-8')
+            for row in np.atleast_1d(rows):
+                walls.setdefault(str(row['case']), []).append(float(row['wall_time_s']))
+                steps[str(row['case'])] = int(row['steps'])
+        finally:
+            shutil.rmtree(tmp, ignore_errors=True)
+    return {case: (statistics.median(w), steps[case]) for case, w in walls.items()}
+
+
+def cpu_name():
+    """The CPU model, from /proc/cpuinfo."""
+    try:
+        for line in open('/proc/cpuinfo'):
+            if line.startswith('model name'):
+                return line.split(':', 1)[1].strip()
+    except OSError:
+        pass
+    return 'unknown CPU'
+
+
 def read_dts(path):
     """`dt` of every `[cases."name"]` table of a results.toml (tomllib: Python >= 3.11)."""
     import tomllib
@@ -227,7 +260,9 @@ def run_opensees(scene, nodes, times, dt, mass, integrator, start):
             ops.setNodeAccel(i, 1, float(a0[i]), '-commit')
     ops.constraints('Plain')
     ops.numberer('Plain')
-    ops.system('BandGeneral' if mass == 'consistent' else 'FullGeneral')
+    # The cheapest solver OpenSees offers for the mass: a diagonal one for lumped mass, a banded
+    # one (tridiagonal here) for consistent mass.
+    ops.system('BandGeneral' if mass == 'consistent' else 'Diagonal')
     ops.algorithm('Linear')
     ops.integrator(INTEGRATORS[integrator])
     ops.analysis('Transient')
@@ -302,6 +337,19 @@ def write_set(directory, scene, rows, integrator, start):
             fd.write(f'elements = {len(nodes) - 1}\n')
 
 
+def write_cost(path, rows, repeat):
+    """The cost table: per case and integrator, the steps and the median wall times of OpenSees'
+    time loop and of courant's run of the same case, both on one thread on this machine now."""
+    measured = time.strftime('%Y-%m-%d')
+    cpu = cpu_name().replace(',', ' ')
+    with open(path, 'w') as fd:
+        fd.write('scene,case,integrator,start,steps,opensees_wall_s,courant_wall_s,'
+                 'ratio,repeat,measured,cpu\n')
+        for scene, case, integrator, start, steps, ops_wall, own in rows:
+            fd.write(f'{scene},{case},{integrator},{start},{steps},{ops_wall:.6g},{own:.6g},'
+                     f'{ops_wall / own:.4g},{repeat},{measured},{cpu}\n')
+
+
 def compare_dirs(fresh, committed, tolerance):
     """Every file of `committed` is in `fresh` with the same text but for the stresses, which
     agree within `tolerance` (|sigma0| = 1)."""
@@ -347,6 +395,10 @@ def main():
                    help='compare the corrected runs with an independent numpy model')
     p.add_argument('--repeat', type=int, default=3,
                    help='runs per case; the median wall time is printed')
+    p.add_argument('--cost', default=None,
+                   help='write the cost table (OpenSees and courant wall times of every case, '
+                        'one thread, same machine) here; default: external/opensees/cost.csv '
+                        'when --out is the default')
     args = p.parse_args()
     courant = ([args.courant] if args.courant else
                ['cargo', 'run', '--quiet', '--release', '--manifest-path',
@@ -354,9 +406,14 @@ def main():
     scenes = SCENES if args.scene == 'all' else (args.scene,)
     integrators = tuple(INTEGRATORS) if args.integrator == 'all' else (args.integrator,)
     starts = STARTS if args.start == 'all' else (args.start,)
+    cost_file = args.cost or (os.path.join(HERE, 'cost.csv')
+                              if os.path.abspath(args.out) == os.path.join(HERE, 'results')
+                              else None)
+    cost_rows = []
     worst = 0.0
     for scene in scenes:
         geometry = courant_cases(courant, scene)
+        courant_wall = courant_walls(courant, scene, args.repeat) if cost_file else {}
         cases = scene_cases(scene, sorted(geometry))
         for integrator in integrators:
             for start in starts:
@@ -377,10 +434,17 @@ def main():
                         print(f'check {integrator:20s} {scene:14s} {name:16s} '
                               f'max |opensees - numpy| = {diff:.2e}')
                     rows.append((name, mass, nodes, profiles, dt, statistics.median(walls)))
+                    if name in courant_wall:
+                        own, steps = courant_wall[name]
+                        cost_rows.append((scene, name, integrator, start, steps,
+                                          statistics.median(walls), own))
                 directory = os.path.join(args.out, f'{integrator}-{start}', scene)
                 write_set(directory, scene, rows, integrator, start)
                 print(f'{integrator}-{start}/{scene}: {len(rows)} case(s), wall '
                       + ', '.join(f'{r[0]} {r[5]:.3f} s' for r in rows))
+    if cost_file:
+        write_cost(cost_file, cost_rows, args.repeat)
+        print(f'cost: {cost_file}')
     if args.check:
         print(f'check: largest difference {worst:.2e} |sigma0|')
         if worst > 1e-9:

@@ -22,6 +22,7 @@
 
 pub mod bench_table;
 pub mod convergence;
+pub mod cost_across_codes;
 pub mod document;
 pub mod figure_parts;
 pub mod figures;
@@ -89,6 +90,11 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
     }
     if !runs.other_codes.is_empty() {
         page.extend(other_codes::section(
+            scenes,
+            &runs.scenes,
+            &runs.other_codes,
+        ));
+        page.extend(cost_across_codes::section(
             scenes,
             &runs.scenes,
             &runs.other_codes,

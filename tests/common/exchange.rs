@@ -8,7 +8,7 @@ use courant::compare::outcome::SceneOutcome;
 use courant::compare::score::export::exchange_set;
 use courant::pipeline::{evaluate_case, evaluate_scene};
 use courant::results::exchange::files::read_dir;
-use courant::results::exchange::record::{CaseData, ExchangeSet, Positions};
+use courant::results::exchange::record::{CaseData, ExchangeSet, Positions, Profile};
 use courant::results::exchange::writer::set_files;
 use courant::scene::Scene;
 use courant::scene::builtin::{builtin_scene, builtin_text};
@@ -105,75 +105,64 @@ pub enum PointForm {
     NodalAverages,
 }
 
-/// The set with every element profile written as points (`t, x, stress`).
-pub fn as_points(set: &ExchangeSet, form: PointForm) -> ExchangeSet {
+/// `set` with `edit` applied to every stress profile of every file.
+fn each_profile(set: &ExchangeSet, mut edit: impl FnMut(&mut Profile)) -> ExchangeSet {
     let mut set = set.clone();
     for file in &mut set.cases {
-        let CaseData::Profiles(profiles) = &mut file.data else {
-            continue;
-        };
-        for p in profiles {
-            let Positions::Elements { left, right } = &p.positions else {
-                continue;
-            };
-            let n = left.len();
-            let (x, stress): (Vec<f64>, Vec<f64>) = match form {
-                PointForm::Midpoints => (
-                    left.iter().zip(right).map(|(a, b)| 0.5 * (a + b)).collect(),
-                    p.stress.clone(),
-                ),
-                PointForm::NodalAverages => (0..=n)
-                    .map(|i| match i {
-                        0 => (left[0], p.stress[0]),
-                        i if i == n => (right[n - 1], p.stress[n - 1]),
-                        i => (left[i], 0.5 * (p.stress[i - 1] + p.stress[i])),
-                    })
-                    .unzip(),
-            };
-            p.positions = Positions::Points(x);
-            p.stress = stress;
-            p.lines = Vec::new();
+        if let CaseData::Profiles(profiles) = &mut file.data {
+            profiles.iter_mut().for_each(&mut edit);
         }
     }
     set
+}
+
+/// The set with every element profile written as points (`t, x, stress`).
+pub fn as_points(set: &ExchangeSet, form: PointForm) -> ExchangeSet {
+    each_profile(set, |p| {
+        let Positions::Elements { left, right } = &p.positions else {
+            return;
+        };
+        let n = left.len();
+        let (x, stress): (Vec<f64>, Vec<f64>) = match form {
+            PointForm::Midpoints => (
+                left.iter().zip(right).map(|(a, b)| 0.5 * (a + b)).collect(),
+                p.stress.clone(),
+            ),
+            PointForm::NodalAverages => (0..=n)
+                .map(|i| match i {
+                    0 => (left[0], p.stress[0]),
+                    i if i == n => (right[n - 1], p.stress[n - 1]),
+                    i => (left[i], 0.5 * (p.stress[i - 1] + p.stress[i])),
+                })
+                .unzip(),
+        };
+        p.positions = Positions::Points(x);
+        p.stress = stress;
+        p.lines = Vec::new();
+    })
 }
 
 /// The set written from the far end: the value of `[a, b]` given for `[L - b, L - a]` (the bar
 /// starting at 0).
 pub fn mirrored(set: &ExchangeSet) -> ExchangeSet {
-    let mut set = set.clone();
-    for file in &mut set.cases {
-        let CaseData::Profiles(profiles) = &mut file.data else {
-            continue;
+    each_profile(set, |p| {
+        let Positions::Elements { left, right } = &p.positions else {
+            return;
         };
-        for p in profiles {
-            let Positions::Elements { left, right } = &p.positions else {
-                continue;
-            };
-            let end = right[right.len() - 1];
-            let new_left: Vec<f64> = right.iter().rev().map(|b| end - b).collect();
-            let new_right: Vec<f64> = left.iter().rev().map(|a| end - a).collect();
-            p.positions = Positions::Elements {
-                left: new_left,
-                right: new_right,
-            };
-            p.stress.reverse();
-        }
-    }
-    set
+        let end = right[right.len() - 1];
+        let new_left: Vec<f64> = right.iter().rev().map(|b| end - b).collect();
+        let new_right: Vec<f64> = left.iter().rev().map(|a| end - a).collect();
+        p.positions = Positions::Elements {
+            left: new_left,
+            right: new_right,
+        };
+        p.stress.reverse();
+    })
 }
 
 /// The set with every stress multiplied by `factor` (1e125: a code that diverged).
 pub fn scaled(set: &ExchangeSet, factor: f64) -> ExchangeSet {
-    let mut set = set.clone();
-    for file in &mut set.cases {
-        if let CaseData::Profiles(profiles) = &mut file.data {
-            for p in profiles {
-                p.stress.iter_mut().for_each(|s| *s *= factor);
-            }
-        }
-    }
-    set
+    each_profile(set, |p| p.stress.iter_mut().for_each(|s| *s *= factor))
 }
 
 /// Write `set` to `dir` and read it back, as `courant score` reads a directory.
