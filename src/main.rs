@@ -140,10 +140,10 @@ fn main() -> ExitCode {
     courant::cli::exit_quietly_on_closed_pipe();
     let command = Cli::parse().command;
     if let Err(message) = courant::cli::check_thread_setting() {
-        eprintln!("error: {message}");
-        return ExitCode::from(2);
+        courant::cli::console::err(format_args!("error: {message}\n"));
+        return courant::cli::console::finish(ExitCode::from(2));
     }
-    match command {
+    let code = match command {
         Command::List { schemes } => courant::cli::list(schemes),
         Command::Run {
             scenes,
@@ -191,5 +191,7 @@ fn main() -> ExitCode {
             out,
             skip_c: no_c,
         }),
-    }
+    };
+    // A failed write to the terminal turns the status into 2, with one line on stderr.
+    courant::cli::console::finish(code)
 }

@@ -31,7 +31,7 @@ use courant::compare::score::diagnostics::{
 };
 use courant::compare::score::outcome::{ScoredCase, ScoredSet};
 use courant::compare::score::set::score_set;
-use courant::results::exchange::reader::read_dir;
+use courant::results::exchange::files::read_dir;
 use courant::results::exchange::record::{CaseData, ExchangeSet};
 use exchange::{
     PointForm, as_points, courant_set, mirrored, one_step_late, scaled, scene, sign_flipped,

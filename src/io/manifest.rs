@@ -14,6 +14,7 @@
 //! touched. Outputs written before courant marked them have no manifest and are refused too:
 //! remove them by hand once.
 
+use super::bounded_read::{ReadError, TEXT_CAP, read_text};
 use super::file_kind::kind_of;
 use std::collections::BTreeSet;
 use std::io;
@@ -118,10 +119,11 @@ pub fn check_replaceable(dir: &Path) -> Result<(), Refusal> {
         path: dir.to_path_buf(),
         source,
     };
-    let manifest = match std::fs::read_to_string(dir.join(MANIFEST)) {
+    let manifest = match read_text(&dir.join(MANIFEST), TEXT_CAP) {
         Ok(text) => Some(listed(&text)),
-        Err(e) if e.kind() == io::ErrorKind::NotFound => None,
-        Err(e) => return Err(unreadable(e)),
+        Err(ReadError::Missing { dangling: false }) => None,
+        Err(ReadError::Io(e)) => return Err(unreadable(e)),
+        Err(e) => return Err(unreadable(io::Error::other(format!("{MANIFEST} {e}")))),
     };
     let (allowed, why) = match &manifest {
         Some(files) => (files.clone(), "its manifest does not list it"),

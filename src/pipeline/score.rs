@@ -7,7 +7,7 @@ use crate::compare::score::outcome::{ScoreError, ScoreOutcome, ScoredSet};
 use crate::compare::score::set::{score, score_set};
 use crate::results::exchange::committed::{COMMITTED, CommittedSet};
 use crate::results::exchange::error::ExchangeErrors;
-use crate::results::exchange::reader::read_dir_partial;
+use crate::results::exchange::files::read_dir_partial;
 use crate::scene::cases::Scene;
 use std::path::{Path, PathBuf};
 

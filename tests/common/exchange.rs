@@ -7,7 +7,7 @@
 use courant::compare::outcome::SceneOutcome;
 use courant::compare::score::export::exchange_set;
 use courant::pipeline::{evaluate_case, evaluate_scene};
-use courant::results::exchange::reader::read_dir;
+use courant::results::exchange::files::read_dir;
 use courant::results::exchange::record::{CaseData, ExchangeSet, Positions};
 use courant::results::exchange::writer::set_files;
 use courant::scene::Scene;

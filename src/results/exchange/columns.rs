@@ -1,7 +1,8 @@
 //! The kinds of exchange file and their columns, and how a header is recognised: by its column
 //! names, each of which must belong to the format.
 
-use super::error::ExchangeError;
+use super::error::{ExchangeError, SHOWN};
+use crate::io::bounded_read::shortened;
 
 /// The kind of data a file holds, recognised from its columns.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -141,10 +142,12 @@ impl Header {
                 continue;
             }
             let Some(&known) = all.iter().find(|c| **c == name) else {
-                // The nearest known name within two edits, if any.
+                // The nearest known name within two edits, if any (a name far longer than any
+                // known one is not compared: the distance would cost its length squared).
                 let hint = all
                     .iter()
                     .chain([&REFERENCE])
+                    .filter(|c| name.len() <= c.len() + 2)
                     .map(|c| (edit_distance(c, name), c))
                     .filter(|(d, _)| *d <= 2)
                     .min_by_key(|(d, _)| *d)
@@ -154,7 +157,7 @@ impl Header {
                     file,
                     1,
                     i + 1,
-                    name,
+                    &shortened(name, SHOWN),
                     format!(
                         "unknown column{hint}; the format's files are {}",
                         kinds_described()
@@ -166,7 +169,7 @@ impl Header {
                     file,
                     1,
                     i + 1,
-                    name,
+                    &shortened(name, SHOWN),
                     "the column appears twice",
                 ));
             }

@@ -33,6 +33,7 @@
 //!
 //! - [`record`]: the records read from files; [`columns`]: the kinds of file and their columns;
 //!   [`reader`]: files to records with errors naming file, line, column and key ([`error`]);
+//!   [`files`]: which files of a directory are read, each bounded;
 //!   [`meta`]: `results.toml`; [`writer`]: records to files; [`committed`]: the external result
 //!   sets committed in this repository and compiled into the binary.
 //!
@@ -42,6 +43,7 @@
 pub mod columns;
 pub mod committed;
 pub mod error;
+pub mod files;
 pub mod meta;
 pub mod reader;
 pub mod record;

@@ -2,12 +2,14 @@
 //! CSV field number) and the column name, and nothing is returned half-read.
 
 use super::columns::{Header, Kind, Want};
-use super::error::{ERRORS_PER_FILE, ExchangeError, ExchangeErrors};
+use super::error::{
+    ERRORS_PER_FILE, ExchangeError, ExchangeErrors, SHOWN, csv_error, unterminated_quote,
+};
 use super::meta::{ResultsMeta, parse};
 use super::record::{
     CaseData, CaseFile, ExchangeSet, ForceHistory, Positions, Profile, SpectrumRow,
 };
-use std::path::Path;
+use crate::io::bounded_read::shortened;
 
 /// Name of the optional metadata file of a result set.
 pub const META_FILE: &str = "results.toml";
@@ -68,6 +70,9 @@ pub fn read_case_whole(
     text: &str,
     want: Want,
 ) -> Result<CaseFile, ExchangeErrors> {
+    if let Some(e) = unterminated_quote(file, text) {
+        return Err(e.into());
+    }
     let mut reader = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());
@@ -156,6 +161,7 @@ fn cell(
     raw: &str,
 ) -> Result<Cell, ExchangeError> {
     let fail = |message: String| ExchangeError::at(file, line, column, name, message);
+    let shown = shortened(raw, SHOWN);
     if raw.is_empty() {
         return Err(fail("the cell is empty".into()));
     }
@@ -164,40 +170,16 @@ fn cell(
     }
     let x: f64 = raw
         .parse()
-        .map_err(|_| fail(format!("`{raw}` is not a number")))?;
+        .map_err(|_| fail(format!("`{shown}` is not a number")))?;
     if !x.is_finite() {
-        return Err(fail(format!("`{raw}` is not finite")));
+        return Err(fail(format!("`{shown}` is not finite")));
     }
     if name == "mode" && !(x >= 0.0 && x.fract() == 0.0 && x <= 1e9) {
         return Err(fail(format!(
-            "`{raw}` is not a mode number (a whole number, 0 or more)"
+            "`{shown}` is not a mode number (a whole number, 0 or more)"
         )));
     }
     Ok(Cell::Number(x))
-}
-
-fn csv_error(file: &str, e: &csv::Error) -> ExchangeError {
-    match e.kind() {
-        csv::ErrorKind::UnequalLengths {
-            pos,
-            expected_len,
-            len,
-        } => ExchangeError::at(
-            file,
-            pos.as_ref().map_or(0, |p| p.line() as usize),
-            1,
-            "",
-            format!("the row has {len} cells, the header {expected_len}"),
-        ),
-        csv::ErrorKind::Utf8 { pos, .. } => ExchangeError::at(
-            file,
-            pos.as_ref().map_or(0, |p| p.line() as usize),
-            1,
-            "",
-            "the row is not UTF-8 text",
-        ),
-        _ => ExchangeError::file(file, e.to_string()),
-    }
 }
 
 /// Group profile rows by time (times never decreasing), sort each group by position and check
@@ -501,199 +483,6 @@ pub fn read_set_partial(
     (set, errors)
 }
 
-/// Read a result set from a directory (its `*.csv` and `results.toml`; subdirectories and other
-/// files are ignored), labelled by the path as given.
-///
-/// # Errors
-/// The directory cannot be read, or as [`read_set`].
-pub fn read_dir(dir: &Path) -> Result<ExchangeSet, ExchangeErrors> {
-    match read_dir_partial(dir) {
-        (Some(set), errors) if errors.is_empty() => Ok(set),
-        (_, errors) => Err(ExchangeErrors(errors)),
-    }
-}
-
-/// [`read_dir`], keeping what reads (as [`read_set_partial`]).
-pub fn read_dir_partial(dir: &Path) -> (Option<ExchangeSet>, Vec<ExchangeError>) {
-    let shown = dir.display().to_string();
-    let unreadable = |e: std::io::Error| {
-        ExchangeError::file(&shown, format!("cannot read the results directory: {e}"))
-    };
-    let entries = match std::fs::read_dir(dir) {
-        Ok(entries) => entries,
-        Err(e) => return (None, vec![unreadable(e)]),
-    };
-    let mut files = Vec::new();
-    let mut errors = Vec::new();
-    for entry in entries {
-        let path = match entry {
-            Ok(entry) => entry.path(),
-            Err(e) => {
-                errors.push(unreadable(e));
-                continue;
-            }
-        };
-        let Some(name) = path
-            .file_name()
-            .and_then(|n| n.to_str())
-            .map(str::to_string)
-        else {
-            continue;
-        };
-        if path.is_file() && (name.ends_with(".csv") || name == META_FILE) {
-            match std::fs::read_to_string(&path) {
-                Ok(text) => files.push((name, text)),
-                Err(e) => errors.push(ExchangeError::file(
-                    &path.display().to_string(),
-                    format!("cannot read: {e}"),
-                )),
-            }
-        }
-    }
-    let (set, mut more) = read_set_partial(&shown, &shown, &files);
-    if set.is_none() && !errors.is_empty() {
-        // "no case files" says nothing when the files are there but unreadable.
-        more.retain(|e| e.file != shown);
-    }
-    errors.extend(more);
-    (set, errors)
-}
-
-/// Read a query file (`courant reference --at`): the positions and times (or modes) of one
-/// kind; value columns, if present, are ignored.
-///
-/// # Errors
-/// The file cannot be read, or as [`read_case`].
-pub fn read_query(path: &Path) -> Result<CaseFile, ExchangeError> {
-    let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| ExchangeError::file(&shown, format!("cannot read: {e}")))?;
-    read_case(&shown, "query", &text, Want::Query)
-}
-
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn read(text: &str) -> Result<CaseFile, ExchangeError> {
-        read_case("d/c.csv", "c", text, Want::Results)
-    }
-
-    #[test]
-    fn element_profiles_are_grouped_by_time_and_sorted_by_position() {
-        let f = read("t,x_left,x_right,stress\n0.5,0.5,1,2\n0.5,0,0.5,1\n1.5,0,1,3\n").unwrap();
-        let CaseData::Profiles(p) = f.data else {
-            panic!()
-        };
-        assert_eq!(p.len(), 2);
-        assert_eq!(p[0].time, 0.5);
-        assert_eq!(p[0].stress, vec![1.0, 2.0]);
-        assert_eq!(p[0].lines, vec![3, 2], "lines follow the sorted rows");
-        assert_eq!(
-            p[1].positions,
-            Positions::Elements {
-                left: vec![0.0],
-                right: vec![1.0]
-            }
-        );
-    }
-
-    #[test]
-    fn bad_cells_and_geometry_name_line_and_column() {
-        let e = read("t,x_left,x_right,stress\n0.5,0,0.5,abc\n").unwrap_err();
-        assert_eq!((e.line, e.column, e.key.as_str()), (2, 4, "stress"), "{e}");
-        let e = read("t,x_left,x_right,stress\n0.5,0,0.5,inf\n").unwrap_err();
-        assert!(e.message.contains("not finite"), "{e}");
-        let e = read("t,x_left,x_right,stress\n0.5,0,0.5,1\n0.4,0,0.5,1\n").unwrap_err();
-        assert_eq!((e.line, e.key.as_str()), (3, "t"), "{e}");
-        let e = read("t,x_left,x_right,stress\n0.5,0,0.6,1\n0.5,0.5,1,1\n").unwrap_err();
-        assert!(e.message.contains("overlaps itself"), "{e}");
-        let e = read("t,x_left,x_right,stress\n0.5,0,0.4,1\n0.5,0.5,1,1\n").unwrap_err();
-        assert!(e.message.contains("does not cover the bar"), "{e}");
-        let e = read("t,x,stress\n0.5,0.2,1\n0.5,0.2,1\n").unwrap_err();
-        assert!(e.message.contains("overlap"), "{e}");
-        let e = read("t,x,stress\n0.5,0.2\n").unwrap_err();
-        assert_eq!(e.line, 2, "{e}");
-        let e = read("t,x,stress\n").unwrap_err();
-        assert!(e.message.contains("no rows"), "{e}");
-        let e = read("t,force\n0,1\n0,2\n").unwrap_err();
-        assert_eq!((e.line, e.key.as_str()), (3, "t"), "{e}");
-        let e = read("mode,omega\n1.5,2\n").unwrap_err();
-        assert_eq!((e.line, e.key.as_str()), (2, "mode"), "{e}");
-    }
-
-    #[test]
-    fn queries_need_only_the_keys() {
-        let q = read_case("q.csv", "q", "t,x\n0.5,0.1\n0.5,0.2\n", Want::Query).unwrap();
-        let CaseData::Profiles(p) = q.data else {
-            panic!()
-        };
-        assert!(p[0].stress.is_empty());
-        let q = read_case("q.csv", "q", "t\n0\n1\n", Want::Query).unwrap();
-        assert!(matches!(q.data, CaseData::Force(_)));
-    }
-
-    #[test]
-    fn a_set_refuses_metadata_for_a_missing_case() {
-        let files = vec![
-            ("a.csv".to_string(), "t,force\n0,1\n".to_string()),
-            (
-                "results.toml".to_string(),
-                "[cases.b]\ndt = 1.0\n".to_string(),
-            ),
-        ];
-        let e = read_set("d", "d", &files).unwrap_err();
-        assert_eq!(
-            (e.first().file.as_str(), e.first().line),
-            ("d/results.toml", 1),
-            "{e}"
-        );
-        assert!(read_set("d", "d", &files[..1]).is_ok());
-    }
-
-    #[test]
-    fn a_set_is_read_whole_and_every_bad_file_and_cell_reported() {
-        let files = vec![
-            (
-                "a.csv".to_string(),
-                "t,force
-0,x
-1,y
-"
-                .to_string(),
-            ),
-            (
-                "b.csv".to_string(),
-                "t,force
-0,1
-0,2
-"
-                .to_string(),
-            ),
-            (
-                "c.csv".to_string(),
-                "t,force
-0,1
-"
-                .to_string(),
-            ),
-            (
-                "results.toml".to_string(),
-                "[cases.c]\nsheme = 1\n".to_string(),
-            ),
-        ];
-        let e = read_set("d", "d", &files).unwrap_err();
-        let at: Vec<(&str, usize)> = e.0.iter().map(|e| (e.file.as_str(), e.line)).collect();
-        assert_eq!(
-            at,
-            vec![
-                ("d/a.csv", 2),
-                ("d/a.csv", 3),
-                ("d/b.csv", 3),
-                ("d/results.toml", 2)
-            ],
-            "{e}"
-        );
-        assert!(e.to_string().starts_with("4 errors:"), "{e}");
-    }
-}
+#[path = "reader_tests.rs"]
+mod tests;
