@@ -2,6 +2,7 @@
 
 use clap::{Parser, Subcommand};
 use courant::cli::check::CheckOptions;
+use courant::io::manifest::set_writer;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -45,6 +46,10 @@ enum Command {
         /// (chosen so any scene validates in about a second). The node-step limit stays.
         #[arg(long)]
         large: bool,
+        /// Replace DIR/<scene> even when another command (`courant run`, `reference`, `score`)
+        /// wrote it (its manifest says which); without it that is refused.
+        #[arg(long)]
+        force: bool,
     },
     /// Grade another code's results (the exchange format: DIR/<case>.csv, results.toml) against
     /// a scene's references, with the norms and expectations of `run`, plus diagnostics
@@ -73,6 +78,10 @@ enum Command {
         /// Write a JUnit XML report here.
         #[arg(long, value_name = "FILE")]
         junit: Option<PathBuf>,
+        /// Replace DIR/<scene> even when another command (`courant run`, `reference`, `score`)
+        /// wrote it (its manifest says which); without it that is refused.
+        #[arg(long)]
+        force: bool,
     },
     /// Write a scene's exact answers in the exchange format to DIR/<scene>/: at its own mesh
     /// and output times, or at the rows of a query file (t, x_left, x_right | t, x | t | mode).
@@ -86,6 +95,10 @@ enum Command {
         /// Output directory.
         #[arg(long, value_name = "DIR")]
         out: PathBuf,
+        /// Replace DIR/<scene> even when another command (`courant run`, `reference`, `score`)
+        /// wrote it (its manifest says which); without it that is refused.
+        #[arg(long)]
+        force: bool,
     },
     /// Regenerate the verification report: every built-in scene, the convergence and
     /// work-precision studies and the stability table, run in parallel, written whole (staged,
@@ -150,34 +163,52 @@ fn main() -> ExitCode {
             out,
             exchange,
             large,
-        } => courant::cli::run::run(
-            &scenes,
-            &out,
-            exchange.as_deref(),
-            if large {
-                courant::scene::limits::Limits::LARGE
-            } else {
-                courant::scene::limits::Limits::DEFAULT
-            },
-        ),
+            force,
+        } => {
+            set_writer("courant run", force);
+            courant::cli::run::run(
+                &scenes,
+                &out,
+                exchange.as_deref(),
+                if large {
+                    courant::scene::limits::Limits::LARGE
+                } else {
+                    courant::scene::limits::Limits::DEFAULT
+                },
+            )
+        }
         Command::Score {
             scene,
             results,
             require_all,
             out,
             junit,
-        } => courant::cli::score::score(
-            &scene,
-            &results,
-            require_all,
-            out.as_deref(),
-            junit.as_deref(),
-        ),
-        Command::Reference { scene, at, out } => {
+            force,
+        } => {
+            set_writer("courant score", force);
+            courant::cli::score::score(
+                &scene,
+                &results,
+                require_all,
+                out.as_deref(),
+                junit.as_deref(),
+            )
+        }
+        Command::Reference {
+            scene,
+            at,
+            out,
+            force,
+        } => {
+            set_writer("courant reference", force);
             courant::cli::reference::reference(&scene, at.as_deref(), &out)
         }
         Command::Report { scenes, out } => courant::cli::report(&scenes, out.as_deref()),
-        Command::Check(options) => courant::cli::check::check(&options),
+        Command::Check(options) => {
+            // `check --out` writes what `run` writes (and may replace a run's output).
+            set_writer("courant run", false);
+            courant::cli::check::check(&options)
+        }
         Command::Bench {
             sizes,
             node_steps,

@@ -18,6 +18,28 @@ use cli::scratch;
 /// Status 2 (or a verdict) comes within this, whatever the input.
 const PROMPT: Duration = Duration::from_secs(10);
 
+fn data(file: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/score_and_io")
+        .join(file)
+}
+
+/// `courant score SCENE --results SET --out DIR`: refused with status 2, promptly, naming every
+/// one of `expected`, writing nothing.
+fn score_refused(scene: &str, set: &str, expected: &[&str]) {
+    let dir = scratch(set);
+    let out = dir.join("o");
+    let (code, _, stderr, took) =
+        courant(&["score", scene, "--results", s(&data(set)), "--out", s(&out)]);
+    assert_eq!(code, Some(2), "{set}: {stderr}");
+    assert!(took < PROMPT, "{set}: took {took:?}");
+    assert!(!out.exists(), "{set}: exit 2 wrote {}", out.display());
+    for e in expected {
+        assert!(stderr.contains(e), "{set}: message lacks {e:?}: {stderr}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// `courant ARGS` with stdout sent to `stdout`: exit code, stdout, stderr, wall time.
 fn courant_to(args: &[&str], stdout: Stdio) -> (Option<i32>, String, String, Duration) {
     let started = Instant::now();
@@ -213,5 +235,159 @@ fn score_200mb_one_line_stops_at_the_line_cap_with_a_short_message() {
     assert_eq!(code, Some(2), "{stderr}");
     assert!(stderr.len() < 1000, "{} bytes of message", stderr.len());
     assert!(stderr.contains("more bytes"), "{stderr}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn score_inf_l2_1e200_is_refused_at_the_cell_beyond_the_magnitude_limit() {
+    score_refused(
+        "fig1",
+        "score_inf_l2_1e200",
+        &["co1.csv:2:4", "`stress`", "1e200", "magnitude limit 1e50"],
+    );
+}
+
+#[test]
+fn score_inf_force_1e308_is_refused_at_the_cell_beyond_the_magnitude_limit() {
+    score_refused(
+        "fig5",
+        "score_inf_force_1e308",
+        &["cd-penalty-bs25.csv:2:2", "`force`", "magnitude limit"],
+    );
+}
+
+#[test]
+fn score_force_truncated_passes_plateau_no_more_the_window_is_not_measurable() {
+    let (code, stdout, stderr, took) = courant(&[
+        "score",
+        "fig5",
+        "--results",
+        s(&data("score_force_truncated_passes_plateau")),
+    ]);
+    assert_eq!(code, Some(1), "{stdout}{stderr}");
+    assert!(took < PROMPT, "took {took:?}");
+    let row = stdout
+        .lines()
+        .find(|l| l.contains("cd-bipenalty-bs0.25") && l.contains("plateau_deviation"))
+        .unwrap_or_else(|| panic!("no plateau row: {stdout}"));
+    assert!(
+        row.contains("FAIL") && row.contains("inside the first plateau"),
+        "{row}"
+    );
+}
+
+#[test]
+fn score_nan_fig2_t1000_is_refused_at_t_with_the_reference_limit() {
+    score_refused(
+        "fig2",
+        "score_nan_fig2_t1000",
+        &["cd-co0.5.csv:2:1", "`t`", "1000 transit times", "t <= 4"],
+    );
+}
+
+/// `courant reference SCENE --at FILE --out DIR`: refused with status 2 naming `expected`.
+fn reference_refused(scene: &str, file: &str, expected: &[&str]) {
+    let dir = scratch(file);
+    let out = dir.join("o");
+    let (code, _, stderr, took) =
+        courant(&["reference", scene, "--at", s(&data(file)), "--out", s(&out)]);
+    assert_eq!(code, Some(2), "{file}: {stderr}");
+    assert!(took < PROMPT, "{file}: took {took:?}");
+    assert!(!out.exists(), "{file}: exit 2 wrote {}", out.display());
+    for e in expected {
+        assert!(stderr.contains(e), "{file}: message lacks {e:?}: {stderr}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn reference_at_fig2_t1000_is_refused_at_t_with_the_reference_limit() {
+    reference_refused(
+        "fig2",
+        "reference_at_fig2_t1000.csv",
+        &[
+            "reference_at_fig2_t1000.csv:2:1",
+            "`t`",
+            "1000 transit times",
+        ],
+    );
+}
+
+#[test]
+fn reference_at_layered_t1e6_is_refused_at_t() {
+    reference_refused(
+        "layered",
+        "reference_at_layered_t1e6.csv",
+        &[
+            "reference_at_layered_t1e6.csv:2:1",
+            "`t`",
+            "layered reference",
+        ],
+    );
+}
+
+#[test]
+fn score_slow_fig2_t50_is_refused_by_the_reference_work_bound_at_once() {
+    score_refused(
+        "fig2",
+        "score_slow_fig2_t50",
+        &["cd-co0.5.csv:2:1", "`t`", "2e10"],
+    );
+}
+
+#[test]
+fn score_dt_hides_lag_no_more_the_declared_dt_is_refused_at_its_table() {
+    score_refused(
+        "fig1",
+        "score_dt_hides_lag",
+        &[
+            "results.toml:5:1",
+            "`cases.\"co1\".dt`",
+            "larger than the scene case's step on this mesh, 1e-2",
+        ],
+    );
+}
+
+#[test]
+fn reference_replaces_run_output_no_more_without_force() {
+    let dir = scratch("replaces_run");
+    let results = dir.join("results");
+    let (code, _, stderr, _) = courant(&["run", "fig1", "--out", s(&results)]);
+    assert_eq!(code, Some(0), "{stderr}");
+    let files = || std::fs::read_dir(results.join("fig1")).unwrap().count();
+    let before = files();
+    for command in [
+        vec!["reference", "fig1", "--out", s(&results)],
+        vec![
+            "score",
+            "fig1",
+            "--results",
+            s(&Path::new(env!("CARGO_MANIFEST_DIR")).join("external/sfepy/results/fig1")),
+            "--out",
+            s(&results),
+        ],
+    ] {
+        let (code, _, stderr, _) = courant(&command);
+        assert_eq!(code, Some(2), "{command:?}: {stderr}");
+        assert!(
+            stderr.contains("holds the output of `courant run`") && stderr.contains("--force"),
+            "{stderr}"
+        );
+        assert_eq!(
+            stderr.matches(s(&results.join("fig1"))).count(),
+            1,
+            "the path once: {stderr}"
+        );
+        assert_eq!(files(), before, "{command:?} touched the run's output");
+    }
+    let (code, _, stderr, _) = courant(&["reference", "fig1", "--out", s(&results), "--force"]);
+    assert_eq!(code, Some(0), "{stderr}");
+    // And the reverse: run does not replace the references without --force.
+    let (code, _, stderr, _) = courant(&["run", "fig1", "--out", s(&results)]);
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(
+        stderr.contains("holds the output of `courant reference`"),
+        "{stderr}"
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -191,7 +191,7 @@ pub fn check(options: &CheckOptions) -> ExitCode {
         for scene in &report.scenes {
             let dir = out.join(&scene.name);
             if let Err(e) = write_dir_atomically(&dir, &scene.files) {
-                errln!("error: cannot write {}: {e}", dir.display());
+                errln!("error: {}", super::write_failure(&dir, &e));
                 return ExitCode::from(2);
             }
             outln!("  -> {}", dir.display());

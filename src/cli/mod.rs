@@ -56,7 +56,15 @@ pub fn exit_quietly_on_closed_pipe() {
     }
 }
 
-use crate::io::atomic::write_dir_atomically;
+use crate::io::atomic::{WriteError, write_dir_atomically};
+
+/// Why `dir` was not written, naming the path once (a refusal names it already).
+pub fn write_failure(dir: &std::path::Path, e: &WriteError) -> String {
+    match e {
+        WriteError::Refused(refusal) => refusal.to_string(),
+        WriteError::Io(io) => format!("cannot write {}: {io}", dir.display()),
+    }
+}
 use crate::pipeline::report_runs::run_for_report;
 use crate::report::render;
 use crate::scene::builtin::{self, BUILTIN_SCENES, builtin_scene, resolve_all};
@@ -131,7 +139,7 @@ pub fn report(args: &[String], out: Option<&std::path::Path>) -> ExitCode {
         }
     };
     if let Err(e) = write_dir_atomically(out, &report.files) {
-        errln!("error: cannot write {}: {e}", out.display());
+        errln!("error: {}", write_failure(out, &e));
         return ExitCode::from(2);
     }
     let t = report.tally;

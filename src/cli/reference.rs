@@ -36,7 +36,7 @@ pub fn reference(scene: &str, at: Option<&Path>, out: &Path) -> ExitCode {
     };
     let files = set_files(&set);
     if let Err(e) = write_dir_atomically(&dir, &files) {
-        errln!("error: cannot write {}: {e}", dir.display());
+        errln!("error: {}", super::write_failure(&dir, &e));
         return ExitCode::from(2);
     }
     let references: Vec<&str> = {

@@ -129,8 +129,8 @@ pub fn run(
                 Ok(s) => staged.push((s, label)),
                 Err(e) => {
                     errln!(
-                        "error: cannot write {}: {e} (nothing was written)",
-                        dir.display()
+                        "error: {} (nothing was written)",
+                        super::write_failure(&dir, &e)
                     );
                     drop(staged);
                     nothing_written();
@@ -141,10 +141,12 @@ pub fn run(
     }
     let mut written: Vec<String> = Vec::with_capacity(staged.len());
     for (s, label) in staged {
-        let dir = s.dir().display().to_string();
+        let path = s.dir().to_path_buf();
+        let dir = path.display().to_string();
         if let Err(e) = s.commit() {
             errln!(
-                "error: cannot write {dir}: {e}{}",
+                "error: {}{}",
+                super::write_failure(&path, &e),
                 if written.is_empty() {
                     " (nothing was written)".to_string()
                 } else {

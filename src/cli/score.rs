@@ -53,7 +53,7 @@ pub fn score(
     if let Some(out) = out {
         let dir = out.join(&scene.name);
         if let Err(e) = write_dir_atomically(&dir, &score_files(&outcome)) {
-            errln!("error: cannot write {}: {e}", dir.display());
+            errln!("error: {}", super::write_failure(&dir, &e));
             return ExitCode::from(2);
         }
         outln!("  -> {}", dir.display());

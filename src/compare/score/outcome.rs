@@ -215,10 +215,21 @@ impl ScoredSet {
             .count()
     }
 
+    /// True when nothing could be checked on the set: no expectation gave a verdict and no
+    /// diagnostic decided. Such a set never reads "pass".
+    pub fn nothing_checked(&self) -> bool {
+        self.verdicts.is_empty()
+            && self
+                .cases
+                .iter()
+                .all(|c| c.diagnostics.verdicts().iter().all(|v| v.verdict.is_none()))
+    }
+
     /// True when every expectation holds and no diagnostic fails (and, with `require_all`,
-    /// every case and time is supplied).
+    /// every case and time is supplied), and something was checked.
     pub fn passed(&self) -> bool {
-        (!self.require_all || (self.not_supplied() == 0 && self.missing_cases.is_empty()))
+        !self.nothing_checked()
+            && (!self.require_all || (self.not_supplied() == 0 && self.missing_cases.is_empty()))
             && self.verdicts.iter().all(|v| v.pass)
             && self.cases.iter().all(|c| {
                 c.diagnostics
