@@ -166,7 +166,7 @@ fn check_baseline_dev_zero_is_named_and_not_read() {
 
 #[cfg(unix)]
 #[test]
-fn junit_never_replaces_a_special_file_a_link_or_a_foreign_file() {
+fn junit_replaces_special_files_no_more_nor_a_link_or_a_foreign_file() {
     let dir = scratch("junit_special");
     let fifo = dir.join("fifo");
     mkfifo(&fifo);
@@ -390,4 +390,124 @@ fn reference_replaces_run_output_no_more_without_force() {
         "{stderr}"
     );
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Run `courant run FILE` (a scene reproducer): status 2 within [`PROMPT`], nothing written,
+/// the message holding every one of `expected`.
+fn scene_refused(file: &str, expected: &[&str]) {
+    let dir = scratch(file.trim_end_matches(".toml"));
+    let out = dir.join("o");
+    let (code, _, stderr, took) = courant(&["run", s(&data(file)), "--out", s(&out)]);
+    assert_eq!(code, Some(2), "{file}: {stderr}");
+    assert!(took < PROMPT, "{file}: took {took:?}");
+    assert!(!out.exists(), "{file}: exit 2 wrote {}", out.display());
+    for e in expected {
+        assert!(stderr.contains(e), "{file}: message lacks {e:?}: {stderr}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn fuzz_m64_fig6_empty_material_points_at_the_material_header() {
+    // `[material]` is on line 16 of the file.
+    scene_refused(
+        "fuzz_m64_fig6_empty_material_at_1_1.toml",
+        &["fuzz_m64_fig6_empty_material_at_1_1.toml:16:1: `material`: needs `modulus`"],
+    );
+}
+
+#[test]
+fn fuzz_m224_fig1_masses_no_profile_times_points_at_the_output_header() {
+    // `[output]` is on line 44 of the file.
+    scene_refused(
+        "fuzz_m224_fig1_masses_no_profile_times_at_1_1.toml",
+        &["fuzz_m224_fig1_masses_no_profile_times_at_1_1.toml:44:1: `output.end_time`"],
+    );
+}
+
+/// The README's statement of what the node-step cap means in time for the slowest scheme.
+fn readme_states_the_cap_for_the_slowest_scheme() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    assert!(
+        readme.contains("up to about 12 minutes for the slowest measured, Noh-Bathe"),
+        "README's Limits no longer state the cap's time for Noh-Bathe"
+    );
+    // ~7 ns per node-step (measured on the m4757 reproducer: 5.7e10 node-steps in ~7 min).
+    let minutes = courant::scene::budget::MAX_NODE_STEPS * 7e-9 / 60.0;
+    assert!(
+        minutes <= 12.0,
+        "the cap means {minutes:.1} minutes at 7 ns"
+    );
+}
+
+/// A reproducer that is slow within the caps: accepted in under a second, within the node-step
+/// cap, and its time covered by the README's statement of the cap.
+fn slow_within_caps(file: &str) {
+    let text = std::fs::read_to_string(data(file)).unwrap();
+    let started = Instant::now();
+    let scene = courant::scene::Scene::parse("r", file, &text).unwrap();
+    assert!(started.elapsed() < Duration::from_secs(1), "{file}");
+    let work = courant::scene::work::Work::of(&scene).unwrap();
+    assert!(
+        work.node_steps <= courant::scene::budget::MAX_NODE_STEPS,
+        "{file}"
+    );
+    readme_states_the_cap_for_the_slowest_scheme();
+}
+
+#[test]
+fn fuzz_m4757_stability_noh_bathe_is_within_the_cap_the_readme_states_in_time() {
+    slow_within_caps("fuzz_m4757_stability_noh_bathe_end_time_1e6.toml");
+}
+
+#[test]
+fn fuzz_m125_courant_sweep_is_within_the_cap_the_readme_states_in_time() {
+    slow_within_caps("fuzz_m125_courant_sweep_co_1e-6.toml");
+}
+
+/// The kill-test line: a killed `run` leaves `.SCENE.partial-PID` siblings; the next write
+/// removes those of processes that are no longer running (documented best effort).
+#[cfg(target_os = "linux")]
+#[test]
+fn kill_test_leftovers_of_a_killed_run_go_at_the_next_write() {
+    let dir = scratch("kill_leftovers");
+    let out = dir.join("o");
+    let (code, _, stderr, _) = courant(&["run", "fig1", "--out", s(&out)]);
+    assert_eq!(code, Some(0), "{stderr}");
+    // A pid above the kernel's maximum is never running.
+    let leftover = out.join(".fig1.partial-4194305");
+    std::fs::create_dir_all(&leftover).unwrap();
+    std::fs::write(leftover.join("co1.csv"), "t\n").unwrap();
+    let (code, _, stderr, _) = courant(&["run", "fig1", "--out", s(&out)]);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(!leftover.exists(), "the leftover of a dead run stayed");
+    assert!(out.join("fig1/summary.csv").is_file());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn every_index_line_has_its_test() {
+    let index = std::fs::read_to_string(data("INDEX.txt")).unwrap();
+    let source = include_str!("score_and_io_regressions.rs");
+    let mut entries = 0;
+    for line in index
+        .lines()
+        .filter(|l| l.contains(" | ") && !l.starts_with("file |"))
+    {
+        let file = line.split(" | ").next().unwrap().trim();
+        let stem = if file.starts_with("(kill test)") {
+            "kill_test".to_string()
+        } else {
+            let stem = file.trim_end_matches('/').split('.').next().unwrap();
+            stem.split('_').take(3).collect::<Vec<_>>().join("_")
+        };
+        assert!(
+            source.contains(&format!("fn {}", stem.to_lowercase())),
+            "no test for {file} (a test named `{}...`)",
+            stem.to_lowercase()
+        );
+        entries += 1;
+    }
+    assert_eq!(entries, 20, "INDEX.txt lines");
 }
