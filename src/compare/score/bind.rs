@@ -6,6 +6,7 @@
 use super::applies::{Applies, Declared};
 use super::outcome::ScoreError;
 use super::reference_work::check_reference_work;
+use crate::results::exchange::error::short_number;
 use crate::results::exchange::error::{ExchangeError, ExchangeErrors};
 use crate::results::exchange::meta::CaseMeta;
 use crate::results::exchange::reader::TOUCH;
@@ -418,7 +419,8 @@ pub fn check_on_bar(
                         "x_left",
                         format!(
                             "the mesh does not cover the bar {bar}: at t = {} it starts at x = {}",
-                            p.time, left[0]
+                            short_number(p.time),
+                            short_number(left[0])
                         ),
                     ));
                 }
@@ -430,7 +432,8 @@ pub fn check_on_bar(
                         "x_right",
                         format!(
                             "the mesh does not cover the bar {bar}: at t = {} it ends at x = {}",
-                            p.time, right[last]
+                            short_number(p.time),
+                            short_number(right[last])
                         ),
                     ));
                 }
@@ -442,7 +445,7 @@ pub fn check_on_bar(
                         line(i),
                         file.column("x"),
                         "x",
-                        format!("x = {} lies outside the bar {bar}", x[i]),
+                        format!("x = {} lies outside the bar {bar}", short_number(x[i])),
                     ));
                 }
             }

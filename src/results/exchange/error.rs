@@ -61,6 +61,16 @@ pub struct ExchangeErrors(pub Vec<ExchangeError>);
 /// counted).
 pub const SHOWN: usize = 40;
 
+/// `x` for a message: as Rust writes it, or in exponent form when that would take more than a
+/// dozen digits (`1e308` rather than 309 of them, `5e-324` rather than 324 zeros).
+pub fn short_number(x: f64) -> String {
+    if x != 0.0 && x.is_finite() && !(1e-4..1e6).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
 /// At most this many errors of one file are reported (the rest are counted).
 pub const ERRORS_PER_FILE: usize = 20;
 
@@ -153,5 +163,13 @@ mod tests {
             "r/co1.csv:3:4: `stress`: `x` is not a number"
         );
         assert_eq!(line_column("a\nbc\nd", 4), (2, 3));
+    }
+
+    #[test]
+    fn numbers_in_messages_are_short() {
+        assert_eq!(short_number(1e308), "1e308");
+        assert_eq!(short_number(5e-324), "5e-324");
+        assert_eq!(short_number(0.25), "0.25");
+        assert_eq!(short_number(-12.5), "-12.5");
     }
 }

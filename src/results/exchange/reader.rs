@@ -3,7 +3,8 @@
 
 use super::columns::{Header, Kind, Want};
 use super::error::{
-    ERRORS_PER_FILE, ExchangeError, ExchangeErrors, SHOWN, csv_error, unterminated_quote,
+    ERRORS_PER_FILE, ExchangeError, ExchangeErrors, SHOWN, csv_error, short_number,
+    unterminated_quote,
 };
 use super::meta::{ResultsMeta, parse};
 use super::record::{
@@ -271,7 +272,8 @@ fn check_elements(
                 "x_right",
                 format!(
                     "x_right = {} is not above x_left = {}: an element has a positive length",
-                    right[i], left[i]
+                    short_number(right[i]),
+                    short_number(left[i])
                 ),
             ));
         }
@@ -326,7 +328,7 @@ fn check_points(
                 "x",
                 format!(
                     "the points overlap: x = {} is given twice at one time (line {})",
-                    x[i],
+                    short_number(x[i]),
                     lines[i - 1]
                 ),
             ));
@@ -350,8 +352,8 @@ fn force_history(
                 "t",
                 format!(
                     "t = {} after t = {} (line {}): the times of a force history increase",
-                    b.unwrap_or(f64::NAN),
-                    a.unwrap_or(f64::NAN),
+                    short_number(b.unwrap_or(f64::NAN)),
+                    short_number(a.unwrap_or(f64::NAN)),
                     pair[0].line
                 ),
             ));
