@@ -511,3 +511,41 @@ fn every_index_line_has_its_test() {
     }
     assert_eq!(entries, 20, "INDEX.txt lines");
 }
+
+/// Beyond the INDEX: files a set cannot use are named (not "no case files"), and a linked file
+/// that is no CSV is not echoed into the message.
+#[cfg(unix)]
+#[test]
+fn special_misnamed_and_foreign_case_files_are_named_not_skipped_or_echoed() {
+    let dir = scratch("special_case_files");
+    let set = dir.join("set");
+    std::fs::create_dir_all(set.join("co0.1.csv")).unwrap();
+    mkfifo(&set.join("co1.csv"));
+    std::os::unix::fs::symlink(dir.join("nothing"), set.join("co0.5.csv")).unwrap();
+    std::fs::write(set.join("co1.CSV"), "t,x,stress\n0.5,0.5,1\n").unwrap();
+    let (code, _, stderr, took) = courant(&["score", "fig1", "--results", s(&set)]);
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(took < PROMPT, "took {took:?}");
+    for expected in [
+        "co1.csv:0:0: is a FIFO",
+        "co0.5.csv:0:0: does not exist (a symbolic link to nothing)",
+        "co0.1.csv:0:0: is a directory",
+        "co1.CSV:0:0: not read: names are case-sensitive",
+    ] {
+        assert!(stderr.contains(expected), "lacks {expected:?}: {stderr}");
+    }
+    assert!(!stderr.contains("no case files"), "{stderr}");
+    let other = dir.join("other");
+    std::fs::create_dir_all(&other).unwrap();
+    let secret = dir.join("secret.txt");
+    std::fs::write(&secret, "root:x:0:0:root:/root:/bin/bash\n").unwrap();
+    std::os::unix::fs::symlink(&secret, other.join("co1.csv")).unwrap();
+    let (code, _, stderr, _) = courant(&["score", "fig1", "--results", s(&other)]);
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(
+        !stderr.contains("root:x"),
+        "the file's text is echoed: {stderr}"
+    );
+    assert!(stderr.contains("no column name"), "{stderr}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -153,15 +153,31 @@ impl Header {
                     .min_by_key(|(d, _)| *d)
                     .map(|(_, c)| format!(" (did you mean `{c}`?)"))
                     .unwrap_or_default();
+                // A name that could not be a column (other text: a file that is no CSV, such as
+                // a linked system file) is described, not echoed.
+                let name_like = name
+                    .chars()
+                    .all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '.' | ' '));
+                let key = if name_like {
+                    shortened(name, SHOWN)
+                } else {
+                    String::new()
+                };
+                let what = if name_like {
+                    format!("unknown column{hint}")
+                } else {
+                    format!(
+                        "field {} of the header line is no column name ({} bytes of other text: is this a result file?)",
+                        i + 1,
+                        name.len()
+                    )
+                };
                 return Err(ExchangeError::at(
                     file,
                     1,
                     i + 1,
-                    &shortened(name, SHOWN),
-                    format!(
-                        "unknown column{hint}; the format's files are {}",
-                        kinds_described()
-                    ),
+                    &key,
+                    format!("{what}; the format's files are {}", kinds_described()),
                 ));
             };
             if present.iter().any(|(n, _)| *n == known) {
