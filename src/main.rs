@@ -2,6 +2,7 @@
 
 use clap::{Parser, Subcommand};
 use courant::cli::check::CheckOptions;
+use courant::io::manifest::set_writer;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -45,6 +46,10 @@ enum Command {
         /// (chosen so any scene validates in about a second). The node-step limit stays.
         #[arg(long)]
         large: bool,
+        /// Replace DIR/<scene> even when another command (`courant run`, `reference`, `score`)
+        /// wrote it (its manifest says which); without it that is refused.
+        #[arg(long)]
+        force: bool,
     },
     /// Grade another code's results (the exchange format: DIR/<case>.csv, results.toml) against
     /// a scene's references, with the norms and expectations of `run`, plus diagnostics
@@ -77,6 +82,10 @@ enum Command {
         /// Write a JUnit XML report here.
         #[arg(long, value_name = "FILE")]
         junit: Option<PathBuf>,
+        /// Replace DIR/<scene> even when another command (`courant run`, `reference`, `score`)
+        /// wrote it (its manifest says which); without it that is refused.
+        #[arg(long)]
+        force: bool,
     },
     /// Write a scene's exact answers in the exchange format to DIR/<scene>/: at its own mesh
     /// and output times, or at the rows of a query file (t, x_left, x_right | t, x | t | mode).
@@ -90,6 +99,10 @@ enum Command {
         /// Output directory.
         #[arg(long, value_name = "DIR")]
         out: PathBuf,
+        /// Replace DIR/<scene> even when another command (`courant run`, `reference`, `score`)
+        /// wrote it (its manifest says which); without it that is refused.
+        #[arg(long)]
+        force: bool,
     },
     /// Regenerate the verification report: every built-in scene, the convergence and
     /// work-precision studies and the stability table, run in parallel, written whole (staged,
@@ -144,26 +157,30 @@ fn main() -> ExitCode {
     courant::cli::exit_quietly_on_closed_pipe();
     let command = Cli::parse().command;
     if let Err(message) = courant::cli::read_thread_setting() {
-        eprintln!("error: {message}");
-        return ExitCode::from(2);
+        courant::cli::console::err(format_args!("error: {message}\n"));
+        return courant::cli::console::finish(ExitCode::from(2));
     }
-    match command {
+    let code = match command {
         Command::List { schemes } => courant::cli::list(schemes),
         Command::Run {
             scenes,
             out,
             exchange,
             large,
-        } => courant::cli::run::run(
-            &scenes,
-            &out,
-            exchange.as_deref(),
-            if large {
-                courant::scene::limits::Limits::LARGE
-            } else {
-                courant::scene::limits::Limits::DEFAULT
-            },
-        ),
+            force,
+        } => {
+            set_writer("courant run", force);
+            courant::cli::run::run(
+                &scenes,
+                &out,
+                exchange.as_deref(),
+                if large {
+                    courant::scene::limits::Limits::LARGE
+                } else {
+                    courant::scene::limits::Limits::DEFAULT
+                },
+            )
+        }
         Command::Score {
             scene,
             results,
@@ -171,21 +188,35 @@ fn main() -> ExitCode {
             stated,
             out,
             junit,
-        } => courant::cli::score::score(
-            &scene,
-            &results,
-            &courant::cli::score::Options {
-                require_all,
-                stated: stated.as_deref(),
-            },
-            out.as_deref(),
-            junit.as_deref(),
-        ),
-        Command::Reference { scene, at, out } => {
+            force,
+        } => {
+            set_writer("courant score", force);
+            courant::cli::score::score(
+                &scene,
+                &results,
+                &courant::cli::score::Options {
+                    require_all,
+                    stated: stated.as_deref(),
+                },
+                out.as_deref(),
+                junit.as_deref(),
+            )
+        }
+        Command::Reference {
+            scene,
+            at,
+            out,
+            force,
+        } => {
+            set_writer("courant reference", force);
             courant::cli::reference::reference(&scene, at.as_deref(), &out)
         }
         Command::Report { scenes, out } => courant::cli::report(&scenes, out.as_deref()),
-        Command::Check(options) => courant::cli::check::check(&options),
+        Command::Check(options) => {
+            // `check --out` writes what `run` writes (and may replace a run's output).
+            set_writer("courant run", false);
+            courant::cli::check::check(&options)
+        }
         Command::Bench {
             sizes,
             node_steps,
@@ -199,5 +230,7 @@ fn main() -> ExitCode {
             out,
             skip_c: no_c,
         }),
-    }
+    };
+    // A failed write to the terminal turns the status into 2, with one line on stderr.
+    courant::cli::console::finish(code)
 }

@@ -104,7 +104,7 @@ fn case_line(c: &ScoredCase) -> String {
             "{}: {} samples{dt}; plateau deviation {:.3e}, impulse error {:.3e}, duration error {:.3e}, force L1 error {:.3e}",
             c.case,
             force.time.len(),
-            force.errors.plateau_deviation,
+            force.errors.plateau_deviation.unwrap_or(f64::NAN),
             force.impulse_error,
             force.errors.duration_error.unwrap_or(f64::NAN),
             force.errors.force_l1_error
@@ -245,7 +245,13 @@ pub fn terminal(scene: &Scene, outcome: &ScoreOutcome) -> String {
         c.orders,
         c.findings,
         c.failed,
-        if c.failed == 0 { "pass" } else { "FAIL" },
+        if c.failed > 0 {
+            "FAIL"
+        } else if outcome.sets.iter().any(ScoredSet::nothing_checked) {
+            "FAIL (nothing could be checked on a set)"
+        } else {
+            "pass"
+        },
         c.not_applicable,
         c.not_supplied,
         if outcome.sets.iter().any(|s| s.require_all) {

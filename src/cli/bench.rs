@@ -32,7 +32,7 @@
 //! Timings are medians of wall time on a possibly shared machine: repeat when in doubt. Nothing
 //! here is a test; no test asserts a time.
 
-use crate::io::atomic::write_file_atomically;
+use crate::io::owned_file::{Owner, check_file_replaceable, write_owned_file};
 use crate::results::table::{Precision, Table};
 use crate::run::threads;
 use courant_solver::bench::LumpedStep;
@@ -114,13 +114,14 @@ struct CReference {
 /// Run the benchmark, print the table and write it as CSV to `options.out`.
 pub fn bench(options: &BenchOptions) -> ExitCode {
     if let Err(e) = check(options) {
-        eprintln!("error: {e}");
+        errln!("error: {e}");
         return ExitCode::from(2);
     }
-    println!("cpu:        {}", crate::report::timing::cpu());
-    println!(
+    outln!("cpu:        {}", crate::report::timing::cpu());
+    outln!(
         "node-steps: {:.3e} per repetition, {} repetitions, median reported",
-        options.node_steps, options.reps
+        options.node_steps,
+        options.reps
     );
     let c = if options.skip_c {
         Err("skipped (--no-c)".to_string())
@@ -128,8 +129,8 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
         measure_c(options)
     };
     match &c {
-        Ok(c) => println!("C:          {} {}", c.compiler, c.flags),
-        Err(e) => println!("C:          not measured: {e}"),
+        Ok(c) => outln!("C:          {} {}", c.compiler, c.flags),
+        Err(e) => outln!("C:          not measured: {e}"),
     }
     let mut table = Table::new(&COLUMNS);
     for &n in &options.sizes {
@@ -154,7 +155,7 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
         {
             Ok(m) => m,
             Err(e) => {
-                eprintln!("error: N = {n}: {e}");
+                errln!("error: N = {n}: {e}");
                 return ExitCode::from(2);
             }
         };
@@ -184,17 +185,17 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
             ratio(loop_one).into(),
         ]);
     }
-    println!("ns per node-step (medians):");
-    print!("{}", super::run::aligned(&table, "  "));
+    outln!("ns per node-step (medians):");
+    out!("{}", super::run::aligned(&table, "  "));
     let csv = table.to_csv(Precision::Significant {
         digits: 4,
         floor: 0.0,
     });
-    if let Err(e) = write_file_atomically(&options.out, &csv) {
-        eprintln!("error: cannot write {}: {e}", options.out.display());
+    if let Err(e) = write_owned_file(&options.out, &csv, BENCH_CSV) {
+        errln!("error: cannot write --out {e}");
         return ExitCode::from(2);
     }
-    println!("-> {}", options.out.display());
+    outln!("-> {}", options.out.display());
     ExitCode::SUCCESS
 }
 
@@ -222,29 +223,21 @@ fn check(options: &BenchOptions) -> Result<(), String> {
     if !(1..=1000).contains(&options.reps) {
         return Err(format!("--reps: {} must lie in 1..=1000", options.reps));
     }
-    // Only a file `courant bench` wrote is replaced (its header line), never a user's file.
-    let out = &options.out;
-    if out.is_dir() {
-        return Err(format!(
-            "--out: {} is a directory, not a file",
-            out.display()
-        ));
-    }
-    if out.exists() {
-        let first = std::fs::read_to_string(out)
-            .ok()
-            .and_then(|text| text.lines().next().map(String::from));
-        // Any version's header: every one starts with these two columns.
-        if !first.is_some_and(|line| line.starts_with("N,") && line.contains(",c_variant,")) {
-            return Err(format!(
-                "--out: {} exists and is not a file `courant bench` wrote (its first line is not \
-                 the bench header); give another path or remove it",
-                out.display()
-            ));
-        }
-    }
+    // Only a new file or one `courant bench` wrote (its header line) is replaced: never a
+    // user's file, a FIFO (which would block) or a device.
+    check_file_replaceable(&options.out, BENCH_CSV).map_err(|e| format!("--out {e}"))?;
     Ok(())
 }
+
+/// A CSV `courant bench` wrote: any version's header starts with `N,` and has `c_variant`.
+const BENCH_CSV: Owner = Owner {
+    what: "`courant bench`",
+    recognises: |head| {
+        head.lines()
+            .next()
+            .is_some_and(|line| line.starts_with("N,") && line.contains(",c_variant,"))
+    },
+};
 
 /// Steps of one repetition at `n` elements.
 fn steps_for(n: usize, options: &BenchOptions) -> usize {

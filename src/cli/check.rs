@@ -4,7 +4,8 @@ use crate::check::baseline::kind::BaselineKind;
 use crate::check::gate::CheckReport;
 use crate::check::junit_report::xml;
 use crate::check::render::terminal;
-use crate::io::atomic::{write_dir_atomically, write_file_atomically};
+use crate::io::atomic::write_dir_atomically;
+use crate::io::owned_file::{JUNIT, check_file_replaceable, write_owned_file};
 use crate::scene::builtin::resolve_all;
 use crate::scene::studies::convergence::{CONVERGENCE_STUDIES, ConvergenceStudy};
 use std::path::PathBuf;
@@ -114,17 +115,17 @@ pub fn check(options: &CheckOptions) -> ExitCode {
         Ok(scenes) => scenes,
         Err(errors) => {
             for e in errors {
-                eprintln!("error: {e}");
+                errln!("error: {e}");
             }
             return ExitCode::from(2);
         }
     };
     if let Some(dir) = baseline.filter(|d| !d.is_dir()) {
-        eprintln!("error: --baseline {}: not a directory", dir.display());
+        errln!("error: --baseline {}: not a directory", dir.display());
         return ExitCode::from(2);
     }
     if let (None, Some((flag, value))) = (baseline, tolerance_args.first_given()) {
-        eprintln!(
+        errln!(
             "error: {flag} {value:?}: a baseline tolerance needs --baseline DIR (--rel, --abs, --peak-rel, --peak-abs and --column only act on a baseline comparison)"
         );
         return ExitCode::from(2);
@@ -135,7 +136,7 @@ pub fn check(options: &CheckOptions) -> ExitCode {
         && BaselineKind::detect(base) == BaselineKind::Report
         && same_directory(base, out)
     {
-        eprintln!(
+        errln!(
             "error: --out {}: is the report baseline; run output would replace its scene directories (figures included). --out may name a run-output baseline only",
             out.display()
         );
@@ -144,7 +145,7 @@ pub fn check(options: &CheckOptions) -> ExitCode {
     if let Some(out) = out {
         for scene in &scenes {
             if let Err(e) = crate::io::manifest::check_replaceable(&out.join(&scene.name)) {
-                eprintln!("error: --out {}: {e}", out.display());
+                errln!("error: --out {}: {e}", out.display());
                 return ExitCode::from(2);
             }
         }
@@ -152,12 +153,13 @@ pub fn check(options: &CheckOptions) -> ExitCode {
     let tolerances = match tolerance_args.tolerances() {
         Ok(t) => t,
         Err(e) => {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             return ExitCode::from(2);
         }
     };
-    if let Some(file) = junit.filter(|f| f.is_dir()) {
-        eprintln!("error: --junit {}: is a directory", file.display());
+    // Refused before any work: only a new file or a JUnit report courant wrote is replaced.
+    if let Some(Err(e)) = junit.map(|file| check_file_replaceable(file, JUNIT)) {
+        errln!("error: --junit {e}");
         return ExitCode::from(2);
     }
     // Everything runs and is compared before anything is written (so --out may be a run-output
@@ -165,13 +167,13 @@ pub fn check(options: &CheckOptions) -> ExitCode {
     let report = match CheckReport::run(&scenes, studies, baseline, tolerances) {
         Ok(report) => report,
         Err((scene, e)) => {
-            eprintln!("error: {scene}: {e}");
+            errln!("error: {scene}: {e}");
             return ExitCode::from(2);
         }
     };
     let unmatched = report.unmatched_overrides();
     if !unmatched.is_empty() {
-        eprintln!(
+        errln!(
             "error: --column {}: no compared file has such a column; the rule would loosen nothing",
             unmatched.join(", --column ")
         );
@@ -179,28 +181,28 @@ pub fn check(options: &CheckOptions) -> ExitCode {
     }
     let counts = (report.expectation_counts(), report.baseline_counts());
     if counts.0.total == 0 && counts.1.total == 0 {
-        eprintln!(
+        errln!(
             "error: nothing to check: the scenes have no expectations and no --baseline was given"
         );
         return ExitCode::from(2);
     }
-    print!("{}", terminal(&report, options.verbose));
+    out!("{}", terminal(&report, options.verbose));
     if let Some(out) = out {
         for scene in &report.scenes {
             let dir = out.join(&scene.name);
             if let Err(e) = write_dir_atomically(&dir, &scene.files) {
-                eprintln!("error: cannot write {}: {e}", dir.display());
+                errln!("error: {}", super::write_failure(&dir, &e));
                 return ExitCode::from(2);
             }
-            println!("  -> {}", dir.display());
+            outln!("  -> {}", dir.display());
         }
     }
     if let Some(file) = junit {
-        if let Err(e) = write_file_atomically(file, &xml(&report)) {
-            eprintln!("error: cannot write {}: {e}", file.display());
+        if let Err(e) = write_owned_file(file, &xml(&report), JUNIT) {
+            errln!("error: cannot write --junit {e}");
             return ExitCode::from(2);
         }
-        println!("  -> {}", file.display());
+        outln!("  -> {}", file.display());
     }
     if report.passed() {
         ExitCode::SUCCESS

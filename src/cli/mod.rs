@@ -4,8 +4,23 @@
 //! Enters: parsed arguments. Leaves: terminal output, files, exit status. The top of the
 //! pipeline: it may use every stage, and no stage uses it.
 
+/// `println!` that never panics: see [`console`].
+macro_rules! outln {
+    () => { $crate::cli::console::out(format_args!("\n")) };
+    ($($arg:tt)*) => { $crate::cli::console::out(format_args!("{}\n", format_args!($($arg)*))) };
+}
+/// `print!` that never panics: see [`console`].
+macro_rules! out {
+    ($($arg:tt)*) => { $crate::cli::console::out(format_args!($($arg)*)) };
+}
+/// `eprintln!` that never panics: see [`console`].
+macro_rules! errln {
+    ($($arg:tt)*) => { $crate::cli::console::err(format_args!("{}\n", format_args!($($arg)*))) };
+}
+
 pub mod bench;
 pub mod check;
+pub mod console;
 pub mod reference;
 pub mod run;
 pub mod schemes;
@@ -34,7 +49,15 @@ pub fn exit_quietly_on_closed_pipe() {
     }
 }
 
-use crate::io::atomic::write_dir_atomically;
+use crate::io::atomic::{WriteError, write_dir_atomically};
+
+/// Why `dir` was not written, naming the path once (a refusal names it already).
+pub fn write_failure(dir: &std::path::Path, e: &WriteError) -> String {
+    match e {
+        WriteError::Refused(refusal) => refusal.to_string(),
+        WriteError::Io(io) => format!("cannot write {}: {io}", dir.display()),
+    }
+}
 use crate::pipeline::report_runs::run_for_report;
 use crate::report::render;
 use crate::scene::builtin::{self, BUILTIN_SCENES, builtin_scene, resolve_all};
@@ -45,7 +68,7 @@ use std::process::ExitCode;
 
 pub fn list(schemes: bool) -> ExitCode {
     if schemes {
-        print!("{}", schemes::listing());
+        out!("{}", schemes::listing());
         return ExitCode::SUCCESS;
     }
     let width = BUILTIN_SCENES
@@ -55,8 +78,8 @@ pub fn list(schemes: bool) -> ExitCode {
         .unwrap_or(0);
     for (name, _) in BUILTIN_SCENES {
         match builtin_scene(name) {
-            Some(Ok(scene)) => println!("{name:width$}  {}", scene.description),
-            Some(Err(e)) => println!("{name:width$}  (invalid: {e})"),
+            Some(Ok(scene)) => outln!("{name:width$}  {}", scene.description),
+            Some(Err(e)) => outln!("{name:width$}  (invalid: {e})"),
             None => {}
         }
     }
@@ -68,7 +91,7 @@ pub fn report(args: &[String], out: Option<&std::path::Path>) -> ExitCode {
         match builtin::all() {
             Ok(scenes) => (scenes, CONVERGENCE_STUDIES),
             Err(e) => {
-                eprintln!("error: {e}");
+                errln!("error: {e}");
                 return ExitCode::from(2);
             }
         }
@@ -77,7 +100,7 @@ pub fn report(args: &[String], out: Option<&std::path::Path>) -> ExitCode {
             Ok(scenes) => (scenes, &[]),
             Err(errors) => {
                 for e in errors {
-                    eprintln!("error: {e}");
+                    errln!("error: {e}");
                 }
                 return ExitCode::from(2);
             }
@@ -87,7 +110,7 @@ pub fn report(args: &[String], out: Option<&std::path::Path>) -> ExitCode {
         (Some(out), _) => out,
         (None, true) => std::path::Path::new("reports"),
         (None, false) => {
-            eprintln!(
+            errln!(
                 "error: --out DIR is required with scene names, so that a report of some scenes never replaces the built-in report in reports/"
             );
             return ExitCode::from(2);
@@ -96,7 +119,7 @@ pub fn report(args: &[String], out: Option<&std::path::Path>) -> ExitCode {
     // Refused before minutes of work: only an absent, empty or courant-written directory is
     // replaced.
     if let Err(e) = crate::io::manifest::check_replaceable(out) {
-        eprintln!("error: {e}");
+        errln!("error: {e}");
         return ExitCode::from(2);
     }
     let generated =
@@ -104,16 +127,16 @@ pub fn report(args: &[String], out: Option<&std::path::Path>) -> ExitCode {
     let report = match generated {
         Ok(r) => r,
         Err(e) => {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             return ExitCode::from(2);
         }
     };
     if let Err(e) = write_dir_atomically(out, &report.files) {
-        eprintln!("error: cannot write {}: {e}", out.display());
+        errln!("error: {}", write_failure(out, &e));
         return ExitCode::from(2);
     }
     let t = report.tally;
-    println!(
+    outln!(
         "report written to {} ({} files): {} verdicts, {} pass, {} finding(s), {} FAILED{}\nopen {}",
         out.display(),
         report.files.len(),

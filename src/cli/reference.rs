@@ -15,14 +15,14 @@ pub fn reference(scene: &str, at: Option<&Path>, out: &Path) -> ExitCode {
     let scene = match resolve(scene) {
         Ok(scene) => scene,
         Err(e) => {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             return ExitCode::from(2);
         }
     };
     let query = match at.map(read_query).transpose() {
         Ok(q) => q,
         Err(e) => {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             return ExitCode::from(2);
         }
     };
@@ -30,13 +30,13 @@ pub fn reference(scene: &str, at: Option<&Path>, out: &Path) -> ExitCode {
     let set = match exact_set(&scene, query.as_ref(), &dir.display().to_string()) {
         Ok(set) => set,
         Err(e) => {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             return ExitCode::from(2);
         }
     };
     let files = set_files(&set);
     if let Err(e) = write_dir_atomically(&dir, &files) {
-        eprintln!("error: cannot write {}: {e}", dir.display());
+        errln!("error: {}", super::write_failure(&dir, &e));
         return ExitCode::from(2);
     }
     let references: Vec<&str> = {
@@ -48,7 +48,7 @@ pub fn reference(scene: &str, at: Option<&Path>, out: &Path) -> ExitCode {
         r.dedup();
         r
     };
-    println!(
+    outln!(
         "{}: exact answers of {} case(s) ({}) -> {} ({} files)",
         scene.name,
         set.cases.len(),

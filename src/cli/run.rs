@@ -38,7 +38,7 @@ pub fn run(
         match resolve_within(name, limits) {
             Ok(scene) => scenes.push(scene),
             Err(e) => {
-                eprintln!("error: {e}");
+                errln!("error: {e}");
                 bad = true;
             }
         }
@@ -49,26 +49,26 @@ pub fn run(
         .unwrap_or_default();
     for dir in &exchange_dirs {
         if dirs.contains(dir) {
-            eprintln!(
+            errln!(
                 "error: {}: both the results and the exchange files would go there (give --exchange another directory)",
                 dir.display()
             );
             bad = true;
         } else if let Err(e) = check_replaceable(dir) {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             bad = true;
         }
     }
     for (i, dir) in dirs.iter().enumerate() {
         if dirs[..i].contains(dir) {
-            eprintln!(
+            errln!(
                 "error: {}: two scenes would write it (scene {} given twice)",
                 dir.display(),
                 scenes[i].name
             );
             bad = true;
         } else if let Err(e) = check_replaceable(dir) {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             bad = true;
         }
     }
@@ -94,7 +94,7 @@ pub fn run(
         let outcome = match evaluate_scene(scene) {
             Ok(r) => r,
             Err(e) => {
-                eprintln!("error: {}: {e} (nothing was written)", scene.name);
+                errln!("error: {}: {e} (nothing was written)", scene.name);
                 drop(staged);
                 nothing_written();
                 return ExitCode::from(2);
@@ -118,7 +118,7 @@ pub fn run(
             let xdir = root.join(&scene.name);
             match exchange_set(scene, &outcome, &xdir.display().to_string()) {
                 Some(set) => files.push((xdir, set_files(&set), &[], " (exchange format)")),
-                None => println!(
+                None => outln!(
                     "  (no exchange form of {}: a dispersion or contact-stability study)",
                     scene.name
                 ),
@@ -128,9 +128,9 @@ pub fn run(
             match stage_dir_streamed(&dir, &files, streams) {
                 Ok(s) => staged.push((s, label)),
                 Err(e) => {
-                    eprintln!(
-                        "error: cannot write {}: {e} (nothing was written)",
-                        dir.display()
+                    errln!(
+                        "error: {} (nothing was written)",
+                        super::write_failure(&dir, &e)
                     );
                     drop(staged);
                     nothing_written();
@@ -141,10 +141,12 @@ pub fn run(
     }
     let mut written: Vec<String> = Vec::with_capacity(staged.len());
     for (s, label) in staged {
-        let dir = s.dir().display().to_string();
+        let path = s.dir().to_path_buf();
+        let dir = path.display().to_string();
         if let Err(e) = s.commit() {
-            eprintln!(
-                "error: cannot write {dir}: {e}{}",
+            errln!(
+                "error: {}{}",
+                super::write_failure(&path, &e),
                 if written.is_empty() {
                     " (nothing was written)".to_string()
                 } else {
@@ -153,7 +155,7 @@ pub fn run(
             );
             return ExitCode::from(2);
         }
-        println!("  -> {dir}{label}");
+        outln!("  -> {dir}{label}");
         written.push(dir);
     }
     if failed {
@@ -206,8 +208,8 @@ pub fn aligned(table: &Table, indent: &str) -> String {
 /// A scene's results on the terminal: its cases (cost beside error), its spectra, dispersion
 /// runs, contact runs or sweep, then its verdicts.
 pub fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
-    println!("{}: {}", scene.name, scene.description);
-    println!("  source: {}", scene.source);
+    outln!("{}: {}", scene.name, scene.description);
+    outln!("  source: {}", scene.source);
     if !outcome.spectra.is_empty() {
         let mut t = Table::new(&["case", "modes", "closed_form_deviation", "wall_s"]);
         for s in &outcome.spectra {
@@ -218,7 +220,7 @@ pub fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
                 s.wall_time.as_secs_f64().into(),
             ]);
         }
-        print!("{}", aligned(&t, "  "));
+        out!("{}", aligned(&t, "  "));
     }
     if !outcome.dispersion.is_empty() {
         let mut t = Table::new(&["case", "modes", "max_deviation", "min_order"]);
@@ -230,7 +232,7 @@ pub fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
                 d.min_order().into(),
             ]);
         }
-        print!("{}", aligned(&t, "  "));
+        out!("{}", aligned(&t, "  "));
     }
     if !outcome.contact.is_empty() {
         let mut t = Table::new(&[
@@ -261,10 +263,10 @@ pub fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
                 status.into(),
             ]);
         }
-        print!("{}", aligned(&t, "  "));
+        out!("{}", aligned(&t, "  "));
     }
     for s in &outcome.sweeps {
-        println!(
+        outln!(
             "  stability sweep: {} points, largest deviation from the closed form {:.3e}",
             s.rows.len(),
             s.deviation()
@@ -272,7 +274,7 @@ pub fn print_scene(scene: &Scene, outcome: &SceneOutcome) {
     }
     print_cases(&outcome.results);
     for v in &outcome.verdicts {
-        println!("  {}", v.describe());
+        outln!("  {}", v.describe());
     }
 }
 
@@ -317,5 +319,5 @@ pub fn print_cases(results: &[CaseResult]) {
             status.into(),
         ]);
     }
-    print!("{}", aligned(&t, "  "));
+    out!("{}", aligned(&t, "  "));
 }

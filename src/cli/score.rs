@@ -6,8 +6,9 @@ use crate::check::score_render::terminal;
 use crate::compare::score::outcome::Stated;
 use crate::compare::score::stated::{apply, parse};
 use crate::compare::score::tables::score_files;
-use crate::io::atomic::{write_dir_atomically, write_file_atomically};
+use crate::io::atomic::write_dir_atomically;
 use crate::io::clock::date;
+use crate::io::owned_file::{JUNIT, check_file_replaceable, write_owned_file};
 use crate::pipeline::score::score_dirs;
 use crate::scene::builtin::resolve;
 use std::path::{Path, PathBuf};
@@ -47,12 +48,13 @@ pub fn score(
     let scene = match resolve(scene) {
         Ok(scene) => scene,
         Err(e) => {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             return ExitCode::from(2);
         }
     };
-    if let Some(file) = junit.filter(|f| f.is_dir()) {
-        eprintln!("error: --junit {}: is a directory", file.display());
+    // Refused before any work: only a new file or a JUnit report courant wrote is replaced.
+    if let Some(Err(e)) = junit.map(|file| check_file_replaceable(file, JUNIT)) {
+        errln!("error: --junit {e}");
         return ExitCode::from(2);
     }
     // Everything is read, checked and compared before anything is written.
@@ -74,26 +76,26 @@ pub fn score(
             outcome
         }
         Err(e) => {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             return ExitCode::from(2);
         }
     };
-    print!("{}", terminal(&scene, &outcome));
+    out!("{}", terminal(&scene, &outcome));
     if let Some(out) = out {
         let dir = out.join(&scene.name);
         if let Err(e) = write_dir_atomically(&dir, &score_files(&outcome)) {
-            eprintln!("error: cannot write {}: {e}", dir.display());
+            errln!("error: {}", super::write_failure(&dir, &e));
             return ExitCode::from(2);
         }
-        println!("  -> {}", dir.display());
+        outln!("  -> {}", dir.display());
     }
     if let Some(file) = junit {
         let text = xml(&scene, &outcome, &started, clock.elapsed().as_secs_f64());
-        if let Err(e) = write_file_atomically(file, &text) {
-            eprintln!("error: cannot write {}: {e}", file.display());
+        if let Err(e) = write_owned_file(file, &text, JUNIT) {
+            errln!("error: cannot write --junit {e}");
             return ExitCode::from(2);
         }
-        println!("  -> {}", file.display());
+        outln!("  -> {}", file.display());
     }
     if outcome.passed() {
         ExitCode::SUCCESS

@@ -15,8 +15,9 @@ use std::time::Duration;
 /// How one force history compares with 1D wave theory.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ForceErrors {
-    /// Largest `|F - F1|/F1` for samples inside the first plateau (10 % to 90 % of it).
-    pub plateau_deviation: f64,
+    /// Largest `|F - F1|/F1` for samples inside the first plateau (10 % to 90 % of it); `None`
+    /// when no sample lies there (nothing to judge: a history cut short, or too coarse).
+    pub plateau_deviation: Option<f64>,
     /// `|duration - exact|/exact`, the duration between the first and last crossings of half the
     /// smallest plateau force of the reference (`None` when the force never reached it).
     pub duration_error: Option<f64>,
@@ -62,10 +63,12 @@ impl ForceErrors {
             .filter(|s| s.0 >= lo && s.0 <= hi)
             .map(|s| s.1)
             .collect();
-        let plateau_deviation = inside
-            .iter()
-            .map(|f| (f - plateau).abs() / plateau)
-            .fold(0.0, f64::max);
+        let plateau_deviation = (!inside.is_empty()).then(|| {
+            inside
+                .iter()
+                .map(|f| (f - plateau).abs() / plateau)
+                .fold(0.0, f64::max)
+        });
         let open_in_plateau = if inside.is_empty() {
             0.0
         } else {
@@ -143,6 +146,9 @@ pub struct ContactResult {
     /// Wall time of the run.
     pub wall_time: Duration,
 }
+
+/// Why a contact case has no `plateau_deviation`.
+pub const PLATEAU_UNDEFINED: &str = "undefined: no recorded force sample lies inside the first plateau (10 % to 90 % of it): the history ends before it, or its sampling misses it";
 
 /// Why a contact case has no `duration_error`.
 pub const DURATION_UNDEFINED: &str = "undefined: no recorded force sample reached half the smallest plateau (the contact opened before, or the sampling, history_every, missed it)";

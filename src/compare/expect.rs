@@ -6,7 +6,9 @@
 //! `force_history_difference` it is the distance between the two force histories.
 
 use super::case::CaseResult;
-use super::contact::{ContactResult, DURATION_UNDEFINED, ENERGY_RATIO_UNDEFINED, ForceErrors};
+use super::contact::{
+    ContactResult, DURATION_UNDEFINED, ENERGY_RATIO_UNDEFINED, ForceErrors, PLATEAU_UNDEFINED,
+};
 use super::norms::ErrorNorms;
 use super::outcome::SceneOutcome;
 use super::spectrum::SpectrumResult;
@@ -252,7 +254,11 @@ fn contact_value(e: &Expectation, r: &ContactResult, other: Option<&ContactResul
         )
     };
     match e.metric {
-        Metric::PlateauDeviation => of(|e| e.plateau_deviation),
+        Metric::PlateauDeviation => match errors.map(|e| e.plateau_deviation) {
+            Some(Some(d)) => Measured::Value(d),
+            Some(None) => Measured::Missing(PLATEAU_UNDEFINED.into()),
+            None => Measured::Missing("the scheme has no penalty force".into()),
+        },
         Metric::ImpulseError => Measured::Value(r.impulse_error),
         Metric::DurationError => match errors.map(|e| e.duration_error) {
             Some(Some(d)) => Measured::Value(d),

@@ -194,7 +194,7 @@ pub fn contact_summary_table(results: &[ContactResult]) -> Table {
             r.run.steps.into(),
             r.measure.label().into(),
             r.plateau.into(),
-            figure(r.errors.plateau_deviation),
+            r.errors.plateau_deviation.map_or(Cell::Empty, figure),
             figure(r.impulse_error),
             r.errors.duration_error.map_or(Cell::Empty, figure),
             figure(r.errors.force_l1_error),
@@ -223,6 +223,12 @@ fn contact_note(r: &ContactResult) -> String {
         notes.push(format!(
             "contact open at {:.0} % of the plateau samples (chatter: the plateau deviation is that of a force switching between 0 and its peak)",
             100.0 * r.errors.open_in_plateau
+        ));
+    }
+    if r.errors.plateau_deviation.is_none() {
+        notes.push(format!(
+            "plateau_deviation {}",
+            super::contact::PLATEAU_UNDEFINED
         ));
     }
     if r.errors.duration_error.is_none() {

@@ -13,7 +13,14 @@
 //! [`Refusal`] naming the path and the first entry courant did not write, and nothing is
 //! touched. Outputs written before courant marked them have no manifest and are refused too:
 //! remove them by hand once.
+//!
+//! The manifest also names the command that wrote the directory (`# written by: courant run`)
+//! when the command set it ([`set_writer`]). `run` writes a scene's profiles, histories and
+//! energy logs; `reference` and `score --out` write a handful of exchange files or tables to the
+//! same `DIR/<scene>`: one command's output is not replaced by another's unless it was told to
+//! (`--force`), and the refusal says what is there.
 
+use super::bounded_read::{ReadError, TEXT_CAP, read_text};
 use super::file_kind::kind_of;
 use std::collections::BTreeSet;
 use std::io;
@@ -25,6 +32,19 @@ pub const MANIFEST: &str = ".courant-manifest";
 
 /// First line of every manifest: what the directory is.
 const HEADER: &str = "# courant output: written whole by courant; its next write replaces the whole directory. Files written:";
+
+/// Start of the manifest line naming the command that wrote the directory.
+const WRITER_PREFIX: &str = "# written by: ";
+
+/// The command of this process and whether it may replace another command's output.
+static WRITER: std::sync::OnceLock<(&'static str, bool)> = std::sync::OnceLock::new();
+
+/// Name the command of this process (e.g. "courant run") in the manifests it writes, and let it
+/// replace another command's output only with `force`. Set once, at start-up; later calls are
+/// ignored.
+pub fn set_writer(command: &'static str, force: bool) {
+    let _ = WRITER.set((command, force));
+}
 
 /// Why a directory may not be replaced.
 #[derive(Debug, Error)]
@@ -59,6 +79,21 @@ pub enum Refusal {
         /// Whether the directory has no manifest at all or the entry is not listed in it.
         why: &'static str,
     },
+    /// Another command's output (its manifest names it).
+    #[error(
+        "{}: holds the output of `{by}` ({files} files); `{this}` would replace it with its own. Nothing was written: choose another output directory, or give --force to replace it",
+        .dir.display()
+    )]
+    OtherCommand {
+        /// The directory.
+        dir: PathBuf,
+        /// The command that wrote it.
+        by: String,
+        /// How many files it holds.
+        files: usize,
+        /// The command that would replace it.
+        this: &'static str,
+    },
     /// The directory cannot be read.
     #[error("{}: cannot read it to check what it holds: {source}", .path.display())]
     Unreadable {
@@ -74,6 +109,11 @@ pub fn manifest_text<'a>(files: impl IntoIterator<Item = &'a str>) -> String {
     let listed: BTreeSet<&str> = files.into_iter().collect();
     let mut text = String::from(HEADER);
     text.push('\n');
+    if let Some((command, _)) = WRITER.get() {
+        text.push_str(WRITER_PREFIX);
+        text.push_str(command);
+        text.push('\n');
+    }
     for file in listed {
         text.push_str(file);
         text.push('\n');
@@ -118,10 +158,24 @@ pub fn check_replaceable(dir: &Path) -> Result<(), Refusal> {
         path: dir.to_path_buf(),
         source,
     };
-    let manifest = match std::fs::read_to_string(dir.join(MANIFEST)) {
-        Ok(text) => Some(listed(&text)),
-        Err(e) if e.kind() == io::ErrorKind::NotFound => None,
-        Err(e) => return Err(unreadable(e)),
+    let manifest = match read_text(&dir.join(MANIFEST), TEXT_CAP) {
+        Ok(text) => {
+            let by = text.lines().find_map(|l| l.strip_prefix(WRITER_PREFIX));
+            if let (Some(by), Some(&(this, false))) = (by, WRITER.get())
+                && by != this
+            {
+                return Err(Refusal::OtherCommand {
+                    dir: dir.to_path_buf(),
+                    by: by.to_string(),
+                    files: listed(&text).len(),
+                    this,
+                });
+            }
+            Some(listed(&text))
+        }
+        Err(ReadError::Missing { dangling: false }) => None,
+        Err(ReadError::Io(e)) => return Err(unreadable(e)),
+        Err(e) => return Err(unreadable(io::Error::other(format!("{MANIFEST} {e}")))),
     };
     let (allowed, why) = match &manifest {
         Some(files) => (files.clone(), "its manifest does not list it"),

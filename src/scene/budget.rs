@@ -9,7 +9,7 @@
 //! | elements of one bar | [`MAX_ELEMENTS`] | a lumped model of 5x10^5 elements takes ~75 MB and 0.25 s to validate (measured); more could not run one transit within the node-step cap |
 //! | cases of a scene | [`MAX_CASES`] | each case holds its model and writes its files |
 //! | elements validated | [`MAX_VALIDATED_ELEMENTS`] | summed over the cases (a matrix mass counts [`MATRIX_MASS_WEIGHT`] times, a contact case [`CONTACT_WEIGHT`] times): each case's exact critical step is a Sturm bisection over its mesh |
-//! | node-steps | [`MAX_NODE_STEPS`] | summed over the cases: about 4 minutes at 2.5 ns per node-step |
+//! | node-steps | [`MAX_NODE_STEPS`] | summed over the cases: about 4 minutes for lumped central difference (2.5 ns per node-step), up to about 12 for Noh-Bathe with matrix masses (~7 ns) |
 //! | output values | [`MAX_OUTPUT_VALUES`] | numbers recorded and written (profiles, histories, energy logs, force histories), ~30 bytes each in memory as records and CSV text |
 //! | reference work | [`MAX_REFERENCE_WORK`] | lattice nodes of the graded reference's characteristics (~7 ns each, measured; an upper bound), or tracked waves of the layered one |
 //!
@@ -31,7 +31,8 @@ use courant_solver::MassKind;
 use std::ops::Range;
 
 /// Largest `steps x elements` a scene may ask for, summed over its cases (and for each case):
-/// about 4 minutes at 2.5 ns per node-step. Sturm passes of a stability sweep count as
+/// about 4 minutes at 2.5 ns per node-step (lumped central difference; up to about 12 for
+/// Noh-Bathe with matrix masses, ~7 ns). Sturm passes of a stability sweep count as
 /// node-steps.
 pub const MAX_NODE_STEPS: f64 = 1e11;
 /// Most elements of one bar (a mesh of a time-stepping, spectrum or dispersion scene, a contact

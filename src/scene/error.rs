@@ -93,7 +93,10 @@ impl Source<'_> {
         key: &str,
         message: impl Into<String>,
     ) -> SceneError {
-        let (line, column) = span.map(|s| self.position(s.start)).unwrap_or((1, 1));
+        let (line, column) = span
+            .map(|s| self.position(s.start))
+            .or_else(|| self.table_header(key))
+            .unwrap_or((1, 1));
         SceneError {
             file: self.file.to_string(),
             line,
@@ -102,6 +105,23 @@ impl Source<'_> {
             message: message.into(),
             also: Vec::new(),
         }
+    }
+
+    /// The (line, 1) of the header of the table `key` is in (`[material]` for `material` or
+    /// `material.modulus`, the first `[[expect]]` for `expect`): where an error about a key
+    /// that is missing from the table points, rather than the file's first line.
+    fn table_header(&self, key: &str) -> Option<(usize, usize)> {
+        let table = key.split(['.', '[']).next().filter(|t| !t.is_empty())?;
+        self.text.lines().enumerate().find_map(|(i, line)| {
+            let name = line
+                .trim()
+                .trim_start_matches('[')
+                .split([']', '.'])
+                .next()?
+                .trim()
+                .trim_matches('"');
+            (line.trim_start().starts_with('[') && name == table).then_some((i + 1, 1))
+        })
     }
 
     /// Convert a TOML deserialisation error, recovering the dotted key from the text at its span.

@@ -110,8 +110,15 @@ impl Scene {
                 "is a {kind}, not a scene file (a scene is a regular .toml file)"
             )));
         }
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| whole_file(format!("cannot read the scene file: {e}")))?;
+        let text = crate::io::bounded_read::read_text(path, crate::io::bounded_read::TEXT_CAP)
+            .map_err(|e| {
+                let (line, column) = e.location();
+                SceneError {
+                    line,
+                    column,
+                    ..whole_file(format!("the scene file {e}"))
+                }
+            })?;
         let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
         Scene::parse_within(name, &file, &text, limits)
     }

@@ -124,13 +124,30 @@ pub enum FileOutcome {
 /// A parsed CSV table: header and data rows.
 type Csv = (Vec<String>, Vec<Vec<String>>);
 
+/// A CSV reader's error as "line N: what" (not the csv crate's wording).
+fn located(e: &csv::Error) -> String {
+    let line = |pos: &Option<csv::Position>| pos.as_ref().map_or(0, csv::Position::line);
+    match e.kind() {
+        csv::ErrorKind::UnequalLengths {
+            pos,
+            expected_len,
+            len,
+        } => format!(
+            "line {}: the row has {len} cells, the header {expected_len}",
+            line(pos)
+        ),
+        csv::ErrorKind::Utf8 { pos, .. } => format!("line {}: not UTF-8 text", line(pos)),
+        _ => format!("not a CSV table ({e})"),
+    }
+}
+
 fn parse_csv(text: &str) -> Result<Csv, String> {
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(true)
         .from_reader(text.as_bytes());
     let header = reader
         .headers()
-        .map_err(|e| e.to_string())?
+        .map_err(|e| located(&e))?
         .iter()
         .map(str::to_string)
         .collect();
@@ -138,7 +155,7 @@ fn parse_csv(text: &str) -> Result<Csv, String> {
         .records()
         .map(|r| {
             r.map(|r| r.iter().map(str::to_string).collect())
-                .map_err(|e| e.to_string())
+                .map_err(|e| located(&e))
         })
         .collect::<Result<_, _>>()?;
     Ok((header, rows))
@@ -480,6 +497,17 @@ mod tests {
         assert!(
             columns(&outcome).iter().all(|c| !c.changed()),
             "{outcome:?}"
+        );
+    }
+
+    #[test]
+    fn a_corrupted_baseline_is_named_at_its_line() {
+        let outcome = compare_csv("a,b\n1,2\n", "a,b\n1,2\n3\n", &Tolerances::default());
+        assert_eq!(
+            outcome,
+            FileOutcome::Unreadable(
+                "baseline file: line 3: the row has 1 cells, the header 2".into()
+            )
         );
     }
 }

@@ -4,6 +4,7 @@
 use super::csv_diff::{ColumnChange, FileOutcome, compare_csv};
 use super::kind::BaselineKind;
 use super::tolerance::Tolerances;
+use crate::io::bounded_read::{DATA_CAP, ReadError, read_text};
 use std::path::Path;
 
 /// The comparison of one file.
@@ -150,12 +151,11 @@ pub fn compare_scene(
         .iter()
         .map(|(file, text)| {
             let outcome = if kind.keeps(file) {
-                match std::fs::read_to_string(baseline_dir.join(file)) {
+                // A FIFO, a device or a huge file in the baseline fails that file unread.
+                match read_text(&baseline_dir.join(file), DATA_CAP) {
                     Ok(base) => compare_csv(text, &base, tolerances),
-                    Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-                        FileOutcome::MissingInBaseline
-                    }
-                    Err(e) => FileOutcome::Unreadable(format!("baseline file: {e}")),
+                    Err(ReadError::Missing { dangling: false }) => FileOutcome::MissingInBaseline,
+                    Err(e) => FileOutcome::Unreadable(format!("baseline file: {}", e.located())),
                 }
             } else {
                 FileOutcome::NotKeptByReport

@@ -5,6 +5,7 @@
 use super::bind::{SceneKind, bar_extent, check_on_bar, profile_times};
 use super::outcome::ScoreError;
 use super::profiles::exact_values;
+use super::reference_work::check_reference_work;
 use super::spectrum::closed_form;
 use crate::results::exchange::FORMAT;
 use crate::results::exchange::error::ExchangeError;
@@ -69,6 +70,7 @@ pub fn exact_set(
         let queried: Vec<(f64, Positions)> = match query.map(|q| (q, &q.data)) {
             Some((q, CaseData::Profiles(profiles))) => {
                 check_on_bar(q, profiles, extent)?;
+                check_reference_work(q, profiles, reference, extent)?;
                 profiles
                     .iter()
                     .map(|p| (p.time, p.positions.clone()))
@@ -93,11 +95,19 @@ pub fn exact_set(
             .into_iter()
             .map(|(time, positions)| {
                 // `+ 0.0` writes an exact zero as 0, not -0 (sigma0 < 0 times no front).
-                let stress = exact_values(&positions, extent, reference, time)
+                let stress: Vec<f64> = exact_values(&positions, extent, reference, time)
                     .map_err(|why| ScoreError::Scene(format!("{}: {why}", case.name)))?
                     .into_iter()
                     .map(|v| v + 0.0)
                     .collect();
+                // Never a NaN in a file: a time the reference does not reach is refused.
+                if stress.iter().any(|v| !v.is_finite()) {
+                    return Err(ScoreError::Scene(format!(
+                        "{}: the {} reference is not defined at t = {time:e} (no value written)",
+                        case.name,
+                        reference.name()
+                    )));
+                }
                 Ok(Profile {
                     time,
                     positions,

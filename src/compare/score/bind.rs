@@ -5,12 +5,15 @@
 
 use super::applies::{Applies, Declared};
 use super::outcome::ScoreError;
+use super::reference_work::check_reference_work;
+use crate::results::exchange::error::short_number;
 use crate::results::exchange::error::{ExchangeError, ExchangeErrors};
 use crate::results::exchange::meta::CaseMeta;
 use crate::results::exchange::reader::TOUCH;
 use crate::results::exchange::record::{CaseData, CaseFile, ExchangeSet, Positions};
 use crate::scene::cases::{Case, Scene};
 use crate::scene::contact::ContactCase;
+use crate::scene::magnitude::MAGNITUDE_MAX;
 use crate::scene::mass::parse_mass;
 use crate::scene::reference::Reference;
 use crate::scene::spectrum::SpectrumCase;
@@ -191,7 +194,11 @@ fn bind_file<'a>(
                 .find(|c| c.name == file.case)
                 .expect("the stem names a case");
             let reference = case.reference.as_ref().expect("checked by SceneKind::of");
+            for p in profiles {
+                check_magnitudes(file, "stress", &p.stress, &p.lines)?;
+            }
             check_on_bar(file, profiles, bar_extent(case))?;
+            check_reference_work(file, profiles, reference, bar_extent(case))?;
             if let (Some((n, line)), Some(first)) =
                 (meta.and_then(|m| m.elements), profiles.first())
                 && matches!(first.positions, Positions::Elements { .. })
@@ -211,15 +218,32 @@ fn bind_file<'a>(
                 )
                 .into());
             }
+            // The file's mesh: declared, or its elements (a point file's is unknown).
+            let file_elements = meta.and_then(|m| m.elements).map(|(n, _)| n).or_else(|| {
+                profiles.first().and_then(|p| match p.positions {
+                    Positions::Elements { .. } => Some(p.positions.len()),
+                    Positions::Points(_) => None,
+                })
+            });
             let declared = Declared::stepping(meta, mass, &file.case, meta_file)?;
             applies =
                 declared.applies_to_stepping(&case.integrator.scheme.label(), case.integrator.mass);
             (
                 Target::Stepping(case, reference),
-                meta_dt.or(Some((case.integrator.dt, "scene"))),
+                declared_dt(
+                    meta,
+                    meta_dt,
+                    meta_file,
+                    &file.case,
+                    file_elements.map(|n| {
+                        case.integrator.dt * case.model.bar().element_count() as f64 / n as f64
+                    }),
+                    case.integrator.dt,
+                )?,
             )
         }
-        (SceneKind::Contact, CaseData::Force(_)) => {
+        (SceneKind::Contact, CaseData::Force(history)) => {
+            check_magnitudes(file, "force", &history.force, &history.lines)?;
             let case = scene
                 .contact
                 .iter()
@@ -228,7 +252,14 @@ fn bind_file<'a>(
             applies = Declared::contact(meta, &file.case, meta_file)?.applies_to_contact(case);
             (
                 Target::Contact(case),
-                meta_dt.or(Some((case.integrator.dt, "scene"))),
+                declared_dt(
+                    meta,
+                    meta_dt,
+                    meta_file,
+                    &file.case,
+                    Some(case.integrator.dt),
+                    case.integrator.dt,
+                )?,
             )
         }
         (SceneKind::Spectrum, CaseData::Spectrum(rows)) => {
@@ -306,6 +337,65 @@ fn bind_file<'a>(
     })
 }
 
+/// The step the diagnostics measure in: the declared `dt` of `results.toml`, else the scene
+/// case's. A declared step larger than the case's step on the file's mesh (`case_dt`, the
+/// case's Courant number: its dt times its elements over the file's) is refused at its case
+/// table: the time-level diagnostic measures lags in steps, so a larger declared step would hide
+/// a lag of a step the code really took. A smaller one (a lower Courant number) only makes the
+/// diagnostic stricter.
+fn declared_dt(
+    meta: Option<&CaseMeta>,
+    declared: Option<(f64, &'static str)>,
+    meta_file: &str,
+    case: &str,
+    case_dt: Option<f64>,
+    scene_dt: f64,
+) -> Result<Option<(f64, &'static str)>, ExchangeError> {
+    match (declared, case_dt) {
+        (Some((dt, _)), Some(expected)) if dt > expected * (1.0 + 1e-6) => Err(ExchangeError::at(
+            meta_file,
+            meta.map_or(0, |m| m.line),
+            1,
+            &format!("cases.\"{case}\".dt"),
+            format!(
+                "dt = {dt:e} is larger than the scene case's step on this mesh, {expected:e} (its Courant \
+                     number): the time-level diagnostic measures lags in steps, and a larger declared step would \
+                     hide one; declare the step the code took"
+            ),
+        )),
+        (Some(declared), _) => Ok(Some(declared)),
+        (None, _) => Ok(Some((scene_dt, "scene"))),
+    }
+}
+
+/// Every value of `column` (with its line) within the magnitude limit scenes have
+/// ([`MAGNITUDE_MAX`]): beyond it a result has diverged, and its norms would overflow to
+/// infinity in the tables.
+fn check_magnitudes(
+    file: &CaseFile,
+    column: &str,
+    values: &[f64],
+    lines: &[usize],
+) -> Result<(), ExchangeError> {
+    for (i, v) in values.iter().enumerate() {
+        // Sets built in memory have no lines: 0 then.
+        let line = lines.get(i).copied().unwrap_or(0);
+        if v.abs() > MAGNITUDE_MAX {
+            return Err(ExchangeError::at(
+                &file.file,
+                line,
+                file.column(column),
+                column,
+                format!(
+                    "{v:e} is beyond the magnitude limit {MAGNITUDE_MAX:e} of every value courant grades (README \"Limits\"); \
+                     a result this large has diverged"
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// Every profile of `file` on the bar `[start, end]`: elements from `start` to `end`, points
 /// within it (to [`TOUCH`] of the bar's length).
 pub fn check_on_bar(
@@ -329,7 +419,8 @@ pub fn check_on_bar(
                         "x_left",
                         format!(
                             "the mesh does not cover the bar {bar}: at t = {} it starts at x = {}",
-                            p.time, left[0]
+                            short_number(p.time),
+                            short_number(left[0])
                         ),
                     ));
                 }
@@ -341,7 +432,8 @@ pub fn check_on_bar(
                         "x_right",
                         format!(
                             "the mesh does not cover the bar {bar}: at t = {} it ends at x = {}",
-                            p.time, right[last]
+                            short_number(p.time),
+                            short_number(right[last])
                         ),
                     ));
                 }
@@ -353,7 +445,7 @@ pub fn check_on_bar(
                         line(i),
                         file.column("x"),
                         "x",
-                        format!("x = {} lies outside the bar {bar}", x[i]),
+                        format!("x = {} lies outside the bar {bar}", short_number(x[i])),
                     ));
                 }
             }

@@ -13,6 +13,7 @@ use super::applies::Applies;
 use super::bind::profile_times;
 use super::outcome::{Scored, ScoredCase, ScoredForce, SkipKind, Skipped};
 use crate::compare::contact::ForceErrors;
+use crate::compare::contact::{DURATION_UNDEFINED, PLATEAU_UNDEFINED};
 use crate::compare::expect::{at_time, judge, ratio};
 use crate::compare::norms::ErrorNorms;
 use crate::compare::stress_difference::{ProfileView, stress_difference};
@@ -214,11 +215,8 @@ fn measure(
         }
         Ok(Measured::Value(worst))
     };
-    let force = |pick: fn(&ScoredForce) -> Option<f64>| match &case.scored {
-        Scored::Force(f) => Ok(pick(f).map_or(
-            Measured::Missing("the force never reached half the plateau".into()),
-            Measured::Value,
-        )),
+    let force = |pick: fn(&ScoredForce) -> Option<f64>, why: &str| match &case.scored {
+        Scored::Force(f) => Ok(pick(f).map_or(Measured::Missing(why.into()), Measured::Value)),
         _ => Err(Unmeasured::from("the file holds no force history")),
     };
     let errors = |f: &ScoredForce| -> ForceErrors { f.errors };
@@ -228,10 +226,16 @@ fn measure(
         Metric::Linf => norm(|n| Some(n.linf)),
         Metric::Overshoot => norm(|n| Some(n.overshoot)),
         Metric::TvRatio => norm(|n| n.tv_ratio),
-        Metric::PlateauDeviation => force(|f| Some(f.errors.plateau_deviation)),
-        Metric::ImpulseError => force(|f| Some(f.impulse_error)),
-        Metric::DurationError => force(|f| f.errors.duration_error),
-        Metric::ForceL1Error => force(|f| Some(f.errors.force_l1_error)),
+        Metric::PlateauDeviation => force(|f| f.errors.plateau_deviation, PLATEAU_UNDEFINED),
+        Metric::ImpulseError => force(
+            |f| Some(f.impulse_error).filter(|e| e.is_finite()),
+            "undefined: the impulse of the force history is not finite",
+        ),
+        Metric::DurationError => force(|f| f.errors.duration_error, DURATION_UNDEFINED),
+        Metric::ForceL1Error => force(
+            |f| Some(f.errors.force_l1_error).filter(|e| e.is_finite()),
+            "undefined: the L1 error of the force history is not finite",
+        ),
         Metric::MaxForce => match &case.scored {
             Scored::Force(f) => Ok(Measured::Value(errors(f).max_force)),
             _ => Err("the file holds no force history".into()),

@@ -10,7 +10,7 @@
 //! ```
 //!
 //! - [`bind`]: each file to the case its stem names, checked against it (kind, mesh on the bar,
-//!   masses, modes); [`profiles`], [`force`], [`spectrum`]: a file beside its reference;
+//!   masses, modes; the reference work its times ask for, [`reference_work`]); [`profiles`], [`force`], [`spectrum`]: a file beside its reference;
 //!   [`diagnostics`]: time-level offset, sign and load convention; [`expect`]: the scene's
 //!   expectations; [`convergence`]: orders across sets; [`set`]: all of it for one set or
 //!   several; [`outcome`]: what it produces; [`tables`]: its CSV tables; [`export`]: a compared
@@ -30,6 +30,7 @@ pub mod export;
 pub mod force;
 pub mod outcome;
 pub mod profiles;
+pub mod reference_work;
 pub mod set;
 pub mod shift_fit;
 pub mod spectrum;

@@ -240,10 +240,22 @@ impl ScoredSet {
             .collect()
     }
 
-    /// True when every expectation holds, no diagnostic fails but as stated, every stated
-    /// finding holds (and, with `require_all`, every case and time is supplied).
+    /// True when nothing could be checked on the set: no expectation gave a verdict and no
+    /// diagnostic decided. Such a set never reads "pass".
+    pub fn nothing_checked(&self) -> bool {
+        self.verdicts.is_empty()
+            && self
+                .cases
+                .iter()
+                .all(|c| c.diagnostics.verdicts().iter().all(|v| v.verdict.is_none()))
+    }
+
+    /// True when something was checked, every expectation holds, no diagnostic fails but as
+    /// stated, every stated finding holds (and, with `require_all`, every case and time is
+    /// supplied).
     pub fn passed(&self) -> bool {
-        (!self.require_all || (self.not_supplied() == 0 && self.missing_cases.is_empty()))
+        !self.nothing_checked()
+            && (!self.require_all || (self.not_supplied() == 0 && self.missing_cases.is_empty()))
             && self.verdicts.iter().all(|v| v.pass)
             && self
                 .diagnostic_rows()

@@ -1,7 +1,8 @@
 //! The kinds of exchange file and their columns, and how a header is recognised: by its column
 //! names, each of which must belong to the format.
 
-use super::error::ExchangeError;
+use super::error::{ExchangeError, SHOWN};
+use crate::io::bounded_read::shortened;
 
 /// The kind of data a file holds, recognised from its columns.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -141,24 +142,42 @@ impl Header {
                 continue;
             }
             let Some(&known) = all.iter().find(|c| **c == name) else {
-                // The nearest known name within two edits, if any.
+                // The nearest known name within two edits, if any (a name far longer than any
+                // known one is not compared: the distance would cost its length squared).
                 let hint = all
                     .iter()
                     .chain([&REFERENCE])
+                    .filter(|c| name.len() <= c.len() + 2)
                     .map(|c| (edit_distance(c, name), c))
                     .filter(|(d, _)| *d <= 2)
                     .min_by_key(|(d, _)| *d)
                     .map(|(_, c)| format!(" (did you mean `{c}`?)"))
                     .unwrap_or_default();
+                // A name that could not be a column (other text: a file that is no CSV, such as
+                // a linked system file) is described, not echoed.
+                let name_like = name
+                    .chars()
+                    .all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '.' | ' '));
+                let key = if name_like {
+                    shortened(name, SHOWN)
+                } else {
+                    String::new()
+                };
+                let what = if name_like {
+                    format!("unknown column{hint}")
+                } else {
+                    format!(
+                        "field {} of the header line is no column name ({} bytes of other text: is this a result file?)",
+                        i + 1,
+                        name.len()
+                    )
+                };
                 return Err(ExchangeError::at(
                     file,
                     1,
                     i + 1,
-                    name,
-                    format!(
-                        "unknown column{hint}; the format's files are {}",
-                        kinds_described()
-                    ),
+                    &key,
+                    format!("{what}; the format's files are {}", kinds_described()),
                 ));
             };
             if present.iter().any(|(n, _)| *n == known) {
@@ -166,7 +185,7 @@ impl Header {
                     file,
                     1,
                     i + 1,
-                    name,
+                    &shortened(name, SHOWN),
                     "the column appears twice",
                 ));
             }

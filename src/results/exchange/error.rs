@@ -57,6 +57,20 @@ impl ExchangeError {
 #[error("{}", render(.0))]
 pub struct ExchangeErrors(pub Vec<ExchangeError>);
 
+/// At most this many characters of a value or name are echoed in a message (the rest are
+/// counted).
+pub const SHOWN: usize = 40;
+
+/// `x` for a message: as Rust writes it, or in exponent form when that would take more than a
+/// dozen digits (`1e308` rather than 309 of them, `5e-324` rather than 324 zeros).
+pub fn short_number(x: f64) -> String {
+    if x != 0.0 && x.is_finite() && !(1e-4..1e6).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
 /// At most this many errors of one file are reported (the rest are counted).
 pub const ERRORS_PER_FILE: usize = 20;
 
@@ -94,6 +108,49 @@ pub fn line_column(text: &str, offset: usize) -> (usize, usize) {
     (line, column)
 }
 
+/// The first line with an unterminated quote (an odd number of `"`): the CSV reader would
+/// swallow the rest of the file into one cell, and the damage would surface far away (e.g. as a
+/// gap in the mesh), so it is named at its line.
+pub fn unterminated_quote(file: &str, text: &str) -> Option<ExchangeError> {
+    let (i, line) = text
+        .lines()
+        .enumerate()
+        .find(|(_, l)| l.matches('"').count() % 2 == 1)?;
+    let column = line[..line.find('"').unwrap_or(0)].matches(',').count() + 1;
+    Some(ExchangeError::at(
+        file,
+        i + 1,
+        column,
+        "",
+        "an unterminated quote (`\"`): cells of this format are not quoted across lines",
+    ))
+}
+
+/// A CSV reader's error, located.
+pub fn csv_error(file: &str, e: &csv::Error) -> ExchangeError {
+    match e.kind() {
+        csv::ErrorKind::UnequalLengths {
+            pos,
+            expected_len,
+            len,
+        } => ExchangeError::at(
+            file,
+            pos.as_ref().map_or(0, |p| p.line() as usize),
+            1,
+            "",
+            format!("the row has {len} cells, the header {expected_len}"),
+        ),
+        csv::ErrorKind::Utf8 { pos, .. } => ExchangeError::at(
+            file,
+            pos.as_ref().map_or(0, |p| p.line() as usize),
+            1,
+            "",
+            "the row is not UTF-8 text",
+        ),
+        _ => ExchangeError::file(file, e.to_string()),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -106,5 +163,13 @@ mod tests {
             "r/co1.csv:3:4: `stress`: `x` is not a number"
         );
         assert_eq!(line_column("a\nbc\nd", 4), (2, 3));
+    }
+
+    #[test]
+    fn numbers_in_messages_are_short() {
+        assert_eq!(short_number(1e308), "1e308");
+        assert_eq!(short_number(5e-324), "5e-324");
+        assert_eq!(short_number(0.25), "0.25");
+        assert_eq!(short_number(-12.5), "-12.5");
     }
 }

@@ -1,12 +1,14 @@
-//! Result sets and query files read from disk: a directory's `*.csv` and `results.toml`
-//! ([`read_dir`], or [`read_dir_partial`] keeping what reads), a query file of
-//! `courant reference --at` ([`read_query`]). What the files hold is read by `super::reader`.
+//! Reading result sets and query files from disk: which files of a directory are read (and
+//! which are named rather than skipped in silence), each read through
+//! [`crate::io::bounded_read`] (regular files only, sizes and lines capped), then parsed by
+//! [`super::reader`].
 
 use super::columns::Want;
 use super::error::{ExchangeError, ExchangeErrors};
 use super::reader::{META_FILE, read_case};
 use super::record::{CaseFile, ExchangeSet};
 use super::set::read_set_partial;
+use crate::io::bounded_read::{DATA_CAP, TEXT_CAP, read_text};
 use std::path::Path;
 
 /// Read a result set from a directory (its `*.csv` and `results.toml`; subdirectories and other
@@ -48,13 +50,42 @@ pub fn read_dir_partial(dir: &Path) -> (Option<ExchangeSet>, Vec<ExchangeError>)
         else {
             continue;
         };
-        if path.is_file() && (name.ends_with(".csv") || name == META_FILE) {
-            match std::fs::read_to_string(&path) {
-                Ok(text) => files.push((name, text)),
-                Err(e) => errors.push(ExchangeError::file(
+        let lower = name.to_ascii_lowercase();
+        let wanted = name.ends_with(".csv") || name == META_FILE;
+        if !wanted {
+            // A file meant for the set under a name the format does not know is named, not
+            // skipped in silence.
+            if lower.ends_with(".csv") || lower == META_FILE {
+                errors.push(ExchangeError::file(
                     &path.display().to_string(),
-                    format!("cannot read: {e}"),
-                )),
+                    format!(
+                        "not read: names are case-sensitive (`{}` expected)",
+                        if lower == META_FILE {
+                            META_FILE.to_string()
+                        } else {
+                            format!("{}.csv", &name[..name.len() - 4])
+                        }
+                    ),
+                ));
+            }
+            continue;
+        }
+        let cap = if name == META_FILE {
+            TEXT_CAP
+        } else {
+            DATA_CAP
+        };
+        match read_text(&path, cap) {
+            Ok(text) => files.push((name, text)),
+            Err(e) => {
+                let (line, column) = e.location();
+                errors.push(ExchangeError::at(
+                    &path.display().to_string(),
+                    line,
+                    column,
+                    "",
+                    e.to_string(),
+                ));
             }
         }
     }
@@ -74,7 +105,9 @@ pub fn read_dir_partial(dir: &Path) -> (Option<ExchangeSet>, Vec<ExchangeError>)
 /// The file cannot be read, or as [`read_case`].
 pub fn read_query(path: &Path) -> Result<CaseFile, ExchangeError> {
     let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| ExchangeError::file(&shown, format!("cannot read: {e}")))?;
+    let text = read_text(path, DATA_CAP).map_err(|e| {
+        let (line, column) = e.location();
+        ExchangeError::at(&shown, line, column, "", e.to_string())
+    })?;
     read_case(&shown, "query", &text, Want::Query)
 }

@@ -34,8 +34,9 @@
 //! key included, since unknown ones are errors) makes a new number.
 //!
 //! - [`record`]: the records read from files; [`columns`]: the kinds of file and their columns;
-//!   [`reader`]: files to records with errors naming file, line, column and key, every error of a
-//!   set at once ([`error`]); [`set`]: a set from its files' contents; [`files`]: sets and queries read from disk;
+//!   [`reader`]: a file to records with errors naming file, line, column and key, every error of
+//!   a set at once ([`error`]); [`set`]: a set from its files' contents; [`files`]: which files
+//!   of a directory are read, each bounded;
 //!   [`meta`]: `results.toml`; [`writer`]: records to files; [`committed`]: the external result
 //!   sets committed in this repository and compiled into the binary.
 //!

@@ -2,8 +2,12 @@
 //! CSV field number) and the column name, and nothing is returned half-read.
 
 use super::columns::{Header, Kind, Want};
-use super::error::{ERRORS_PER_FILE, ExchangeError, ExchangeErrors};
+use super::error::{
+    ERRORS_PER_FILE, ExchangeError, ExchangeErrors, SHOWN, csv_error, short_number,
+    unterminated_quote,
+};
 use super::record::{CaseData, CaseFile, ForceHistory, Positions, Profile, SpectrumRow};
+use crate::io::bounded_read::shortened;
 
 /// Name of the optional metadata file of a result set.
 pub const META_FILE: &str = "results.toml";
@@ -64,6 +68,9 @@ pub fn read_case_whole(
     text: &str,
     want: Want,
 ) -> Result<CaseFile, ExchangeErrors> {
+    if let Some(e) = unterminated_quote(file, text) {
+        return Err(e.into());
+    }
     let mut reader = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());
@@ -152,6 +159,7 @@ fn cell(
     raw: &str,
 ) -> Result<Cell, ExchangeError> {
     let fail = |message: String| ExchangeError::at(file, line, column, name, message);
+    let shown = shortened(raw, SHOWN);
     if raw.is_empty() {
         return Err(fail("the cell is empty".into()));
     }
@@ -160,40 +168,16 @@ fn cell(
     }
     let x: f64 = raw
         .parse()
-        .map_err(|_| fail(format!("`{raw}` is not a number")))?;
+        .map_err(|_| fail(format!("`{shown}` is not a number")))?;
     if !x.is_finite() {
-        return Err(fail(format!("`{raw}` is not finite")));
+        return Err(fail(format!("`{shown}` is not finite")));
     }
     if name == "mode" && !(x >= 0.0 && x.fract() == 0.0 && x <= 1e9) {
         return Err(fail(format!(
-            "`{raw}` is not a mode number (a whole number, 0 or more)"
+            "`{shown}` is not a mode number (a whole number, 0 or more)"
         )));
     }
     Ok(Cell::Number(x))
-}
-
-fn csv_error(file: &str, e: &csv::Error) -> ExchangeError {
-    match e.kind() {
-        csv::ErrorKind::UnequalLengths {
-            pos,
-            expected_len,
-            len,
-        } => ExchangeError::at(
-            file,
-            pos.as_ref().map_or(0, |p| p.line() as usize),
-            1,
-            "",
-            format!("the row has {len} cells, the header {expected_len}"),
-        ),
-        csv::ErrorKind::Utf8 { pos, .. } => ExchangeError::at(
-            file,
-            pos.as_ref().map_or(0, |p| p.line() as usize),
-            1,
-            "",
-            "the row is not UTF-8 text",
-        ),
-        _ => ExchangeError::file(file, e.to_string()),
-    }
 }
 
 /// Group profile rows by time (times never decreasing), sort each group by position and check
@@ -285,7 +269,8 @@ fn check_elements(
                 "x_right",
                 format!(
                     "x_right = {} is not above x_left = {}: an element has a positive length",
-                    right[i], left[i]
+                    short_number(right[i]),
+                    short_number(left[i])
                 ),
             ));
         }
@@ -340,7 +325,7 @@ fn check_points(
                 "x",
                 format!(
                     "the points overlap: x = {} is given twice at one time (line {})",
-                    x[i],
+                    short_number(x[i]),
                     lines[i - 1]
                 ),
             ));
@@ -364,8 +349,8 @@ fn force_history(
                 "t",
                 format!(
                     "t = {} after t = {} (line {}): the times of a force history increase",
-                    b.unwrap_or(f64::NAN),
-                    a.unwrap_or(f64::NAN),
+                    short_number(b.unwrap_or(f64::NAN)),
+                    short_number(a.unwrap_or(f64::NAN)),
                     pair[0].line
                 ),
             ));
@@ -421,64 +406,5 @@ fn spectrum(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn read(text: &str) -> Result<CaseFile, ExchangeError> {
-        read_case("d/c.csv", "c", text, Want::Results)
-    }
-
-    #[test]
-    fn element_profiles_are_grouped_by_time_and_sorted_by_position() {
-        let f = read("t,x_left,x_right,stress\n0.5,0.5,1,2\n0.5,0,0.5,1\n1.5,0,1,3\n").unwrap();
-        let CaseData::Profiles(p) = f.data else {
-            panic!()
-        };
-        assert_eq!(p.len(), 2);
-        assert_eq!(p[0].time, 0.5);
-        assert_eq!(p[0].stress, vec![1.0, 2.0]);
-        assert_eq!(p[0].lines, vec![3, 2], "lines follow the sorted rows");
-        assert_eq!(
-            p[1].positions,
-            Positions::Elements {
-                left: vec![0.0],
-                right: vec![1.0]
-            }
-        );
-    }
-
-    #[test]
-    fn bad_cells_and_geometry_name_line_and_column() {
-        let e = read("t,x_left,x_right,stress\n0.5,0,0.5,abc\n").unwrap_err();
-        assert_eq!((e.line, e.column, e.key.as_str()), (2, 4, "stress"), "{e}");
-        let e = read("t,x_left,x_right,stress\n0.5,0,0.5,inf\n").unwrap_err();
-        assert!(e.message.contains("not finite"), "{e}");
-        let e = read("t,x_left,x_right,stress\n0.5,0,0.5,1\n0.4,0,0.5,1\n").unwrap_err();
-        assert_eq!((e.line, e.key.as_str()), (3, "t"), "{e}");
-        let e = read("t,x_left,x_right,stress\n0.5,0,0.6,1\n0.5,0.5,1,1\n").unwrap_err();
-        assert!(e.message.contains("overlaps itself"), "{e}");
-        let e = read("t,x_left,x_right,stress\n0.5,0,0.4,1\n0.5,0.5,1,1\n").unwrap_err();
-        assert!(e.message.contains("does not cover the bar"), "{e}");
-        let e = read("t,x,stress\n0.5,0.2,1\n0.5,0.2,1\n").unwrap_err();
-        assert!(e.message.contains("overlap"), "{e}");
-        let e = read("t,x,stress\n0.5,0.2\n").unwrap_err();
-        assert_eq!(e.line, 2, "{e}");
-        let e = read("t,x,stress\n").unwrap_err();
-        assert!(e.message.contains("no rows"), "{e}");
-        let e = read("t,force\n0,1\n0,2\n").unwrap_err();
-        assert_eq!((e.line, e.key.as_str()), (3, "t"), "{e}");
-        let e = read("mode,omega\n1.5,2\n").unwrap_err();
-        assert_eq!((e.line, e.key.as_str()), (2, "mode"), "{e}");
-    }
-
-    #[test]
-    fn queries_need_only_the_keys() {
-        let q = read_case("q.csv", "q", "t,x\n0.5,0.1\n0.5,0.2\n", Want::Query).unwrap();
-        let CaseData::Profiles(p) = q.data else {
-            panic!()
-        };
-        assert!(p[0].stress.is_empty());
-        let q = read_case("q.csv", "q", "t\n0\n1\n", Want::Query).unwrap();
-        assert!(matches!(q.data, CaseData::Force(_)));
-    }
-}
+#[path = "reader_tests.rs"]
+mod tests;
