@@ -133,8 +133,7 @@ pub fn parse(file: &str, text: &str) -> Result<ResultsMeta, ExchangeError> {
         let key = message
             .strip_prefix("unknown field `")
             .and_then(|rest| rest.split('`').next())
-            .unwrap_or_default()
-            .to_string();
+            .map_or_else(|| key_at(text, offset), str::to_string);
         at(offset, &key, message)
     })?;
     let format = match raw.format {
@@ -257,6 +256,29 @@ pub fn parse(file: &str, text: &str) -> Result<ResultsMeta, ExchangeError> {
     })
 }
 
+/// The dotted key whose value starts at byte `offset` (`cases."co1".elements`): the text before
+/// `=` on its line, under the last table header above it; empty when there is none.
+fn key_at(text: &str, offset: usize) -> String {
+    let offset = offset.min(text.len());
+    let line_start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
+    let line = &text[line_start..];
+    let line = &line[..line.find('\n').unwrap_or(line.len())];
+    let Some((key, _)) = line.split_once('=') else {
+        return String::new();
+    };
+    let key = key.trim();
+    let table = text[..line_start]
+        .lines()
+        .rev()
+        .map(str::trim)
+        .find(|l| l.starts_with('[') && l.ends_with(']'))
+        .map(|l| l.trim_matches(|c| c == '[' || c == ']').trim());
+    match table {
+        Some(t) if !t.is_empty() => format!("{t}.{key}"),
+        _ => key.to_string(),
+    }
+}
+
 /// A TOML basic string (quoted and escaped).
 fn quoted(s: &str) -> String {
     toml::Value::String(s.to_string()).to_string()
@@ -347,5 +369,18 @@ mod tests {
         );
         let e = parse("r.toml", "[cases.a]\nelements = 0\n").unwrap_err();
         assert_eq!(e.line, 2);
+        // A value of the wrong type names its key.
+        let e = parse(
+            "r.toml",
+            "code = \"x\"\n[cases.\"co1\"]\nelements = \"1\"\n",
+        )
+        .unwrap_err();
+        assert_eq!(
+            (e.line, e.key.as_str()),
+            (3, "cases.\"co1\".elements"),
+            "{e}"
+        );
+        let e = parse("r.toml", "format = \"1\"\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (1, "format"), "{e}");
     }
 }
