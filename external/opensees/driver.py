@@ -281,6 +281,60 @@ def run_opensees(scene, nodes, times, dt, mass, integrator, start):
 
 
 # ----------------------------------------------------------------------------
+# Spectra (fig6): OpenSees' eigen solver on the same bars.
+# ----------------------------------------------------------------------------
+SPECTRUM_MASSES = (('lmm', False), ('cmm', True))
+
+
+def spectrum(n, ends, consistent):
+    """Every angular frequency of a uniform bar of n elements (L = E = rho = A = 1), free-free
+    (n + 1 modes, the rigid one first) or fixed-free (node 0 fixed, n modes), with the lumped or
+    consistent mass: `eigen('-fullGenLapack', all)` of OpenSees' assembled K and M."""
+    ops.wipe()
+    ops.model('basic', '-ndm', 1, '-ndf', 1)
+    h = 1.0 / n
+    for i in range(n + 1):
+        ops.node(i, i * h)
+    if ends == 'fixed-free':
+        ops.fix(0, 1)
+    ops.uniaxialMaterial('Elastic', 1, 1.0)
+    for e in range(n):
+        args = ['Truss', e + 1, e, e + 1, AREA, 1, '-rho', 1.0]
+        if consistent:
+            args += ['-cMass', 1]
+        ops.element(*args)
+    modes = n + 1 if ends == 'free-free' else n
+    values = ops.eigen('-fullGenLapack', modes)
+    return [math.sqrt(max(v, 0.0)) for v in values]
+
+
+def write_spectra(directory, courant):
+    """fig6's cases (`<ends>-n<N>`, from courant's exact answers): every mode of the lumped
+    and the consistent mass, modes numbered as courant's closed forms (free-free from 0, the
+    rigid mode)."""
+    tmp = tempfile.mkdtemp(prefix='opensees-fig6-')
+    try:
+        subprocess.run(courant + ['reference', 'fig6', '--out', tmp], check=True,
+                       stdout=subprocess.DEVNULL)
+        names = sorted(f[:-4] for f in os.listdir(os.path.join(tmp, 'fig6'))
+                       if f.endswith('.csv'))
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    os.makedirs(directory, exist_ok=True)
+    for name in names:
+        ends, n = name.rsplit('-n', 1)
+        first = 0 if ends == 'free-free' else 1
+        with open(os.path.join(directory, f'{name}.csv'), 'w') as fd:
+            fd.write('mode,omega,mass\n')
+            for label, consistent in SPECTRUM_MASSES:
+                for i, omega in enumerate(spectrum(int(n), ends, consistent)):
+                    fd.write(f'{first + i},{omega!r},{label}\n')
+    with open(os.path.join(directory, 'results.toml'), 'w') as fd:
+        fd.write(f'format = 1\ncode = "opensees"\nversion = "{ops.version()}"\n')
+    print(f'eigen/fig6: {len(names)} case(s), masses lmm and cmm')
+
+
+# ----------------------------------------------------------------------------
 # Independent numpy model (--check): central difference, half-step form.
 # ----------------------------------------------------------------------------
 def numpy_cd(scene, nodes, times, dt, mass):
@@ -372,13 +426,21 @@ def compare_dirs(fresh, committed, tolerance):
             if len(la) != len(lb):
                 bad.append(f'{b}: {len(lb)} lines, {a} {len(la)}')
                 continue
+            spectrum = la[0] == 'mode,omega,mass'
             for i, (x, y) in enumerate(zip(la, lb)):
                 if i == 0:
                     if x != y:
                         bad.append(f'{b}: header differs')
                     continue
                 x, y = x.split(','), y.split(',')
-                if x[:3] != y[:3] or abs(float(x[3]) - float(y[3])) > tolerance:
+                if spectrum:
+                    # mode and mass as written, omega within `tolerance` relative.
+                    w = max(abs(float(x[1])), 1.0)
+                    same = (x[0], x[2]) == (y[0], y[2]) and \
+                        abs(float(x[1]) - float(y[1])) <= tolerance * w
+                else:
+                    same = x[:3] == y[:3] and abs(float(x[3]) - float(y[3])) <= tolerance
+                if not same:
                     bad.append(f'{b}:{i + 1}: {y} against {x}')
                     break
     return bad
@@ -386,7 +448,7 @@ def compare_dirs(fresh, committed, tolerance):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    p.add_argument('--scene', choices=SCENES + ('all',), default='all')
+    p.add_argument('--scene', choices=SCENES + ('fig6', 'all'), default='all')
     p.add_argument('--integrator', choices=tuple(INTEGRATORS) + ('all',), default='all')
     p.add_argument('--start', choices=STARTS + ('all',), default='all')
     p.add_argument('--out', default=os.path.join(HERE, 'results'))
@@ -406,11 +468,14 @@ def main():
     courant = ([args.courant] if args.courant else
                ['cargo', 'run', '--quiet', '--release', '--manifest-path',
                 os.path.join(ROOT, 'Cargo.toml'), '--'])
-    scenes = SCENES if args.scene == 'all' else (args.scene,)
+    scenes = SCENES if args.scene == 'all' else tuple(s for s in (args.scene,) if s != 'fig6')
     integrators = tuple(INTEGRATORS) if args.integrator == 'all' else (args.integrator,)
     starts = STARTS if args.start == 'all' else (args.start,)
+    # The cost table is written when asked, or when every set is regenerated in place.
+    every_set = (args.scene, args.integrator, args.start) == ('all', 'all', 'all')
     cost_file = args.cost or (os.path.join(HERE, 'cost.csv')
-                              if os.path.abspath(args.out) == os.path.join(HERE, 'results')
+                              if every_set
+                              and os.path.abspath(args.out) == os.path.join(HERE, 'results')
                               else None)
     cost_rows = []
     worst = 0.0
@@ -445,6 +510,8 @@ def main():
                 write_set(directory, scene, rows, integrator, start)
                 print(f'{integrator}-{start}/{scene}: {len(rows)} case(s), wall '
                       + ', '.join(f'{r[0]} {r[5]:.3f} s' for r in rows))
+    if args.scene in ('all', 'fig6'):
+        write_spectra(os.path.join(args.out, 'eigen', 'fig6'), courant)
     if cost_file:
         write_cost(cost_file, cost_rows, args.repeat)
         print(f'cost: {cost_file}')

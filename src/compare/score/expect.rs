@@ -247,7 +247,7 @@ fn measure(
             Scored::Spectrum(s) => Ok(Measured::Value(s.deviation)),
             _ => Err("the file holds no spectrum".into()),
         },
-        Metric::MassDeviation => mass_deviation(expectation, case).map_err(Unmeasured::Other),
+        Metric::MassDeviation => mass_deviation(expectation, case),
         Metric::EnergyBalance | Metric::EnergyLost | Metric::EnergyRatio => {
             Err("not measurable from files: format 1 carries no energies".into())
         }
@@ -268,8 +268,9 @@ fn measure(
 }
 
 /// `max |omega_a / omega_b - 1|` over the elastic modes both mass kinds of the file give (the
-/// rigid mode, 0 up to round-off, left out), as `courant run` measures it.
-fn mass_deviation(expectation: &Expectation, case: &ScoredCase) -> Result<Measured, String> {
+/// rigid mode, 0 up to round-off, left out), as `courant run` measures it; not supplied when the
+/// file has no rows of one of the two masses.
+fn mass_deviation(expectation: &Expectation, case: &ScoredCase) -> Result<Measured, Unmeasured> {
     let Scored::Spectrum(s) = &case.scored else {
         return Err("the file holds no spectrum".into());
     };
@@ -285,9 +286,11 @@ fn mass_deviation(expectation: &Expectation, case: &ScoredCase) -> Result<Measur
     };
     let (a, b) = (of(mass.label()), of(against.label()));
     if a.is_empty() || b.is_empty() {
-        return Ok(Measured::Missing(
-            "the file lacks one of the two masses".into(),
-        ));
+        let missing = if a.is_empty() { mass } else { against };
+        return Err(Unmeasured::NotSupplied(format!(
+            "not supplied: the file has no {} rows",
+            missing.label()
+        )));
     }
     let top = b.iter().map(|r| r.1).fold(0.0, f64::max);
     Ok(Measured::Value(
