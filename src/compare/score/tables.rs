@@ -3,7 +3,8 @@
 //! case at different N, `convergence.csv` and `convergence.orders.csv`. Every table starts with
 //! the set (its directory as given).
 
-use super::outcome::{CaseConvergence, ScoreOutcome, Scored, ScoredSet};
+use super::outcome::{CaseConvergence, ScoreOutcome, Scored, ScoredCase, ScoredSet};
+use crate::compare::case::CaseResult;
 use crate::compare::outcome::SceneOutcome;
 use crate::compare::tables::{norms_cells, verdict_cells};
 use crate::results::table::{Cell, Precision, Table};
@@ -235,6 +236,32 @@ pub fn diagnostics_table(sets: &[ScoredSet]) -> Table {
     table
 }
 
+/// The largest difference of a file's stresses from courant's run of the same case, over
+/// `scale`, at the profile times both have (to 1e-9 relative) and on the same number of
+/// values; `None` when they share no profile.
+pub fn difference_from_courant(case: &ScoredCase, own: &CaseResult, scale: f64) -> Option<f64> {
+    let Scored::Profiles { profiles, .. } = &case.scored else {
+        return None;
+    };
+    let differences: Vec<f64> = profiles
+        .iter()
+        .filter_map(|p| {
+            let q = own
+                .profiles
+                .iter()
+                .find(|q| (q.time - p.time).abs() <= 1e-9 * p.time.abs().max(1.0))?;
+            (q.stress.len() == p.stress.len()).then(|| {
+                p.stress
+                    .iter()
+                    .zip(&q.stress)
+                    .map(|(a, b)| (a - b).abs() / scale)
+                    .fold(0.0, f64::max)
+            })
+        })
+        .collect();
+    (!differences.is_empty()).then(|| differences.into_iter().fold(0.0, f64::max))
+}
+
 /// `case` and the convergence table of each study (N, dt, steps, errors and observed orders).
 pub fn convergence_table(studies: &[CaseConvergence]) -> Table {
     let mut table: Option<Table> = None;
@@ -339,30 +366,12 @@ pub fn beside_courant_table(set: &ScoredSet, courant: &SceneOutcome, scale: f64)
         "layout",
     ]);
     for c in &set.cases {
-        let Scored::Profiles { profiles, .. } = &c.scored else {
+        let Scored::Profiles { .. } = &c.scored else {
             continue;
         };
         let own = courant.results.iter().find(|r| r.run.case == c.case);
         let (n, m) = (c.worst_norms(), own.and_then(|r| r.worst_norms()));
-        let difference = own.and_then(|r| {
-            let differences: Vec<f64> = profiles
-                .iter()
-                .filter_map(|p| {
-                    let q = r
-                        .profiles
-                        .iter()
-                        .find(|q| (q.time - p.time).abs() <= 1e-9 * p.time.abs().max(1.0))?;
-                    (q.stress.len() == p.stress.len()).then(|| {
-                        p.stress
-                            .iter()
-                            .zip(&q.stress)
-                            .map(|(a, b)| (a - b).abs() / scale)
-                            .fold(0.0, f64::max)
-                    })
-                })
-                .collect();
-            (!differences.is_empty()).then(|| differences.into_iter().fold(0.0, f64::max))
-        });
+        let difference = own.and_then(|r| difference_from_courant(c, r, scale));
         let [_, level, sign, layout] = c.diagnostics.verdicts();
         table.push(vec![
             c.case.as_str().into(),
