@@ -104,22 +104,29 @@ fn baseline(dir: &Path) -> PathBuf {
     bl
 }
 
+/// `check fig1 --baseline BL` with `BL/fig1/co1.csv` replaced by what `make` puts there: that
+/// file fails (status 1), named with `word`, promptly (never opened or read).
 #[cfg(unix)]
-#[test]
-fn check_baseline_fifo_is_named_and_fails_that_file_without_opening_it() {
-    let dir = scratch("baseline_fifo");
+fn special_baseline(name: &str, make: impl Fn(&Path), word: &str) {
+    let dir = scratch(name);
     let bl = baseline(&dir);
     let co1 = bl.join("fig1/co1.csv");
     std::fs::remove_file(&co1).unwrap();
-    mkfifo(&co1);
+    make(&co1);
     let (code, stdout, stderr, took) = courant(&["check", "fig1", "--baseline", s(&bl)]);
     assert_eq!(code, Some(1), "{stdout}{stderr}");
     assert!(took < PROMPT, "took {took:?}");
     assert!(
-        stdout.contains("co1.csv") && stdout.contains("FIFO"),
+        stdout.contains("co1.csv") && stdout.contains(word),
         "{stdout}"
     );
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[cfg(unix)]
+#[test]
+fn check_baseline_fifo_is_named_and_fails_that_file_without_opening_it() {
+    special_baseline("baseline_fifo", |p| mkfifo(p), "FIFO");
 }
 
 #[cfg(unix)]
@@ -149,19 +156,11 @@ fn bench_out_fifo_is_refused_at_once() {
 #[cfg(unix)]
 #[test]
 fn check_baseline_dev_zero_is_named_and_not_read() {
-    let dir = scratch("baseline_zero");
-    let bl = baseline(&dir);
-    let co1 = bl.join("fig1/co1.csv");
-    std::fs::remove_file(&co1).unwrap();
-    std::os::unix::fs::symlink("/dev/zero", &co1).unwrap();
-    let (code, stdout, stderr, took) = courant(&["check", "fig1", "--baseline", s(&bl)]);
-    assert_eq!(code, Some(1), "{stdout}{stderr}");
-    assert!(took < PROMPT, "took {took:?}");
-    assert!(
-        stdout.contains("co1.csv") && stdout.contains("device"),
-        "{stdout}"
+    special_baseline(
+        "baseline_zero",
+        |p| std::os::unix::fs::symlink("/dev/zero", p).unwrap(),
+        "device",
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[cfg(unix)]

@@ -139,10 +139,17 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
             .first()
             .and_then(|c| c.reference.as_ref())
             .map_or(1.0, |r| r.stress_scale());
-        page.table(
-            beside_courant_table(scored, outcome, scale),
-            format!("other_codes/{stem}.csv"),
-        );
+        // Stress profiles beside courant's run (a set of spectra has none: no empty table).
+        if scored
+            .cases
+            .iter()
+            .any(|c| matches!(c.scored, Scored::Profiles { .. }))
+        {
+            page.table(
+                beside_courant_table(scored, outcome, scale),
+                format!("other_codes/{stem}.csv"),
+            );
+        }
         page.table_with_id(
             checks,
             format!("other_codes/{stem}.checks.csv"),

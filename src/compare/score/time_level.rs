@@ -106,11 +106,6 @@ pub struct TimeShift {
 }
 
 impl TimeShift {
-    /// Whole steps nearest to the shift.
-    pub fn offset(&self) -> i64 {
-        self.steps.round() as i64
-    }
-
     /// The class of the shift.
     pub fn level(&self) -> TimeLevel {
         let (s, r) = (self.steps, self.residual);
