@@ -144,9 +144,88 @@ pub enum InputError {
         /// The element's critical step `h_e/c_e`.
         dt_e: f64,
     },
-    /// Anything else, with a sentence that names the field and the rule.
-    #[error("{0}")]
-    Other(String),
+    /// Nothing sets the problem in motion: no load, no initial displacement or velocity.
+    #[error(
+        "nothing excites {what}: give a nonzero load or a nonzero initial displacement or velocity"
+    )]
+    NothingExcites {
+        /// What is at rest ("the bar", "the contact problem").
+        what: &'static str,
+    },
+    /// A recording interval of zero steps.
+    #[error("{field} must be at least 1")]
+    EveryIsZero {
+        /// The interval's name (`history_every`, `energy_every`, or both).
+        field: &'static str,
+    },
+    /// A scheme refuses a start it does not define.
+    #[error("{scheme} starts from {own}; the {start} start is {whose}")]
+    StartNotDefined {
+        /// The scheme's name.
+        scheme: &'static str,
+        /// The start it uses.
+        own: &'static str,
+        /// The start asked for.
+        start: &'static str,
+        /// The scheme the asked-for start belongs to.
+        whose: &'static str,
+    },
+    /// More steps than a run may take to reach its end through its output times.
+    #[error(
+        "the run needs {steps:.3e} steps of dt <= {dt:e} to reach {end_time} through the output times (common interval {interval:e}); at most {max} are allowed: raise the step, shorten the run or choose output times that are multiples of a longer common interval"
+    )]
+    TooManyStepsThroughOutputs {
+        /// Steps needed.
+        steps: f64,
+        /// The largest step allowed.
+        dt: f64,
+        /// The end time.
+        end_time: f64,
+        /// The common interval of the output times.
+        interval: f64,
+        /// The most steps a run may take.
+        max: usize,
+    },
+    /// More steps than a run may take at a fixed step.
+    #[error(
+        "the run needs {steps:.3e} steps of dt = {dt:e} to reach {end_time}; at most {max} are allowed: raise the step or shorten the run"
+    )]
+    TooManySteps {
+        /// Steps needed.
+        steps: f64,
+        /// The step.
+        dt: f64,
+        /// The end time.
+        end_time: f64,
+        /// The most steps a run may take.
+        max: usize,
+    },
+    /// An end time so short that the fixed step would take no step.
+    #[error(
+        "the end time {end_time} is shorter than half a step (dt = {dt:e}): keeping the step, the run would take no step"
+    )]
+    EndBeforeFirstStep {
+        /// The end time.
+        end_time: f64,
+        /// The step.
+        dt: f64,
+    },
+    /// An output time after the end of the run.
+    #[error("output time {time} is after the end time {end_time}")]
+    OutputAfterEnd {
+        /// The output time.
+        time: f64,
+        /// The end time.
+        end_time: f64,
+    },
+    /// The bisection that measures a scheme's critical step found no bracket.
+    #[error("measuring the critical step of {scheme}: {what}")]
+    CriticalStepNotBracketed {
+        /// The scheme's label.
+        scheme: String,
+        /// Which side of the bracket is missing.
+        what: &'static str,
+    },
 }
 
 /// A symmetric tridiagonal matrix that is not positive definite: its `L D L^T` factorisation

@@ -24,7 +24,7 @@ use crate::compare::cache::ProfileCache;
 use crate::compare::case::{CaseResult, compare_case};
 use crate::compare::outcome::SceneOutcome;
 use crate::compare::scene::compare_scene;
-use crate::run::scene::run_scene;
+use crate::run::scene::{RefusedRun, run_scene};
 use crate::run::stepping::run_case;
 use crate::scene::cases::{Case, Scene};
 use courant_references::ReferenceError;
@@ -37,6 +37,9 @@ pub enum EvaluateError {
     /// The solver refused a case.
     #[error(transparent)]
     Run(#[from] RunError),
+    /// A contact case the solver refused.
+    #[error(transparent)]
+    Contact(#[from] courant_solver::contact::ContactError),
     /// A reference refused its parameters.
     #[error(transparent)]
     Reference(#[from] ReferenceError),
@@ -48,7 +51,10 @@ pub enum EvaluateError {
 /// The first case (in case order) the solver refuses, or a reference that refuses its
 /// parameters.
 pub fn evaluate_scene(scene: &Scene) -> Result<SceneOutcome, EvaluateError> {
-    let records = run_scene(scene)?;
+    let records = run_scene(scene).map_err(|refused| match refused {
+        RefusedRun::Case(e) => EvaluateError::Run(e),
+        RefusedRun::Contact(e) => EvaluateError::Contact(e),
+    })?;
     Ok(compare_scene(scene, records)?)
 }
 

@@ -2,7 +2,6 @@
 
 use crate::results::contact::ContactRecord;
 use crate::scene::contact::ContactCase;
-use courant_solver::InputError;
 use courant_solver::contact::{ContactError, ContactRequest};
 use std::time::Instant;
 
@@ -10,7 +9,7 @@ use std::time::Instant;
 ///
 /// # Errors
 /// The solver refuses the case (input, or a step beyond the stability limit).
-pub fn run_contact(case: &ContactCase) -> Result<ContactRecord, InputError> {
+pub fn run_contact(case: &ContactCase) -> Result<ContactRecord, ContactError> {
     let started = Instant::now();
     let request = ContactRequest {
         history_every: case.history_every,
@@ -19,8 +18,7 @@ pub fn run_contact(case: &ContactCase) -> Result<ContactRecord, InputError> {
     let (run, diverged) = match case.integrator.run(&case.problem, case.steps, &request) {
         Ok(run) => (run, None),
         Err(ContactError::Diverged { error, partial }) => (*partial, Some(error)),
-        Err(ContactError::Input(e)) => return Err(e),
-        Err(ContactError::Unstable(e)) => return Err(InputError::Other(e.to_string())),
+        Err(refused) => return Err(refused),
     };
     Ok(ContactRecord {
         case: case.name.clone(),

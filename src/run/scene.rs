@@ -5,6 +5,7 @@ use crate::results::case::CaseRecord;
 use crate::results::scene::SceneRecords;
 use crate::scene::cases::{Case, Scene};
 use courant_solver::RunError;
+use courant_solver::contact::ContactError;
 use rayon::prelude::*;
 
 /// Run every case of a scene. The cases are independent: each list (time-stepping cases,
@@ -14,7 +15,7 @@ use rayon::prelude::*;
 ///
 /// # Errors
 /// The first case (in order) the solver refuses.
-pub fn run_scene(scene: &Scene) -> Result<SceneRecords, RunError> {
+pub fn run_scene(scene: &Scene) -> Result<SceneRecords, RefusedRun> {
     Ok(SceneRecords {
         cases: run_cases(&scene.cases)?,
         spectra: in_order(
@@ -66,4 +67,22 @@ fn run_cases(cases: &[Case]) -> Result<Vec<CaseRecord>, RunError> {
         }
     }
     in_order(records.into_iter().flatten().collect())
+}
+
+/// A case the solver refused: a time-stepping, spectrum or dispersion case ([`RunError`]) or a
+/// contact case ([`ContactError`], whose stability limit is the contact scheme's).
+#[derive(Debug, thiserror::Error)]
+pub enum RefusedRun {
+    /// A time-stepping, spectrum, dispersion or sweep case.
+    #[error(transparent)]
+    Case(#[from] RunError),
+    /// A contact case.
+    #[error(transparent)]
+    Contact(#[from] ContactError),
+}
+
+impl From<courant_solver::InputError> for RefusedRun {
+    fn from(e: courant_solver::InputError) -> Self {
+        Self::Case(RunError::Input(e))
+    }
 }

@@ -1,4 +1,4 @@
-//! Mutations of scene files for the fuzz harness (`tests/fuzz_scenes.rs`): what a hurried user
+//! Mutations of scene files for the fuzz harness (`tests/pipeline/fuzz_scenes.rs`): what a hurried user
 //! or a corrupted file does to a scene, as edits of its TOML text that mostly keep it parseable
 //! (so that the mutants reach validation and the runs, not only the TOML parser).
 //!

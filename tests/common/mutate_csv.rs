@@ -1,5 +1,5 @@
 //! Mutations of CSV text (exchange case files, `--at` query files, baseline tables) for the
-//! fuzz harness of the readers (`tests/fuzz_exchange.rs`): cells replaced by extremes, junk or
+//! fuzz harness of the readers (`tests/grading/fuzz_exchange.rs`): cells replaced by extremes, junk or
 //! nothing, header names misspelt, quotes left open, lines deleted, duplicated or swapped, the
 //! text truncated or a line made very long.
 #![allow(dead_code)]

@@ -51,12 +51,13 @@ pub fn plan(nominal_dt: f64, output_times: &[f64], end_time: f64) -> Result<Time
         .max(1.0);
     let steps_f = intervals * per_interval;
     if steps_f > MAX_STEPS as f64 {
-        return Err(InputError::Other(format!(
-            "the run needs {steps_f:.3e} steps of dt <= {nominal_dt:e} to reach {end_time} through the output times \
-             (common interval {:e}); at most {MAX_STEPS} are allowed: raise the step, shorten the run or choose \
-             output times that are multiples of a longer common interval",
-            end_time / intervals
-        )));
+        return Err(InputError::TooManyStepsThroughOutputs {
+            steps: steps_f,
+            dt: nominal_dt,
+            end_time,
+            interval: end_time / intervals,
+            max: MAX_STEPS,
+        });
     }
     let steps = steps_f as usize;
     let dt = end_time / steps_f;
@@ -85,15 +86,15 @@ pub fn plan_keeping_step(
     validate(dt, output_times, end_time)?;
     let steps_f = (end_time / dt).round();
     if steps_f < 1.0 {
-        return Err(InputError::Other(format!(
-            "the end time {end_time} is shorter than half a step (dt = {dt:e}): keeping the step, the run would take no step"
-        )));
+        return Err(InputError::EndBeforeFirstStep { end_time, dt });
     }
     if steps_f > MAX_STEPS as f64 {
-        return Err(InputError::Other(format!(
-            "the run needs {steps_f:.3e} steps of dt = {dt:e} to reach {end_time}; at most {MAX_STEPS} are allowed: \
-             raise the step or shorten the run"
-        )));
+        return Err(InputError::TooManySteps {
+            steps: steps_f,
+            dt,
+            end_time,
+            max: MAX_STEPS,
+        });
     }
     let steps = steps_f as usize;
     Ok(TimePlan {
@@ -120,9 +121,7 @@ fn validate(dt: f64, output_times: &[f64], end_time: f64) -> Result<(), InputErr
             });
         }
         if t > end_time * (1.0 + ROUNDING_SLACK) {
-            return Err(InputError::Other(format!(
-                "output time {t} is after the end time {end_time}"
-            )));
+            return Err(InputError::OutputAfterEnd { time: t, end_time });
         }
     }
     Ok(())

@@ -80,18 +80,18 @@ impl ContactIntegrator {
         request: &ContactRequest,
     ) -> Result<ContactRun, ContactError> {
         if request.history_every == 0 {
-            return Err(InputError::Other("history_every must be at least 1".into()).into());
-        }
-        if let Some(&step) = request.profile_steps.iter().find(|&&s| s > steps) {
-            return Err(InputError::Other(format!(
-                "profile step {step} is after the last step {steps}"
-            ))
+            return Err(InputError::EveryIsZero {
+                field: "history_every",
+            }
             .into());
         }
+        if let Some(&step) = request.profile_steps.iter().find(|&&s| s > steps) {
+            return Err(InputError::ProfileAfterLastStep { step, last: steps }.into());
+        }
         if !problem.is_excited() {
-            return Err(InputError::Other(
-                "nothing excites the contact problem: give a nonzero load or a nonzero initial displacement or velocity".into(),
-            )
+            return Err(InputError::NothingExcites {
+                what: "the contact problem",
+            }
             .into());
         }
         let critical = self.check_stability(problem)?;

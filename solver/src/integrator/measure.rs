@@ -83,11 +83,11 @@ pub fn measure_critical_step(
             Err(other) => Err(other),
         }
     };
-    let no_bracket = |what: &str| {
-        RunError::Input(crate::error::InputError::Other(format!(
-            "measuring the critical step of {}: {what}",
-            scheme.label()
-        )))
+    let no_bracket = |what: &'static str| {
+        RunError::Input(crate::error::InputError::CriticalStepNotBracketed {
+            scheme: scheme.label(),
+            what,
+        })
     };
     let (mut lo, mut hi) = (guess, guess);
     while !stable(lo)? {

@@ -25,9 +25,9 @@ pub(super) fn validate_request(
         return Err(InputError::ProfileAfterLastStep { step, last: steps });
     }
     if request.history_every == 0 || request.energy_every == 0 {
-        return Err(InputError::Other(
-            "history_every and energy_every must be at least 1".into(),
-        ));
+        return Err(InputError::EveryIsZero {
+            field: "history_every and energy_every",
+        });
     }
     Ok(())
 }

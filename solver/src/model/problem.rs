@@ -183,9 +183,7 @@ impl Model {
         let excited = resolved.iter().any(|l| l.magnitude != 0.0)
             || fields.iter().any(|(_, v)| v.iter().any(|&x| x != 0.0));
         if require_excitation && !excited {
-            return Err(InputError::Other(
-                "nothing excites the bar: give a nonzero load or a nonzero initial displacement or velocity".into(),
-            ));
+            return Err(InputError::NothingExcites { what: "the bar" });
         }
         let stiffness = bar.element_stiffness();
         let nodal_mass = lumped_mass(&bar.element_mass());

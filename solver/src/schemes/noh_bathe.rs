@@ -138,10 +138,12 @@ impl Scheme for NohBatheScheme {
         Self::check(self.p)?;
         match start {
             Start::HalfStep => Ok(()),
-            Start::ThreeLevel => Err(InputError::Other(
-                "noh-bathe starts from a^0 = M^-1 (F(0) - K u^0); the three-level start is central difference's"
-                    .into(),
-            )),
+            Start::ThreeLevel => Err(InputError::StartNotDefined {
+                scheme: "noh-bathe",
+                own: "a^0 = M^-1 (F(0) - K u^0)",
+                start: "three-level",
+                whose: "central difference's",
+            }),
         }
     }
 

@@ -115,7 +115,7 @@ impl Scheme for ParkScheme {
     /// ([`ParkStep::limit_step`]), at or below CD's `2/omega_max` (Fried's bound
     /// `omega_max <= max_e 2 c_e/h_e`). It comes from the amplification analysis of a uniform
     /// mesh, whose spectral radius exceeds 1 just above `alpha = 1` at `kh = pi`
-    /// (tests/park_amplification_analysis.rs): where every element has the same `dt_e` it is the
+    /// (tests/verification/park_amplification_analysis.rs): where every element has the same `dt_e` it is the
     /// limit ([`LimitKind::Exact`], up to the finite mesh's top mode, a hair below `kh = pi`); on
     /// a graded mesh only sufficient ([`LimitKind::Bound`]; measured: the global step on the
     /// `graded_1e4` mesh stays bounded at `alpha = 1.012`).

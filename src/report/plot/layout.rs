@@ -52,7 +52,7 @@ pub const LABEL_FONT: u32 = 15;
 
 /// Font size of a chart title: 20 (16.1 px), smaller for long titles so the whole title fits the
 /// 640 px chart (about 0.55 em per character of a sans-serif face), never below 11 (8.9 px; the
-/// built-in report's titles all fit at 15 or more, 12.1 px: `tests/report_generation.rs`).
+/// built-in report's titles all fit at 15 or more, 12.1 px: `tests/pipeline/report_generation.rs`).
 pub fn title_font_size(title: &str) -> u32 {
     let chars = title.chars().count().max(1) as f64;
     (600.0 / (0.55 * PX_PER_FONT_UNIT * chars))
