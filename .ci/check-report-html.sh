@@ -2,7 +2,9 @@
 # Render the report's index.html in a real headless browser (Debian's chromium) at the widths a
 # reviewer uses and check what they see: the first-screen summary is there with a row per scene
 # and study, every in-page link lands on an element of the page, every data table sits in a
-# scrolling box, and nothing makes the page itself wider than the window. Screenshots of the
+# scrolling box, nothing makes the page itself wider than the window, and every verdict and run
+# status is in view: each table that has one leads with it, each such cell lies within the window
+# without scrolling sideways, and only passing words are folded away. Screenshots of the
 # first screen go beside the report copy for a human look.
 #
 #   .ci/check-report-html.sh REPORT_DIR [OUT_DIR]
@@ -38,6 +40,40 @@ window.addEventListener('load', () => {
     const box = t.parentElement;
     if (!box.classList.contains('table-wrap')) problems.push('table outside a scrolling box');
   }
+  // Every verdict in view: a table that states a verdict or status leads with it, and each
+  // such cell lies inside the window without scrolling sideways, unless it is folded away, which
+  // only a passing word may be.
+  const status = ['verdict', 'status', 'agrees'];
+  const passing = ['pass', 'yes', 'completed', '-'];
+  let verdicts = 0;
+  const section = t => {
+    let n = t.closest('.table-wrap') || t;
+    n = n.closest('details') || n;
+    while (n && !/^H[1-4]$/.test(n.tagName)) n = n.previousElementSibling;
+    return n ? n.textContent : '?';
+  };
+  for (const t of document.querySelectorAll('table')) {
+    const head = [...(t.rows[0] ? t.rows[0].cells : [])].map(c => c.textContent.trim());
+    const columns = head.map((h, i) => status.includes(h) ? i : -1).filter(i => i >= 0);
+    if (!columns.length) continue;
+    const where = section(t);
+    if (!status.includes(head[0])) problems.push('table in ' + where + ' leads with ' + head[0] + ', not its ' + head[columns[0]]);
+    for (const row of [...t.rows].slice(1)) {
+      for (const i of columns) {
+        const cell = row.cells[i];
+        if (!cell) continue;
+        verdicts++;
+        const text = cell.textContent.trim();
+        if (cell.closest('details:not([open])')) {
+          if (!passing.includes(text)) problems.push('"' + text + '" folded away in ' + where);
+          continue;
+        }
+        const r = cell.getBoundingClientRect();
+        if (r.right > window.innerWidth + 1 || r.left < 0)
+          problems.push('"' + text + '" off-screen (' + Math.round(r.left) + '-' + Math.round(r.right) + ' px) in ' + where);
+      }
+    }
+  }
   const doc = document.documentElement;
   if (doc.scrollWidth > window.innerWidth + 1)
     problems.push('page ' + doc.scrollWidth + ' px wide in a ' + window.innerWidth + ' px window');
@@ -47,7 +83,8 @@ window.addEventListener('load', () => {
   const pre = document.createElement('pre');
   pre.id = 'probe-result';
   pre.textContent = JSON.stringify({rows, links: document.querySelectorAll('a[href^="#"]').length,
-    tables: document.querySelectorAll('table').length, problems});
+    tables: document.querySelectorAll('table').length, verdicts, problems: problems.slice(0, 20),
+    problem_count: problems.length});
   document.body.appendChild(pre);
 });
 </script>

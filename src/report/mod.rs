@@ -27,6 +27,7 @@ pub mod document;
 pub mod figure_parts;
 pub mod figures;
 pub mod html;
+pub mod layout;
 pub mod markdown;
 pub mod numbers;
 pub mod other_codes;
@@ -101,12 +102,20 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
         ));
     }
     page.push(Block::Heading(2, "How this report was made".into()));
+    let (command, ci) = if runs.convergence.is_empty() {
+        ("`courant report` with scene names or files", "")
+    } else {
+        (
+            "`cargo run --release -- report`",
+            " (CI regenerates the report and fails when this page is out of date)",
+        )
+    };
     page.push(Block::Paragraph(format!(
-        "By `cargo run --release -- report` (courant {}): {} scene(s) and {} \
+        "By {command} (courant {}): {} scene(s) and {} \
          convergence studies, their scenes, studies and cases run in parallel; the content is identical whatever the thread count. The \
          commit, date, CPU, thread count and rustc of this run are in `timing.md`, with the wall times: \
          they change from run to run and machine to machine, while everything on this page changes only \
-         when a result does (CI regenerates the report and fails when this page is out of date).",
+         when a result does{ci}.",
         env!("CARGO_PKG_VERSION"),
         scenes.len(),
         runs.convergence.len()

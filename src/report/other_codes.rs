@@ -9,8 +9,9 @@ use super::tally::Tally;
 use crate::compare::outcome::SceneOutcome;
 use crate::compare::score::outcome::{Scored, ScoredSet, SkipKind};
 use crate::compare::score::tables::beside_courant_table;
+use crate::compare::verdict::Measured;
 use crate::results::exchange::committed::CommittedSet;
-use crate::results::table::Table;
+use crate::results::table::{Cell, Table};
 use crate::scene::cases::Scene;
 
 /// One scored committed set: the set, the index of its scene, the scored set.
@@ -51,7 +52,10 @@ fn checks_table(scored: &ScoredSet) -> Table {
         t.push(vec![
             v.case.as_str().into(),
             v.metric_label().into(),
-            v.measured.to_string().into(),
+            match &v.measured {
+                Measured::Value(x) => Cell::Num(*x),
+                other => other.to_string().into(),
+            },
             v.bound.to_string().into(),
             v.word().into(),
             v.source.as_str().into(),
