@@ -10,7 +10,8 @@
 //! the closed-form contact table for beta_s = 1e6 … 1e12, its deterministic files are identical
 //! from one generation to the next (timings apart), no figure has text below 12 px, an
 //! expectation failure is flagged, every table with a verdict or status leads with it (HTML and
-//! Markdown), a report of given scenes says what it is, and
+//! Markdown), every section opens with at most 100 words, a report of given scenes says what it
+//! is, and
 //! `courant report` replaces the output directory whole.
 
 use courant::pipeline::report_runs::run_for_report;
@@ -202,6 +203,14 @@ fn report_has_sections_tables_and_deterministic_content() {
         }
     }
     assert!(led >= 3, "summary, expectations and order tables: {led}");
+    // Every section opens with a short paragraph; its details follow its tables.
+    let blocks: Vec<&str> = index.split("\n\n").collect();
+    for pair in blocks.windows(2) {
+        if pair[0].starts_with("## ") && !pair[1].starts_with(['!', '[', '|', '-', '#']) {
+            let words = pair[1].split_whitespace().count();
+            assert!(words <= 100, "{} opens with {words} words", pair[0]);
+        }
+    }
     // A report of the built-in set says so.
     assert!(index.contains("Every built-in scene of courant"));
     let closed_forms = &a
