@@ -1,7 +1,9 @@
 //! The document as self-contained HTML (`index.html`): figures inline, no network, no scripts.
-//! Wide tables scroll inside their box, long ones fold (`<details>`), text columns are
-//! left-aligned and numbers right-aligned, verdict cells are coloured, every section ends with a
-//! link back to the top, and the page reads in light and dark mode.
+//! A table leads with its verdict or status ([`super::layout`]), which stays in place while a
+//! wide table scrolls inside its box; a long table keeps the rows that need a look in view and
+//! folds the passing ones (`<details>`); text columns are left-aligned and numbers
+//! right-aligned, verdict cells are coloured and a run that did not complete is marked, every
+//! section ends with a link back to the top, and the page reads in light and dark mode.
 
 use super::document::{Block, Inline, anchor};
 use super::layout::{column_order, has_status, is_status, needs_a_look, reordered};

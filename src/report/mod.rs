@@ -2,7 +2,7 @@
 //! stability table in one document, rendered as Markdown (`index.md`) and self-contained HTML
 //! (`index.html`) with every table as CSV and every figure as SVG beside it. Timings go to
 //! `timing.md` and `timing.*` only ([`timing`]), so the rest changes only when results do
-//! (numbers in the document are rounded to 4 significant digits, CSVs keep 10).
+//! (numbers in the document are rounded to 4 significant digits, CSVs keep every digit).
 //!
 //! ```text
 //!   scene ──> run ──> results ──> compare ──> report / check
@@ -10,7 +10,8 @@
 //! ```
 //!
 //! - [`document`]: the document model ([`document::Block`], [`document::Page`]), rendered by
-//!   [`markdown`] and [`html`] with numbers as [`numbers`] shows them; [`plot`]: SVG line charts; [`figures`] and [`figure_parts`]: a scene's figures,
+//!   [`markdown`] and [`html`] with numbers as [`numbers`] shows them and columns in [`layout`]'s
+//!   order (verdict or status first); [`plot`]: SVG line charts; [`figures`] and [`figure_parts`]: a scene's figures,
 //!   split so that each stays legible;
 //! - sections: [`summary`], [`scenes`], [`convergence`], [`work_precision`], [`stability`],
 //!   [`other_codes`] (another code's committed results beside courant's), [`timing`] (with
