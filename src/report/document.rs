@@ -34,6 +34,17 @@ impl Page {
         });
     }
 
+    /// `stored` saved as `csv`, shown as `shown`: the same rows with columns added for the
+    /// reader (e.g. times in the unit the figures use).
+    pub fn table_shown(&mut self, shown: Table, stored: &Table, csv: String) {
+        self.files.push((csv.clone(), stored.to_csv(STORED)));
+        self.blocks.push(Block::Table {
+            table: shown,
+            csv: Some(csv),
+            id: None,
+        });
+    }
+
     /// As [`Page::table`], with an anchor id others link to.
     pub fn table_with_id(&mut self, table: Table, csv: String, id: String) {
         self.files.push((csv.clone(), table.to_csv(STORED)));

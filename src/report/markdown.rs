@@ -1,7 +1,8 @@
 //! The document as Markdown (`index.md`): headings, paragraphs, lists, pipe tables with numbers
-//! shown as [`super::numbers`] does, figures as image links to their SVG files.
+//! shown as [`super::numbers`] does and columns in [`super::layout`]'s order, figures as image links to their SVG files.
 
 use super::document::{Block, Inline};
+use super::layout::{column_order, reordered};
 use super::numbers::shown;
 
 /// A piece of inline text as Markdown: a link where it has one.
@@ -45,7 +46,12 @@ pub fn markdown(blocks: &[Block]) -> String {
                 if let Some(csv) = csv {
                     out += &format!("[`{csv}`]({csv})\n\n");
                 }
-                out += &pipe_table(&table.columns, &shown(table));
+                let order = column_order(&table.columns);
+                let rows: Vec<Vec<String>> = shown(table)
+                    .iter()
+                    .map(|row| reordered(row, &order))
+                    .collect();
+                out += &pipe_table(&reordered(&table.columns, &order), &rows);
                 out += "\n";
             }
             Block::Summary { columns, rows } => {

@@ -2,7 +2,7 @@
 //! stability table in one document, rendered as Markdown (`index.md`) and self-contained HTML
 //! (`index.html`) with every table as CSV and every figure as SVG beside it. Timings go to
 //! `timing.md` and `timing.*` only ([`timing`]), so the rest changes only when results do
-//! (numbers in the document are rounded to 4 significant digits, CSVs keep 10).
+//! (numbers in the document are rounded to 4 significant digits, CSVs keep every digit).
 //!
 //! ```text
 //!   scene ──> run ──> results ──> compare ──> report / check
@@ -10,7 +10,8 @@
 //! ```
 //!
 //! - [`document`]: the document model ([`document::Block`], [`document::Page`]), rendered by
-//!   [`markdown`] and [`html`] with numbers as [`numbers`] shows them; [`plot`]: SVG line charts; [`figures`] and [`figure_parts`]: a scene's figures,
+//!   [`markdown`] and [`html`] with numbers as [`numbers`] shows them and columns in [`layout`]'s
+//!   order (verdict or status first); [`plot`]: SVG line charts; [`figures`] and [`figure_parts`]: a scene's figures,
 //!   split so that each stays legible;
 //! - sections: [`summary`], [`scenes`], [`convergence`], [`work_precision`], [`stability`],
 //!   [`other_codes`] (another code's committed results beside courant's), [`timing`] (with
@@ -27,6 +28,7 @@ pub mod document;
 pub mod figure_parts;
 pub mod figures;
 pub mod html;
+pub mod layout;
 pub mod markdown;
 pub mod numbers;
 pub mod other_codes;
@@ -101,12 +103,20 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
         ));
     }
     page.push(Block::Heading(2, "How this report was made".into()));
+    let (command, ci) = if runs.convergence.is_empty() {
+        ("`courant report` with scene names or files", "")
+    } else {
+        (
+            "`cargo run --release -- report`",
+            " (CI regenerates the report and fails when this page is out of date)",
+        )
+    };
     page.push(Block::Paragraph(format!(
-        "By `cargo run --release -- report` (courant {}): {} scene(s) and {} \
+        "By {command} (courant {}): {} scene(s) and {} \
          convergence studies, their scenes, studies and cases run in parallel; the content is identical whatever the thread count. The \
          commit, date, CPU, thread count and rustc of this run are in `timing.md`, with the wall times: \
          they change from run to run and machine to machine, while everything on this page changes only \
-         when a result does (CI regenerates the report and fails when this page is out of date).",
+         when a result does{ci}.",
         env!("CARGO_PKG_VERSION"),
         scenes.len(),
         runs.convergence.len()

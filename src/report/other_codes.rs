@@ -9,8 +9,9 @@ use super::tally::Tally;
 use crate::compare::outcome::SceneOutcome;
 use crate::compare::score::outcome::{Scored, ScoredSet, SkipKind};
 use crate::compare::score::tables::beside_courant_table;
+use crate::compare::verdict::Measured;
 use crate::results::exchange::committed::CommittedSet;
-use crate::results::table::Table;
+use crate::results::table::{Cell, Table};
 use crate::scene::cases::Scene;
 
 /// One scored committed set: the set, the index of its scene, the scored set.
@@ -51,7 +52,10 @@ fn checks_table(scored: &ScoredSet) -> Table {
         t.push(vec![
             v.case.as_str().into(),
             v.metric_label().into(),
-            v.measured.to_string().into(),
+            match &v.measured {
+                Measured::Value(x) => Cell::Num(*x),
+                other => other.to_string().into(),
+            },
             v.bound.to_string().into(),
             v.word().into(),
             v.source.as_str().into(),
@@ -97,7 +101,11 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
         "Results of other codes on courant's scenes, written in the results exchange format (README) \
          and committed under `external/<code>/results/<scene>/`, graded with exactly the norms and \
          expectations of courant's own runs (`courant score <scene> --results DIR`), beside courant's \
-         run of the same case. `max_difference` is the largest difference of the two codes' element \
+         run of the same case. How they are graded is at the end of this section."
+            .into(),
+    ));
+    let grading = Block::Paragraph(
+        "`max_difference` is the largest difference of the two codes' element \
          stresses at the same times over |sigma0|; `time_level` what the time shift that best fits the \
          exact solution says (on time, whole steps late or early, or a start that gives the first step \
          the wrong impulse; the shift itself is in the checks below). Error bounds apply to every code; \
@@ -109,7 +117,7 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
          stated fails. Each code's driver, its pinned requirements and the command that regenerates its \
          results are in `external/<code>/` (SfePy, OpenSees)."
             .into(),
-    ));
+    );
     for (set, index, scored) in others {
         let (scene, (outcome, _)) = (&scenes[*index], &outcomes[*index]);
         let stem = stem(set);
@@ -165,6 +173,8 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
             }
         }
     }
+    page.push(Block::Heading(3, "How other codes are graded".into()));
+    page.push(grading);
     page
 }
 

@@ -76,6 +76,26 @@ pub fn failures(
         .collect()
 }
 
+/// What the report is: the built-in report (every built-in scene and the studies), or a report
+/// of the scenes it was given, named.
+pub fn opening(scenes: &[Scene], builtin: bool) -> String {
+    if builtin {
+        return "Every built-in scene of courant (Kolman et al.'s Figs. 1, 2, 3, 5, 6 and companions) against its \
+         analytic reference, with the verdict of every expectation, then h-refinement studies. Regenerate \
+         with `cargo run --release -- report`; timings are in `timing.md`, every table also as CSV beside it."
+            .into();
+    }
+    let names: Vec<&str> = scenes.iter().map(|s| s.name.as_str()).collect();
+    format!(
+        "A report of {} scene(s) given to `courant report`: {}. Each against its reference, with \
+         the verdict of every expectation; the built-in studies are not part of it. Regenerate \
+         with `courant report` and the same scene names or files, `--out DIR`; timings are in \
+         `timing.md`, every table also as CSV beside it.",
+        scenes.len(),
+        names.join(", ")
+    )
+}
+
 /// The findings of one code and variant: its label, the scenes, and each check with its count.
 type OtherFindings<'a> = (&'a str, Vec<&'a str>, Vec<(String, usize)>);
 
@@ -106,12 +126,7 @@ pub fn head(
 ) -> Page {
     let mut page = Page::default();
     page.push(Block::Heading(1, "courant verification report".into()));
-    page.push(Block::Paragraph(
-        "Every built-in scene of courant (Kolman et al.'s Figs. 1, 2, 3, 5, 6 and companions) against its \
-         analytic reference, with the verdict of every expectation, then h-refinement studies. Regenerate \
-         with `cargo run --release -- report`; timings are in `timing.md`, every table also as CSV beside it."
-            .into(),
-    ));
+    page.push(Block::Paragraph(opening(scenes, !convergence.is_empty())));
     let mut total = Tally::default();
     let mut rows = Vec::new();
     for ((outcome, _), scene) in outcomes.iter().zip(scenes) {

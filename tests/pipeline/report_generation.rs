@@ -9,7 +9,9 @@
 //! `tests/common/xml.rs`, itself shown to reject malformed markup), the stability section carries
 //! the closed-form contact table for beta_s = 1e6 … 1e12, its deterministic files are identical
 //! from one generation to the next (timings apart), no figure has text below 12 px, an
-//! expectation failure is flagged, and
+//! expectation failure is flagged, every table with a verdict or status leads with it (HTML and
+//! Markdown), every section opens with at most 100 words, a report of given scenes says what it
+//! is, and
 //! `courant report` replaces the output directory whole.
 
 use courant::pipeline::report_runs::run_for_report;
@@ -166,6 +168,50 @@ fn report_has_sections_tables_and_deterministic_content() {
         "no network resources are loaded"
     );
     assert!(!html.contains("<script"), "no scripts");
+    // A verdict is read first: every table with a verdict or status column leads with it, in
+    // both renderings.
+    let status = ["verdict", "status", "agrees"];
+    let mut led = 0;
+    for head in html.split("<tr><th>").skip(1) {
+        let columns: Vec<&str> = head[..head.find("</tr>").unwrap()]
+            .trim_end_matches("</th>")
+            .split("</th><th>")
+            .collect();
+        if columns.iter().any(|c| status.contains(c)) {
+            assert!(
+                status.contains(&columns[0]),
+                "html table leads with {columns:?}"
+            );
+            led += 1;
+        }
+    }
+    let lines: Vec<&str> = index.lines().collect();
+    for pair in lines.windows(2) {
+        if pair[1].starts_with("|---") {
+            let columns: Vec<&str> = pair[0]
+                .trim_matches('|')
+                .split(" | ")
+                .map(str::trim)
+                .collect();
+            if columns.iter().any(|c| status.contains(c)) {
+                assert!(
+                    status.contains(&columns[0]),
+                    "markdown table leads with {columns:?}"
+                );
+            }
+        }
+    }
+    assert!(led >= 3, "summary, expectations and order tables: {led}");
+    // Every section opens with a short paragraph; its details follow its tables.
+    let blocks: Vec<&str> = index.split("\n\n").collect();
+    for pair in blocks.windows(2) {
+        if pair[0].starts_with("## ") && !pair[1].starts_with(['!', '[', '|', '-', '#']) {
+            let words = pair[1].split_whitespace().count();
+            assert!(words <= 100, "{} opens with {words} words", pair[0]);
+        }
+    }
+    // A report of the built-in set says so.
+    assert!(index.contains("Every built-in scene of courant"));
     let closed_forms = &a
         .files
         .iter()
@@ -242,6 +288,22 @@ fn report_has_sections_tables_and_deterministic_content() {
             assert_eq!(text, other, "{name} differs between two generations");
         }
     }
+}
+
+/// Source of truth: the report contract "a report of user scenes says what it is". Proves: a
+/// report of one scene given by name, without the studies, names its scene and how to regenerate
+/// it, and does not claim to be the built-in report.
+#[test]
+fn a_report_of_given_scenes_says_what_it_is() {
+    let scenes = vec![builtin_scene("fig6").unwrap().unwrap()];
+    let report = render(&scenes, &run_for_report(&scenes, &[], true).unwrap()).unwrap();
+    let index = &report.files.iter().find(|f| f.0 == "index.md").unwrap().1;
+    assert!(
+        index.contains("A report of 1 scene(s) given to `courant report`: fig6."),
+        "{index}"
+    );
+    assert!(!index.contains("Every built-in scene"));
+    assert!(!index.contains("cargo run --release -- report"));
 }
 
 #[test]
