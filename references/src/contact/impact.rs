@@ -19,12 +19,9 @@ use crate::error::ReferenceError;
 /// length L.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ImpactBar {
-    /// Impedance `Z = rho c A` (force per velocity, > 0).
-    pub impedance: f64,
-    /// Bar wave speed `c = sqrt(E/rho)` (> 0).
-    pub wave_speed: f64,
-    /// Length L (> 0).
-    pub length: f64,
+    impedance: f64,
+    wave_speed: f64,
+    length: f64,
 }
 
 impl ImpactBar {
@@ -58,6 +55,24 @@ impl ImpactBar {
             (modulus / density).sqrt(),
             length,
         )
+    }
+
+    /// Impedance `Z = rho c A` (force per velocity, > 0).
+    #[must_use]
+    pub fn impedance(&self) -> f64 {
+        self.impedance
+    }
+
+    /// Bar wave speed `c = sqrt(E/rho)` (> 0).
+    #[must_use]
+    pub fn wave_speed(&self) -> f64 {
+        self.wave_speed
+    }
+
+    /// Length L (> 0).
+    #[must_use]
+    pub fn length(&self) -> f64 {
+        self.length
     }
 
     /// Transit time `T = L/c`.
@@ -454,4 +469,30 @@ fn track(
         plateaus.pop();
     }
     Ok((plateaus, separation))
+}
+
+impl crate::exact::ContactHistory for ImpactForce {
+    fn contact_force(&self, t: f64) -> f64 {
+        self.force(t)
+    }
+
+    fn force_plateaus(&self) -> &[ForcePlateau] {
+        &self.plateaus
+    }
+
+    fn first_plateau_force(&self) -> f64 {
+        self.first_plateau()
+    }
+
+    fn contact_duration(&self) -> f64 {
+        self.duration()
+    }
+
+    fn separation_time(&self) -> f64 {
+        self.separation
+    }
+
+    fn contact_impulse(&self) -> f64 {
+        self.impulse()
+    }
 }
