@@ -15,7 +15,6 @@
 //! a `Result` so a caller can refuse an evaluation before paying for it. It must not know any
 //! solver, mesh type or file.
 
-use crate::contact::ForcePlateau;
 use crate::dalembert::{DalembertBar, Energies};
 use crate::error::ReferenceError;
 use crate::graded::{GradedBar, LayeredBar};
@@ -38,6 +37,19 @@ pub enum Evaluation<'a> {
     Points(&'a [f64]),
     /// The extreme of the field ([`ExactSolution::stress_extreme`]).
     Extreme,
+}
+
+/// One constant stretch of the contact force: `force` on `[start, end)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ForcePlateau {
+    /// Start time (inclusive).
+    pub start: f64,
+    /// End time (exclusive).
+    pub end: f64,
+    /// Contact force, compression positive (`>= 0`).
+    pub force: f64,
+    /// Velocity of the contact interface (`0` against a rigid wall).
+    pub interface_velocity: f64,
 }
 
 /// The contact force history of an impact, as a capability of an exact solution.

@@ -14,6 +14,7 @@ use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 use crate::error::ReferenceError;
+pub use crate::exact::ForcePlateau;
 
 /// A homogeneous elastic bar as seen by 1D impact: impedance `Z = rho c A`, wave speed c,
 /// length L.
@@ -95,19 +96,6 @@ pub enum ImpactTarget {
     Bar(ImpactBar),
     /// A rigid, fixed wall (the limit `Z2 -> inf`).
     RigidWall,
-}
-
-/// One constant stretch of the contact force: `force` on `[start, end)`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ForcePlateau {
-    /// Start time (inclusive).
-    pub start: f64,
-    /// End time (exclusive).
-    pub end: f64,
-    /// Contact force, compression positive (`>= 0`).
-    pub force: f64,
-    /// Velocity of the contact interface (`0` against a rigid wall).
-    pub interface_velocity: f64,
 }
 
 /// Relative time tolerance (of `T1 + T2`) within which two wave arrivals at the interface count
