@@ -278,8 +278,10 @@ impl ExactSolution for GradedBar {
             reference: "graded",
             t,
             limit: format!(
-                "evaluated up to {} transit times (route (b) declines beyond)",
-                crate::graded::CHARACTERISTIC_TRANSITS_MAX
+                "evaluated up to {} transit times (t <= {:.6e} on this bar; route (b) declines \
+                 beyond)",
+                crate::graded::CHARACTERISTIC_TRANSITS_MAX,
+                crate::graded::CHARACTERISTIC_TRANSITS_MAX * self.transit_time()
             ),
         })
     }
