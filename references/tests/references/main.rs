@@ -5,6 +5,7 @@
 mod contact_critical_courant_closed_forms;
 mod contact_critical_courant_eigenvalues;
 mod contact_impact_against_lattice;
+mod contact_layered_impact;
 mod dalembert_self_tests;
 mod graded_bar_two_routes;
 mod graded_layered_waves;
