@@ -418,3 +418,50 @@ fn step_limits_of_the_combinations() {
         }
     }
 }
+
+/// The largest `kinetic + strain` of the real masses over `steps` steps of the persistent
+/// (bilateral) contact from the impact's initial state, over its initial value.
+fn growth(problem: &ContactProblem, bulk: BulkScheme, scheme: ContactScheme, dt: f64) -> f64 {
+    let mut run =
+        CombinedStepper::allowing_unstable(problem, bulk, scheme, ContactMode::Bilateral, dt)
+            .unwrap();
+    let start = {
+        let e = run.energy();
+        e.kinetic + e.strain
+    };
+    let mut largest: f64 = 0.0;
+    for _ in 0..20_000 {
+        run.step();
+        let e = run.energy();
+        let x = e.kinetic + e.strain;
+        largest = largest.max(if x.is_finite() { x } else { f64::INFINITY });
+        if largest > 1e6 * start {
+            break;
+        }
+    }
+    largest / start
+}
+
+/// Source: the measured limit of `step_limits_of_the_combinations` (amplification matrix),
+/// checked by running: the stability rows at 0.99, 1.00 and 1.01 of it, as the report's stability
+/// table grades them (bounded at and below the limit, the blow-up guard's ratio of ten exceeded
+/// above it). Proves: the measured limit of Park-LTS + bipenalty (beta_s = 1e8, r = 1) and of
+/// RMM + bipenalty is the step where a persistent contact run turns unstable.
+#[test]
+fn stability_rows_at_the_measured_limit() {
+    let problem = layered_impact(8);
+    let bipenalty = problem.penalty(1e8, MassPenalty::Ratio(1.0)).unwrap();
+    let scheme = ContactScheme::Bipenalty(bipenalty);
+    for bulk in [incremental(true), BulkScheme::Reciprocal { beta: 0.5 }] {
+        let limit = measured_limit(&problem, bulk, scheme, ContactMode::Bilateral).unwrap();
+        for (factor, stable) in [(0.99, true), (1.0, true), (1.01, false)] {
+            let ratio = growth(&problem, bulk, scheme, factor * limit);
+            let label = format!("{} at {factor} of {limit}", bulk.label());
+            if stable {
+                assert!(ratio < 10.0, "{label}: grew {ratio}");
+            } else {
+                assert!(ratio > 10.0, "{label}: grew only {ratio}");
+            }
+        }
+    }
+}

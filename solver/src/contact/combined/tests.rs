@@ -3,8 +3,10 @@
 //! the combined stepper's Park path is Park's scheme (same `u`, `v`, `a` to round-off) on a
 //! layered bar, for both variants, with and without local stepping.
 
-use super::{BulkScheme, CombinedStepper, ContactMode};
-use crate::contact::{ContactProblem, ContactScheme};
+use super::bulk::BulkScheme;
+use super::stepper::{CombinedStepper, ContactMode};
+use crate::contact::problem::ContactProblem;
+use crate::contact::scheme::ContactScheme;
 use crate::kernels::park::{ParkOptions, ParkStep, ParkVariant};
 use crate::model::{Bar, End, Field, Mesh};
 
