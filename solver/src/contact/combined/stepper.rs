@@ -89,6 +89,9 @@ impl<'a> CombinedStepper<'a> {
         dt: f64,
     ) -> Result<Self, InputError> {
         let stepper = Self::allowing_unstable(problem, bulk, scheme, ContactMode::Unilateral, dt)?;
+        if !matches!(bulk, BulkScheme::Park(_)) {
+            return Ok(stepper);
+        }
         if let Some(e) = stepper
             .assembly
             .elements
