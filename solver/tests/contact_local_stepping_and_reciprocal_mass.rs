@@ -181,6 +181,54 @@ fn momentum_through_the_impact_to_round_off() {
     }
 }
 
+/// Source: the same discrete momentum balance at a rigid wall on the right (`1^T N = -1`):
+/// `p^{n+1} - p^n = -(F^n + F^{n+1}) dt/2`. Proves: the bar's momentum changes by exactly the
+/// delivered contact impulse, in every bulk, for every contact scheme.
+#[test]
+fn momentum_at_a_wall_changes_by_the_contact_impulse() {
+    let problem = ContactProblem::wall_impact(
+        layered(1.0, 8, &[(0.5, 1.0), (1.0, 256.0)]),
+        End::Right,
+        1.0,
+        0.0,
+    )
+    .unwrap();
+    let p0: f64 = problem.bodies()[0].nodal_mass().iter().sum::<f64>();
+    for bulk in bulks() {
+        for scheme in schemes(&problem, 1e4) {
+            let dt = stable_fraction(&bulk)
+                * problem.stiffest_transit()
+                * match scheme {
+                    ContactScheme::PredictorCorrector(_) => 0.5,
+                    ContactScheme::Penalty { .. } => 0.005,
+                    _ => 1.0,
+                };
+            let mut run = CombinedStepper::new(&problem, bulk, scheme, dt).unwrap();
+            let mut impulse = 0.0;
+            let mut previous = run.level().force;
+            for _ in 0..(1.5 / dt) as usize {
+                let level = run.step();
+                impulse += 0.5 * dt * (previous + level.force);
+                previous = level.force;
+                let p = run.momenta()[0];
+                assert!(
+                    (p - (p0 - impulse)).abs() <= 1e-11 * p0,
+                    "{} {}: momentum {p} vs {}",
+                    bulk.label(),
+                    scheme.label(),
+                    p0 - impulse
+                );
+            }
+            assert!(
+                impulse > 1.0,
+                "{} {}: impulse {impulse}",
+                bulk.label(),
+                scheme.label()
+            );
+        }
+    }
+}
+
 /// Source: the forward-increment Lagrange multiplier's definition (Carpenter, Taylor and Katona,
 /// IJNME 32 (1991)): the predicted gap is made zero. Proves: the contact nodes stepping by
 /// central difference inside Park's bulk (and RMM's nonlocal `M^-1 N`) keep the closure exact:
