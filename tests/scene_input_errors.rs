@@ -218,8 +218,8 @@ fn the_minimal_scene_is_valid_and_uses_the_documented_defaults() {
 #[case::unknown_metric(
     "kind = \"dalembert\"",
     "kind = \"dalembert\"\n\n[[expect]]\nmetric = \"l3\"\nmax = 1.0\nsource = \"x\"",
-    25,
-    "expect",
+    26,
+    "expect.metric",
     "is not one of"
 )]
 #[case::bound_min_above_max(

@@ -319,12 +319,12 @@ fn the_readme_example_scores_as_documented() {
     let readme =
         std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
     let block = |file: &str| -> String {
-        let start = format!("cat > myresults/fig1/{file} <<'END'\n");
+        let start = format!(" file=myresults/fig1/{file}\n");
         let at = readme
             .find(&start)
             .unwrap_or_else(|| panic!("README has no {file}"))
             + start.len();
-        let end = readme[at..].find("\nEND\n").unwrap();
+        let end = readme[at..].find("\n```\n").unwrap();
         format!("{}\n", &readme[at..at + end])
     };
     let dir = scratch("cli-readme").join("myresults/fig1");
