@@ -1,4 +1,4 @@
-//! Source of truth: the README's CI-gating contract ("Gating CI") and the issue behind it:
+//! Source of truth: the guide's CI-gating contract (docs/guide/ci.md, "Gating CI") and the issue behind it:
 //! `courant check [SCENES...] [--junit FILE] [--baseline DIR] [--out DIR]` runs the scenes'
 //! expectations, prints each with its measured value, bound, verdict and source, and exits 0
 //! when all hold, 1 when any fails, 2 on bad input (nothing written); `--junit` writes JUnit XML

@@ -180,10 +180,7 @@ fn check_shows_its_progress_on_a_terminal() {
         eprintln!("no `script` on this machine: the terminal case is not run");
         return;
     }
-    let command = format!(
-        "{} check fig1 fig6 layered",
-        env!("CARGO_BIN_EXE_courant")
-    );
+    let command = format!("{} check fig1 fig6 layered", env!("CARGO_BIN_EXE_courant"));
     let out = Command::new("script")
         .args(["-qec", &command, "/dev/null"])
         .output()

@@ -1,5 +1,5 @@
-//! Source of truth: the README's promises on bad input ("Exit status", "Limits", "Output
-//! directories") and issue #16: a mutation fuzz of the scene files found hangs, lost files,
+//! Source of truth: the guide's promises on bad input (docs/guide/running.md: "Exit status",
+//! "Limits", "Output directories"); a mutation fuzz of the scene files found hangs, lost files,
 //! aborts and NaN tables; this harness keeps them away.
 //!
 //! ```text
@@ -19,7 +19,7 @@
 //! whose estimated work is large (validated only: they are within the limits but would run for
 //! long) are counted, not run.
 //!
-//! Soak (documented in the README): `COURANT_FUZZ_CASES=1000000 COURANT_FUZZ_SECONDS=600
+//! Soak (documented in docs/guide/tests.md): `COURANT_FUZZ_CASES=1000000 COURANT_FUZZ_SECONDS=600
 //! COURANT_FUZZ_SEED=<any> cargo test --release --test fuzz_scenes -- --nocapture` runs for ten
 //! minutes and prints how many mutants it checked; `COURANT_FUZZ_LOG=FILE` appends the first
 //! line of every refusal to FILE, `COURANT_FUZZ_SLOWEST=FILE` writes the mutant that took

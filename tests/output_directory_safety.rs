@@ -1,6 +1,6 @@
-//! Source of truth: the README's promises "no data loss" and "nothing written on bad input"
-//! (section "Output directories") and `courant::io::manifest`; issue #16 found that
-//! `courant report --out DIR` deleted a user's files in DIR.
+//! Source of truth: the guide's promises "no data loss" and "nothing written on bad input"
+//! (docs/guide/running.md, "Output directories") and `courant::io::manifest`; a round of misuse
+//! found that `courant report --out DIR` deleted a user's files in DIR.
 //!
 //! ```text
 //!   DIR absent or empty ─────────────> written

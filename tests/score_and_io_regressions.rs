@@ -1,6 +1,6 @@
 //! Source of truth: the reproducers of a hostile-user round on `courant score`, `reference`,
 //! `check --baseline`, `--junit`, `bench --out` and stdout, copied in
-//! `tests/data/score_and_io/` with their `INDEX.txt`, and the README's "Limits" and "Exit
+//! `tests/data/score_and_io/` with their `INDEX.txt`, and the guide's "Limits" (docs/guide/running.md) and "Exit
 //! status".
 //!
 //! Proves, one test per INDEX line: each reproducer now gives what its line says it should (no
@@ -444,7 +444,7 @@ fn readme_states_the_cap_for_the_slowest_scheme() {
 }
 
 /// A reproducer that is slow within the caps: accepted in under a second, within the node-step
-/// cap, and its time covered by the README's statement of the cap.
+/// cap, and its time covered by the guide's statement of the cap.
 fn slow_within_caps(file: &str) {
     let text = std::fs::read_to_string(data(file)).unwrap();
     let started = Instant::now();

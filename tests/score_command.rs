@@ -1,4 +1,5 @@
-//! Source of truth: the README's "Results exchange format" and "Grading another code" contract:
+//! Source of truth: docs/guide/grading.md ("Results exchange format", "Grading another code")
+//! and the README's grading example:
 //! `courant run --exchange DIR` writes the format, `courant score <scene> --results DIR...
 //! [--out DIR] [--junit FILE]` grades it, prints one row per check as `courant check` does and
 //! exits 0 when every check holds, 1 when one fails, 2 on bad input naming file, line, column
