@@ -4,7 +4,7 @@
 use super::cases::Scene;
 use super::error::SceneError;
 use super::limits::Limits;
-use super::spelling::closest;
+use super::spelling::hint;
 use std::path::Path;
 
 /// (name, TOML text) of every built-in scene.
@@ -121,9 +121,7 @@ pub fn resolve_within(arg: &str, limits: Limits) -> Result<Scene, SceneError> {
     }
     builtin_scene_within(arg, limits).unwrap_or_else(|| {
         let names: Vec<&str> = BUILTIN_SCENES.iter().map(|(n, _)| *n).collect();
-        let hint = closest(arg, &names)
-            .map(|n| format!("did you mean {n}? "))
-            .unwrap_or_default();
+        let hint = hint(arg, &names);
         Err(SceneError {
             file: arg.to_string(),
             line: 0,
@@ -177,6 +175,7 @@ pub fn resolve_all(args: &[String]) -> Result<Vec<Scene>, Vec<SceneError>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::spelling::closest;
 
     /// Source of truth: Damerau's edit distance (`scene::spelling`). Proves: a misspelt built-in name gets the
     /// nearest name, an unrelated word gets none.

@@ -398,9 +398,7 @@ pub(super) fn expectation(
             .filter(|m| !AUTOMATIC.contains(&m.0))
             .map(|m| m.1)
             .collect();
-        let hint = crate::scene::spelling::closest(&raw.metric, &all)
-            .map(|m| format!("did you mean {m}? "))
-            .unwrap_or_default();
+        let hint = crate::scene::spelling::hint(&raw.metric, &all);
         src.error(
             Some(src.value_span(spanned.span(), "metric")),
             "expect.metric",

@@ -44,6 +44,13 @@ pub fn closest<'a>(word: &str, names: &[&'a str]) -> Option<&'a str> {
         .map(|(_, n)| n)
 }
 
+/// `did you mean NAME? ` for the [`closest`] name, or nothing.
+pub fn hint(word: &str, names: &[&str]) -> String {
+    closest(word, names)
+        .map(|n| format!("did you mean {n}? "))
+        .unwrap_or_default()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
