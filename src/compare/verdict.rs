@@ -126,7 +126,12 @@ impl Verdict {
             (Measured::Value(x), _) if !x.is_finite() => format!("{x} is not a finite number"),
             (Measured::Value(x), Bound::Range { min, max }) => {
                 let past = |edge: f64, relation: &str| {
-                    format!("{x:.4e} {relation} {edge:e}{}", distance_past(*x, edge))
+                    let shown = if edge == 0.0 {
+                        "0".to_string()
+                    } else {
+                        format!("{edge:e}")
+                    };
+                    format!("{x:.4e} {relation} {shown}{}", distance_past(*x, edge))
                 };
                 match (min, max) {
                     (Some(lo), _) if *x < lo => past(lo, "<"),
@@ -170,5 +175,44 @@ impl Verdict {
             self.bound_as_read(),
             self.source
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn failed(x: f64, min: Option<f64>, max: Option<f64>) -> Verdict {
+        Verdict {
+            case: "co1".into(),
+            metric: Metric::Linf,
+            at: None,
+            relative_to: None,
+            masses: None,
+            force: None,
+            measured: Measured::Value(x),
+            bound: Bound::Range { min, max },
+            pass: false,
+            finding: false,
+            source: "s".into(),
+        }
+    }
+
+    /// Source of truth: arithmetic (x / bound). Proves: a failed bound reads as the relation
+    /// that broke, far past it as a factor, near it as a percentage, against 0 as neither.
+    #[test]
+    fn a_failed_bound_reads_as_a_failure() {
+        let far = failed(8.9706e-14, None, Some(1e-30));
+        assert_eq!(far.excess(), "8.9706e-14 > 1e-30: 9e16 x the bound");
+        assert!(
+            far.describe()
+                .contains("= 8.9706e-14 > 1e-30 (bound <= 1e-30)")
+        );
+        let near = failed(1.2e-3, None, Some(1e-3));
+        assert_eq!(near.excess(), "1.2000e-3 > 1e-3: +20.0 % past the bound");
+        let below = failed(0.1, Some(0.3), None);
+        assert_eq!(below.excess(), "1.0000e-1 < 3e-1: 0.333 x the bound");
+        let zero = failed(1e-3, None, Some(0.0));
+        assert_eq!(zero.excess(), "1.0000e-3 > 0");
     }
 }
