@@ -60,6 +60,15 @@ pub struct Verdict {
     pub source: String,
 }
 
+/// A bound as the terminal shows it: `1e-30`, `3e-1`, and `0` (not `0e0`).
+fn edge_text(edge: f64) -> String {
+    if edge == 0.0 {
+        "0".into()
+    } else {
+        format!("{edge:e}")
+    }
+}
+
 /// How far `x` lies past the bound `edge` it broke: `: 9e16 x the bound` beyond a factor 2 either
 /// way, `: +20.0 % past the bound` within it, nothing against a bound of 0 (no ratio exists).
 fn distance_past(x: f64, edge: f64) -> String {
@@ -126,12 +135,11 @@ impl Verdict {
             (Measured::Value(x), _) if !x.is_finite() => format!("{x} is not a finite number"),
             (Measured::Value(x), Bound::Range { min, max }) => {
                 let past = |edge: f64, relation: &str| {
-                    let shown = if edge == 0.0 {
-                        "0".to_string()
-                    } else {
-                        format!("{edge:e}")
-                    };
-                    format!("{x:.4e} {relation} {shown}{}", distance_past(*x, edge))
+                    format!(
+                        "{x:.4e} {relation} {}{}",
+                        edge_text(edge),
+                        distance_past(*x, edge)
+                    )
                 };
                 match (min, max) {
                     (Some(lo), _) if *x < lo => past(lo, "<"),
@@ -154,8 +162,12 @@ impl Verdict {
         match (&self.measured, self.bound) {
             (Measured::Value(x), Bound::Range { min, max }) if !self.pass && x.is_finite() => {
                 match (min, max) {
-                    (Some(lo), _) if *x < lo => format!("< {lo:e} (bound {})", self.bound),
-                    (_, Some(hi)) if *x > hi => format!("> {hi:e} (bound {})", self.bound),
+                    (Some(lo), _) if *x < lo => {
+                        format!("< {} (bound {})", edge_text(lo), self.bound)
+                    }
+                    (_, Some(hi)) if *x > hi => {
+                        format!("> {} (bound {})", edge_text(hi), self.bound)
+                    }
                     _ => self.bound.to_string(),
                 }
             }
