@@ -108,7 +108,8 @@ fn lumped_cd_step(c: &mut Criterion) {
 /// sub-blocks of 64 steps) on one and on two threads, bare and with the energy sums, per
 /// node-step (throughput `1024 N`). Bit-identical to single steps whatever the thread count
 /// (unit tests of `kernels::lumped::pipeline`). Target: 0.54 ns at N = 1e6 on one core, 1.7x on
-/// two (benches/RESULTS.md, "Target 4: both cores, temporal blocking").
+/// two (benches/RESULTS.md, "2026-11-25, Intel: blocks of steps (temporal blocking) and both
+/// cores").
 fn lumped_cd_block(c: &mut Criterion) {
     use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock};
     let steps = MAX_BLOCK_STEPS;
@@ -151,7 +152,7 @@ fn lumped_cd_block(c: &mut Criterion) {
 /// 1e6, at half of each kind's critical Courant number, and CMM on a bar of graded density too
 /// (each window with its own factors). Targets: RMM within 2x of LMM, CMM and AMM within 3x (when
 /// the matrix masses were added), then each within 1.5x at N = 1e5 and 1e6 (benches/RESULTS.md,
-/// "Target 3: matrix masses against the lumped step").
+/// "2026-11-28, AMD: matrix-mass steps against the lumped step").
 fn mass_kind_step(c: &mut Criterion) {
     use courant_solver::MassKind;
     let forces = [(0usize, 1.0f64)];
@@ -464,7 +465,8 @@ fn run_loop(c: &mut Criterion) {
     group.finish();
 }
 
-/// The run loop at scale (benches/RESULTS.md, "Target 1: the run loop against the bare kernel"):
+/// The run loop at scale (benches/RESULTS.md, "2026-11-25, Intel: the run loop against the
+/// bare kernel; memory per element"):
 /// `Scheme::run` (the shared time loop: the start, the steps with the energy balance checked every
 /// step, the blow-up guard, the work of the loads, an energy sample at every step as a scene takes
 /// them for runs of up to 10^4 steps (with `T*` recomputed from the mass at every 64th:

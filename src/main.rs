@@ -19,15 +19,21 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Name the built-in scenes with a one-line description each (with --schemes: the schemes
-    /// scenes may name, their parameters, masses and sources).
+    /// List the built-in scenes, a scene's cases, or the schemes.
+    ///
+    /// Without arguments: the built-in scenes with a one-line description each. With scene names
+    /// or .toml paths: each scene's description and its case names, one a line. With --schemes:
+    /// the schemes scenes may name, their parameters, masses and sources.
     List {
+        /// Scene names or paths whose cases to list.
+        scenes: Vec<String>,
         /// List the schemes instead of the scenes.
         #[arg(long)]
         schemes: bool,
     },
-    /// Run scenes (built-in names or paths to .toml files; all built-in scenes when none given).
+    /// Run scenes and write their results as CSV.
     ///
+    /// Scenes are built-in names or paths to .toml files (all built-in scenes when none given).
     /// Writes DIR/<scene>/<case>.csv (stress profiles), <case>.history.csv, <case>.energy.csv,
     /// summary.csv, norms.csv and expectations.csv. Exit status: 0 when every expectation holds,
     /// 1 when one fails, 2 on bad input (nothing is written then).
@@ -51,8 +57,10 @@ enum Command {
         #[arg(long)]
         force: bool,
     },
-    /// Grade another code's results (the exchange format: DIR/<case>.csv, results.toml) against
-    /// a scene's references, with the norms and expectations of `run`, plus diagnostics
+    /// Grade another code's results against a scene's exact answers.
+    ///
+    /// The results are in the exchange format (DIR/<case>.csv, results.toml); they are graded
+    /// with the norms and expectations of `run`, plus diagnostics
     /// (magnitude, time level, sign, layout) and, for several directories of one case at
     /// different N, its convergence orders.
     ///
@@ -87,8 +95,9 @@ enum Command {
         #[arg(long)]
         force: bool,
     },
-    /// Write a scene's exact answers in the exchange format to DIR/<scene>/: at its own mesh
-    /// and output times, or at the rows of a query file (t, x_left, x_right | t, x | t | mode).
+    /// Write a scene's exact answers in the exchange format.
+    ///
+    /// To DIR/<scene>/: at its own mesh and output times, or at the rows of a query file (t, x_left, x_right | t, x | t | mode).
     /// Every file has a `reference` column naming the reference that produced it.
     Reference {
         /// Scene name or path.
@@ -104,7 +113,9 @@ enum Command {
         #[arg(long)]
         force: bool,
     },
-    /// Regenerate the verification report: every built-in scene, the convergence and
+    /// Regenerate the verification report (HTML, Markdown, CSV, SVG).
+    ///
+    /// Every built-in scene, the convergence and
     /// work-precision studies and the stability table, run in parallel, written whole (staged,
     /// then renamed) to DIR: index.html (open it in a browser; its first screen counts every
     /// verdict and links to it), index.md, every table as CSV and every figure as SVG, and the
@@ -120,15 +131,16 @@ enum Command {
     },
     /// Check scenes for CI: run them and gate on their verdicts (and on a baseline).
     ///
-    /// Verdicts: every expectation, the stability verdict of every case of a stability scene,
+    /// Verdicts (the report counts the same, and adds the committed results of other codes): every expectation, the stability verdict of every case of a stability scene,
     /// and (with no scene named) the convergence-order bands of the report's studies. Prints a
     /// line per scene and every failure with how far past its bound (`--verbose`: every
     /// verdict). Exit status: 0 when every check holds (findings a scene states pass), 1 when
     /// one fails (a verdict, or a file beyond its baseline tolerance), 2 on bad input (nothing
     /// is written then).
     Check(CheckOptions),
-    /// Time the C reference of the lumped central-difference step (its fastest variant, built
-    /// with $CC, default gcc, and $CFLAGS, default -O3 -march=native), courant's kernel and
+    /// Time courant's step and run loop against a C reference on this machine.
+    ///
+    /// The C reference is the lumped central-difference step (its fastest variant, built with $CC, default gcc, and $CFLAGS, default -O3 -march=native), courant's kernel and
     /// courant's run loop side by side on this machine, and write their ratios (CSV) to FILE.
     ///
     /// Medians of wall time (ns per node-step) on the graded bar of the benchmarks; a shared
@@ -154,14 +166,19 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    courant::cli::exit_quietly_on_closed_pipe();
     let command = Cli::parse().command;
+    // `list` only prints: a closed pipe (`courant list | head`) ends it quietly, as Unix tools
+    // end. Every other command writes files: it finishes them, and a closed stdout is then one
+    // line on stderr and exit status 2 (`courant::cli::console`), never a silent 141.
+    if matches!(command, Command::List { .. }) {
+        courant::cli::exit_quietly_on_closed_pipe();
+    }
     if let Err(message) = courant::cli::read_thread_setting() {
         courant::cli::console::err(format_args!("error: {message}\n"));
         return courant::cli::console::finish(ExitCode::from(2));
     }
     let code = match command {
-        Command::List { schemes } => courant::cli::list(schemes),
+        Command::List { scenes, schemes } => courant::cli::list(&scenes, schemes),
         Command::Run {
             scenes,
             out,

@@ -162,20 +162,44 @@ impl CheckReport {
         let base = baseline
             .as_ref()
             .map(|(root, kind)| (root.as_path(), *kind));
-        let mut scenes = in_order(
+        // Progress on stderr: indicatif draws only on a terminal and is silent otherwise (CI,
+        // a pipe, a file), so the output a program reads never changes.
+        let progress = indicatif::ProgressBar::new((scenes.len() + studies.len()) as u64);
+        progress.set_style(
+            indicatif::ProgressStyle::with_template("checking {bar:40} {pos}/{len} {msg}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        let done = |name: &str| {
+            progress.set_message(name.to_string());
+            progress.inc(1);
+        };
+        let checked = in_order(
             scenes
                 .par_iter()
                 .map(|s| {
-                    check_scene(s, base, &tolerances).map_err(|e| (s.name.clone(), e.to_string()))
+                    let checked = check_scene(s, base, &tolerances)
+                        .map_err(|e| (s.name.clone(), e.to_string()));
+                    done(&s.name);
+                    checked
                 })
                 .collect(),
-        )?;
-        scenes.extend(in_order(
-            studies
-                .par_iter()
-                .map(|s| check_study(s).map_err(|e| (format!("convergence:{}", s.name), e)))
-                .collect(),
-        )?);
+        );
+        let studied = checked.and_then(|mut scenes| {
+            scenes.extend(in_order(
+                studies
+                    .par_iter()
+                    .map(|s| {
+                        let checked =
+                            check_study(s).map_err(|e| (format!("convergence:{}", s.name), e));
+                        done(s.name);
+                        checked
+                    })
+                    .collect(),
+            )?);
+            Ok(scenes)
+        });
+        progress.finish_and_clear();
+        let scenes = studied?;
         Ok(CheckReport {
             scenes,
             baseline,

@@ -154,7 +154,9 @@ pub fn render(name: &str, suites: &[TestSuite], time: f64) -> String {
                 escape(&case.name)
             );
             if case.time > 0.0 {
-                let _ = write!(xml, " time=\"{:.3}\"", case.time);
+                // Microseconds: a run of a small case takes well under a millisecond, which
+                // three decimals would show as 0.000.
+                let _ = write!(xml, " time=\"{:.6}\"", case.time);
             }
             if case.failure.is_none() && case.output.is_none() && case.skipped.is_none() {
                 xml.push_str("/>\n");

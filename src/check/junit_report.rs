@@ -1,5 +1,7 @@
-//! `courant check` as JUnit XML: one test suite per scene (properties: description, source,
-//! baseline directory), one test case per expectation verdict and per baseline file.
+//! `courant check` as JUnit XML: one test suite per scene that checked something (properties:
+//! description, source, baseline directory), one test case per expectation verdict and per
+//! compared baseline file. The files a report baseline does not keep are one property of their
+//! suite, not hundreds of `<skipped>` cases; a scene or study with nothing checked has no suite.
 
 use super::baseline::csv_diff::FileOutcome;
 use super::baseline::scene_diff::FileComparison;
@@ -44,9 +46,10 @@ pub fn verdict_case(classname: &str, v: &Verdict, time: f64) -> TestCase {
     }
 }
 
-/// The JUnit test suites: one per scene (properties: description, source, baseline
-/// directory), one test case per expectation verdict (classname = scene, name =
-/// [`testcase_name`]) and per baseline file (name = `baseline <file>`).
+/// The JUnit test suites: one per scene with a check (properties: description, source,
+/// baseline directory, the files the baseline does not keep), one test case per expectation
+/// verdict (classname = scene, name = [`testcase_name`]) and per compared baseline file (name =
+/// `baseline <file>`).
 pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
     report
         .scenes
@@ -69,7 +72,24 @@ pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
                 .iter()
                 .map(|v| verdict_case(&scene.name, v, scene.time_of(&v.case)))
                 .collect();
-            for file in scene.baseline.iter().flatten() {
+            let not_kept: Vec<&str> = scene
+                .baseline
+                .iter()
+                .flatten()
+                .filter(|f| f.skipped())
+                .map(|f| f.file.as_str())
+                .collect();
+            if !not_kept.is_empty() {
+                properties.push((
+                    "baseline_not_compared".into(),
+                    format!(
+                        "{} file(s) a report baseline does not keep: {}",
+                        not_kept.len(),
+                        not_kept.join(", ")
+                    ),
+                ));
+            }
+            for file in scene.baseline.iter().flatten().filter(|f| !f.skipped()) {
                 cases.push(TestCase {
                     classname: scene.name.clone(),
                     name: format!("baseline {}", file.file),
@@ -79,7 +99,7 @@ pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
                         details: m,
                     }),
                     output: Some(file_details(file)),
-                    skipped: file.skipped().then(|| file.summary()),
+                    skipped: None,
                     time: 0.0,
                 });
             }
@@ -91,6 +111,7 @@ pub fn suites(report: &CheckReport) -> Vec<TestSuite> {
                 cases,
             }
         })
+        .filter(|suite| !suite.cases.is_empty())
         .collect()
 }
 

@@ -120,10 +120,20 @@ pub fn terminal(report: &CheckReport, verbose: bool) -> String {
         let _ = writeln!(out, "baseline tolerances: {}", report.tolerances.describe());
     }
     let e = report.expectation_counts();
+    let n_studies = report
+        .scenes
+        .iter()
+        .filter(|s| s.name.starts_with("convergence:"))
+        .count();
+    let studies = match n_studies {
+        0 => String::new(),
+        1 => " and 1 convergence study".into(),
+        n => format!(" and {n} convergence studies"),
+    };
     let _ = write!(
         out,
-        "\ncheck: {} scene(s) and studies, {} verdict(s): {} pass, {} finding(s), {} failed",
-        report.scenes.len(),
+        "\ncheck: {} scene(s){studies}, {} verdict(s): {} pass, {} finding(s), {} failed",
+        report.scenes.len() - n_studies,
         e.total,
         e.total - e.failed - e.findings,
         e.findings,
@@ -141,7 +151,12 @@ pub fn terminal(report: &CheckReport, verbose: bool) -> String {
     if !verbose {
         let _ = writeln!(
             out,
-            "(--verbose shows every verdict with its bound and source)"
+            "(verdicts: the scenes' expectations, the stability verdict of each case of a stability scene{}; the report counts these and the committed results of other codes. --verbose shows every verdict with its bound and source)",
+            if studies.is_empty() {
+                ""
+            } else {
+                " and the convergence-order bands"
+            }
         );
     }
     out

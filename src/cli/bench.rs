@@ -1,8 +1,7 @@
 //! `courant bench`: the C reference of the lumped central-difference step, courant's kernels and
 //! courant's run loop, timed side by side in one process on the machine at hand, and their
-//! ratios (the speed targets 1, 4 and 5 of benches/RESULTS.md, heading "`courant bench` and the
-//! lumped step (targets 1, 4, 5)"), so that a user sees on their own machine what the README's
-//! speed table claims.
+//! ratios (benches/RESULTS.md, heading "2026-11-27, AMD: `courant bench`, blocked steps on one and
+//! two threads, memory"), so that a user sees on their own machine what those tables measured.
 //!
 //! What is timed, per element count N (node-steps = steps x (N + 1)), each the median over
 //! `reps` repetitions of about `node_steps` node-steps:

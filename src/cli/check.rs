@@ -28,7 +28,7 @@ pub struct ToleranceOptions {
     #[arg(long, value_name = "ABS", allow_negative_numbers = true)]
     pub peak_abs: Option<f64>,
     /// A rule for one column, ahead of every other rule (repeatable):
-    /// COLUMN=ignore | exact | rel:REL\[:ABS\] | peak:REL\[:ABS\].
+    /// `COLUMN=ignore | exact | rel:REL[:ABS] | peak:REL[:ABS]`.
     #[arg(long = "column", value_name = "COLUMN=RULE")]
     pub columns: Vec<String>,
 }

@@ -4,8 +4,10 @@
 //!
 //! Every line the commands print goes through [`out`] or [`err`]. A failed write is remembered
 //! (the first one) and the command goes on, so that `run` still commits its files; [`finish`]
-//! then prints one line to stderr and turns the exit status into 2. A closed pipe never gets
-//! here: SIGPIPE ends the process quietly first (see [`super::exit_quietly_on_closed_pipe`]).
+//! then prints one line to stderr and turns the exit status into 2. A closed pipe is such a
+//! failure for every command that writes files (`courant run ... | head -1` finishes writing,
+//! then says its lines were cut short); `list`, which only prints, ends quietly instead (see
+//! [`super::exit_quietly_on_closed_pipe`]).
 
 use std::fmt;
 use std::io::Write;
@@ -45,9 +47,15 @@ pub fn failure() -> Option<String> {
     let failed = FAILED
         .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner);
-    failed
-        .as_ref()
-        .map(|(stream, _, why)| format!("cannot write to {stream}: {why}"))
+    failed.as_ref().map(|(stream, kind, why)| {
+        if *kind == std::io::ErrorKind::BrokenPipe {
+            format!(
+                "{stream} was closed before the output ended (a pipe's reader left); the command ran to its end (the files it writes are complete), but some of its lines were not printed"
+            )
+        } else {
+            format!("cannot write to {stream}: {why}")
+        }
+    })
 }
 
 /// The exit status of a command whose status was `code`: flush stdout, and when any write to

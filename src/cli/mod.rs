@@ -66,9 +66,34 @@ use crate::scene::studies::convergence::CONVERGENCE_STUDIES;
 use crate::scene::studies::convergence::ConvergenceStudy;
 use std::process::ExitCode;
 
-pub fn list(schemes: bool) -> ExitCode {
+/// `courant list`: the built-in scenes with a line each; `--schemes`: the schemes; with scene
+/// names or paths: each scene's description and its case names, one a line (the names
+/// `[[expect]] cases`, `courant score`'s files and `results.toml` use).
+pub fn list(scenes: &[String], schemes: bool) -> ExitCode {
     if schemes {
         out!("{}", schemes::listing());
+        return ExitCode::SUCCESS;
+    }
+    if !scenes.is_empty() {
+        let resolved = match resolve_all(scenes) {
+            Ok(resolved) => resolved,
+            Err(errors) => {
+                for e in errors {
+                    errln!("error: {e}");
+                }
+                return ExitCode::from(2);
+            }
+        };
+        for scene in &resolved {
+            outln!("{}: {}", scene.name, scene.description);
+            let names = case_names(scene);
+            if names.is_empty() {
+                outln!("(no cases: a sweep of critical Courant numbers, written as stability.csv)");
+            }
+            for name in names {
+                outln!("{name}");
+            }
+        }
         return ExitCode::SUCCESS;
     }
     let width = BUILTIN_SCENES
@@ -83,7 +108,18 @@ pub fn list(schemes: bool) -> ExitCode {
             None => {}
         }
     }
+    outln!("(`courant list SCENE` names a scene's cases)");
     ExitCode::SUCCESS
+}
+
+/// The case names of a scene, in file order, whatever its study kind (a contact stability
+/// sweep has none).
+pub fn case_names(scene: &Scene) -> Vec<String> {
+    let mut names: Vec<String> = scene.cases.iter().map(|c| c.name.clone()).collect();
+    names.extend(scene.spectra.iter().map(|c| c.name.clone()));
+    names.extend(scene.dispersion.iter().map(|c| c.name.clone()));
+    names.extend(scene.contact.iter().map(|c| c.name.clone()));
+    names
 }
 
 pub fn report(args: &[String], out: Option<&std::path::Path>) -> ExitCode {

@@ -13,11 +13,11 @@ use std::io::Read;
 use std::path::Path;
 use thiserror::Error;
 
-/// Largest data file read: result files, baselines and query files (README, "Limits").
+/// Largest data file read: result files, baselines and query files (docs/guide/running.md, "Limits").
 pub const DATA_CAP: u64 = 1 << 30;
-/// Largest small text file read: scenes, `results.toml`, manifests (README, "Limits").
+/// Largest small text file read: scenes, `results.toml`, manifests (docs/guide/running.md, "Limits").
 pub const TEXT_CAP: u64 = 1 << 20;
-/// Longest line of any file read, in bytes (README, "Limits").
+/// Longest line of any file read, in bytes (docs/guide/running.md, "Limits").
 pub const LINE_CAP: usize = 1 << 16;
 
 /// Why a file was not read. Messages do not repeat the path: the caller names it once.

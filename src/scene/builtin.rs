@@ -4,6 +4,7 @@
 use super::cases::Scene;
 use super::error::SceneError;
 use super::limits::Limits;
+use super::spelling::hint;
 use std::path::Path;
 
 /// (name, TOML text) of every built-in scene.
@@ -124,9 +125,7 @@ pub fn resolve_within(arg: &str, limits: Limits) -> Result<Scene, SceneError> {
     }
     builtin_scene_within(arg, limits).unwrap_or_else(|| {
         let names: Vec<&str> = BUILTIN_SCENES.iter().map(|(n, _)| *n).collect();
-        let hint = closest(arg, &names)
-            .map(|n| format!("did you mean {n}? "))
-            .unwrap_or_default();
+        let hint = hint(arg, &names);
         Err(SceneError {
             file: arg.to_string(),
             line: 0,
@@ -177,44 +176,17 @@ pub fn resolve_all(args: &[String]) -> Result<Vec<Scene>, Vec<SceneError>> {
     }
 }
 
-/// The name of `names` nearest to `arg` by edit distance, if it is close: at most 2 edits, and
-/// fewer than half of `arg`'s characters.
-fn closest<'a>(arg: &str, names: &[&'a str]) -> Option<&'a str> {
-    let arg = arg.to_lowercase();
-    names
-        .iter()
-        .map(|n| (edit_distance(&arg, n), *n))
-        .filter(|&(d, _)| d <= 2 && 2 * d < arg.chars().count())
-        .min_by_key(|&(d, _)| d)
-        .map(|(_, n)| n)
-}
-
-/// Levenshtein distance between two strings (insertions, deletions, substitutions).
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut previous: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut current = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            let substitution = previous[j] + usize::from(ca != *cb);
-            current.push(substitution.min(previous[j + 1] + 1).min(current[j] + 1));
-        }
-        previous = current;
-    }
-    previous[b.len()]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::spelling::closest;
 
-    /// Source of truth: Levenshtein's edit distance. Proves: a misspelt built-in name gets the
+    /// Source of truth: Damerau's edit distance (`scene::spelling`). Proves: a misspelt built-in name gets the
     /// nearest name, an unrelated word gets none.
     #[test]
     fn misspelt_names_get_the_nearest_builtin() {
-        assert_eq!(edit_distance("fig_1", "fig1"), 1);
-        assert_eq!(edit_distance("kitten", "sitting"), 3);
         let names: Vec<&str> = BUILTIN_SCENES.iter().map(|(n, _)| *n).collect();
+        assert_eq!(closest("fgi1", &names), Some("fig1"));
         assert_eq!(closest("fig_1", &names), Some("fig1"));
         assert_eq!(closest("FIG5", &names), Some("fig5"));
         assert_eq!(closest("layerd", &names), Some("layered"));

@@ -57,6 +57,30 @@ impl SceneError {
     }
 }
 
+/// A value as an error echoes it: at most 40 characters, then how many more bytes.
+fn echo(value: &str) -> String {
+    match value.char_indices().nth(40) {
+        None => value.to_string(),
+        Some((cut, _)) => format!("{}… ({} more bytes)", &value[..cut], value.len() - cut),
+    }
+}
+
+/// toml's "unknown field `X`, expected one of `a`, `b`" with the nearest known field named
+/// first: "unknown field `profile_tims` (did you mean `profile_times`?), expected one of ...".
+fn with_suggestion(message: &str) -> String {
+    let Some(rest) = message.strip_prefix("unknown field `") else {
+        return message.to_string();
+    };
+    let Some((field, expected)) = rest.split_once('`') else {
+        return message.to_string();
+    };
+    let known: Vec<&str> = expected.split('`').skip(1).step_by(2).collect();
+    match super::spelling::closest(field, &known) {
+        Some(near) => format!("unknown field `{field}` (did you mean `{near}`?){expected}"),
+        None => message.to_string(),
+    }
+}
+
 /// `:line:column`, or nothing for an error that has no place in a file (line 0).
 fn position(line: usize, column: usize) -> String {
     if line == 0 {
@@ -174,6 +198,21 @@ impl Source<'_> {
                 "data did not match any variant of untagged enum OneOrMany",
                 "expected a positive number or a list of positive numbers",
             );
+        let message = with_suggestion(&message);
+        // The value given, when the message does not show it already (`elements = "100"`:
+        // `"100"`), so every rule broken is seen beside what broke it.
+        let given = err
+            .span()
+            .filter(|s| !s.is_empty() && s.end <= self.text.len())
+            .and_then(|s| self.text.get(s))
+            .map(str::trim)
+            .filter(|v| !v.is_empty() && !v.contains('\n') && !message.contains(*v));
+        let message = match given {
+            Some(v) if !message.starts_with("unknown field") => {
+                format!("{}: {message}", echo(v))
+            }
+            _ => message,
+        };
         self.error(err.span(), &key, message)
     }
 

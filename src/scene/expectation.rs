@@ -174,11 +174,16 @@ pub(super) fn expectation(
             .filter(|m| !AUTOMATIC.contains(&m.0))
             .map(|m| m.1)
             .collect();
-        fail(format!(
-            "metric = \"{}\" is not one of {}",
-            raw.metric,
-            all.join(", ")
-        ))
+        let hint = crate::scene::spelling::hint(&raw.metric, &all);
+        src.error(
+            Some(src.value_span(spanned.span(), "metric")),
+            "expect.metric",
+            format!(
+                "\"{}\" is not one of the metrics: {hint}(all: {})",
+                raw.metric,
+                all.join(", ")
+            ),
+        )
     })?;
     if metric == Metric::Stability {
         return Err(fail(

@@ -18,7 +18,8 @@
 //! - [`magnitude`]: the range of magnitudes inputs and derived scales may take, so that no
 //!   numerics overflow; [`budget`]: the size, work and output memory a scene may ask for
 //!   ([`work`] estimates them);
-//!   [`names`]: case names, bounded and safe as file names.
+//!   [`names`]: case names, bounded and safe as file names; [`spelling`]: the nearest name to
+//!   a misspelt one.
 //! - [`builtin`]: the scenes compiled into the binary; [`studies`]: the report's convergence and
 //!   work-precision studies, each a built-in scene derived onto a sequence of meshes.
 //!
@@ -49,6 +50,7 @@ pub mod reference;
 pub mod schema;
 pub mod scheme_keys;
 pub mod spectrum;
+pub mod spelling;
 pub mod stepping;
 pub mod studies;
 pub mod time_stepping;

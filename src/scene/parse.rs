@@ -15,7 +15,7 @@ use courant_solver::MassKind;
 use serde::Deserialize;
 use toml::Spanned;
 
-/// Unknown keys reported in one pass, at most.
+/// Unknown keys and bad values reported in one pass, at most.
 const MAX_UNKNOWN_KEYS: usize = 20;
 
 /// `text` with line `line` (1-based) replaced by spaces: positions elsewhere stay the same.
@@ -30,6 +30,76 @@ fn blank_line(text: &str, line: usize) -> String {
             }
         })
         .collect()
+}
+
+/// Values that stand in for a bad one while the rest of the file is checked: the first one the
+/// line accepts is used (a count, a Courant number, a length; a list of one).
+const NEUTRAL_VALUES: &[&str] = &["1", "0.5", "[1]", "[0.5]"];
+
+/// True when line `line` (1-based) of `text` is a table header (`[output]`, `[[expect]]`).
+fn is_header(text: &str, line: usize) -> bool {
+    text.lines()
+        .nth(line.wrapping_sub(1))
+        .is_some_and(|l| l.trim_start().starts_with('['))
+}
+
+/// The line (1-based) of the header of the table that line `line` is in (0 for the top level).
+fn header_of(text: &str, line: usize) -> usize {
+    text.lines()
+        .take(line)
+        .enumerate()
+        .filter(|(_, l)| l.trim_start().starts_with('['))
+        .map(|(i, _)| i + 1)
+        .last()
+        .unwrap_or(0)
+}
+
+/// `text` with the value of the `key = value` on line `line` replaced by `value`, when that
+/// line holds a whole key and value (brackets and braces balanced); `None` otherwise.
+fn replace_value(text: &str, line: usize, value: &str) -> Option<String> {
+    let mut out = String::with_capacity(text.len());
+    let mut replaced = false;
+    for (i, l) in text.split_inclusive('\n').enumerate() {
+        if i + 1 != line {
+            out.push_str(l);
+            continue;
+        }
+        let (key, old) = l.split_once('=')?;
+        let balanced = |open: char, close: char| {
+            old.chars().filter(|&c| c == open).count()
+                == old.chars().filter(|&c| c == close).count()
+        };
+        if key.trim().is_empty() || key.contains('[') || !balanced('[', ']') || !balanced('{', '}')
+        {
+            return None;
+        }
+        out.push_str(key);
+        out.push_str("= ");
+        out.push_str(value);
+        if l.ends_with('\n') {
+            out.push('\n');
+        }
+        replaced = true;
+    }
+    replaced.then_some(out)
+}
+
+/// `text` with the key of the `key = value` on line `line` renamed to `to`; `None` when the line
+/// holds no such pair.
+fn rename_key(text: &str, line: usize, to: &str) -> Option<String> {
+    let mut out = String::with_capacity(text.len());
+    let mut renamed = false;
+    for (i, l) in text.split_inclusive('\n').enumerate() {
+        if i + 1 == line {
+            let (key, value) = l.split_once('=')?;
+            let indent = &key[..key.len() - key.trim_start().len()];
+            out.push_str(&format!("{indent}{to} ={value}"));
+            renamed = true;
+        } else {
+            out.push_str(l);
+        }
+    }
+    renamed.then_some(out)
 }
 
 /// One reading of a scene: its first error.
@@ -52,9 +122,11 @@ impl Scene {
     /// Parse and validate a scene. `file` is the path or name shown in errors; `name` becomes the
     /// output directory.
     ///
-    /// Every unknown key of the file is reported in one pass (each is set aside and the file read
-    /// again), with the first other error found after them; invalid `[[expect]]` tables are all
-    /// reported too.
+    /// Every unknown key and every bad value of the file is reported in one pass: each unknown
+    /// key is set aside and each bad value replaced by a neutral one ([`NEUTRAL_VALUES`]), and
+    /// the file read again; an error that the setting aside or the replacement may have caused
+    /// (a key missing from its table, an error on the replaced line) ends the pass unreported.
+    /// Invalid `[[expect]]` tables are all reported too.
     pub fn parse(name: &str, file: &str, text: &str) -> Result<Scene, SceneError> {
         Self::parse_within(name, file, text, Limits::DEFAULT)
     }
@@ -70,19 +142,77 @@ impl Scene {
             Ok(scene) => return Ok(scene),
             Err(e) => e,
         };
-        let mut errors = vec![first];
+        // Flat: each error's `also` (its file's other `[[expect]]` tables) taken out, so that a
+        // later reading that finds them again adds nothing twice.
+        let mut errors = Vec::new();
+        // Returns the index of the first of `e`'s errors.
+        let push = |errors: &mut Vec<SceneError>, mut e: SceneError| -> usize {
+            let also = std::mem::take(&mut e.also);
+            let mut first = None;
+            for e in std::iter::once(e).chain(also) {
+                let same = |o: &SceneError| {
+                    (o.line, o.column, &o.message) == (e.line, e.column, &e.message)
+                };
+                let index = errors.iter().position(same).unwrap_or_else(|| {
+                    errors.push(e);
+                    errors.len() - 1
+                });
+                first.get_or_insert(index);
+            }
+            first.unwrap_or(0)
+        };
+        let mut at = push(&mut errors, first);
         let mut rest = text.to_string();
-        // Bounded: each round blanks one line of the file.
+        // The headers of the tables a line was set aside or replaced in.
+        let mut touched = Vec::new();
+        // Bounded: each round blanks or neutralises one line of the file.
         for _ in 0..MAX_UNKNOWN_KEYS {
-            let last = errors.last().expect("one error at least");
-            if !last.message.starts_with("unknown field") || last.line == 0 {
+            let Some(last) = errors.get(at) else { break };
+            if last.line == 0 || is_header(&rest, last.line) {
                 break;
             }
-            rest = blank_line(&rest, last.line);
-            match parse_once(name, file, &rest, limits) {
-                Ok(_) => break,
-                Err(e) if e.line == last.line && e.message == last.message => break,
-                Err(e) => errors.push(e),
+            let unknown = last.message.starts_with("unknown field");
+            // An unknown key is read as the key it is nearest to (`profile_tims` as
+            // `profile_times`, so that its absence causes nothing) or else set aside; a bad value
+            // is replaced by a neutral one (the first the line accepts), so the next round finds
+            // the next bad value.
+            let candidates: Vec<String> = if unknown {
+                let meant = last
+                    .message
+                    .split_once("(did you mean `")
+                    .and_then(|(_, m)| m.split_once('`'))
+                    .and_then(|(meant, _)| rename_key(&rest, last.line, meant));
+                meant
+                    .into_iter()
+                    .chain(std::iter::once(blank_line(&rest, last.line)))
+                    .collect()
+            } else {
+                NEUTRAL_VALUES
+                    .iter()
+                    .filter_map(|v| replace_value(&rest, last.line, v))
+                    .collect()
+            };
+            let (line, message) = (last.line, last.message.clone());
+            let next = candidates.into_iter().find_map(|candidate| {
+                match parse_once(name, file, &candidate, limits) {
+                    Ok(_) => Some((candidate, None)),
+                    // The neutral value itself broke a rule of this line: try the next one.
+                    Err(e) if e.line == line => None,
+                    Err(e) => Some((candidate, Some(e))),
+                }
+            });
+            let Some((candidate, next)) = next else { break };
+            rest = candidate;
+            touched.push(header_of(&rest, line));
+            match next {
+                None => break,
+                Some(e) if e.line == line && e.message == message => break,
+                // What a set-aside key or a replaced value may have caused, not what the file
+                // says: an error on the line just replaced, or at the header of a table a line
+                // was taken from (where a missing key is reported). Never reported, to mislead
+                // no one; a real one shows once the errors above are mended.
+                Some(e) if e.line == line || touched.contains(&e.line) => break,
+                Some(e) => at = push(&mut errors, e),
             }
         }
         Err(SceneError::all(errors).expect("one error at least"))

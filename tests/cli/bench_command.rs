@@ -1,14 +1,14 @@
-//! Source of truth: speed target 5 (benches/RESULTS.md, "`courant bench` and the lumped step
-//! (targets 1, 4, 5)": a `courant bench` command that times the C reference,
-//! courant's kernel and its run loop side by side and writes the ratios) and the README's
-//! "Speed" section, which tells a user to run it.
+//! Source of truth: the speed measurements of benches/RESULTS.md ("2026-11-27, AMD: `courant
+//! bench`, blocked steps on one and two threads, memory": a `courant bench` command that times the C reference,
+//! courant's kernel and its run loop side by side and writes the ratios) and the guide's
+//! benchmarks chapter (docs/guide/benchmarks.md), which tells a user to run it.
 //!
 //! ```text
 //!   courant bench --sizes 200,1000 --out FILE  ->  stdout table + FILE (CSV, one row per N)
 //! ```
 //!
 //! Proves the command's shape, never a time (no timed tests): it writes one CSV row per size
-//! with the columns the README names, every measured time positive and every ratio the quotient
+//! with the columns the guide names, every measured time positive and every ratio the quotient
 //! of its two columns (to the 4 significant digits written); without the C reference the C
 //! columns stay empty; bad options are refused with exit status 2, naming the option; a file
 //! `courant bench` did not write is never replaced.

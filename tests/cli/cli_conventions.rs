@@ -107,7 +107,15 @@ fn check_prints_a_line_per_scene_and_repeats_failures_with_their_excess() {
     );
     let tail = &stdout[stdout.find("failures:").expect("failures repeated")..];
     assert!(tail.contains("strict: FAIL     co1 linf"), "{tail}");
-    assert!(tail.contains("8.9706e-14 is above the max 1e-30"), "{tail}");
+    assert!(
+        tail.contains("co1 linf = 8.9706e-14 > 1e-30"),
+        "a failure reads as one: {tail}"
+    );
+    assert!(
+        tail.contains("8.9706e-14 > 1e-30: 9e16 x the bound"),
+        "{tail}"
+    );
+    assert!(!tail.contains(" %"), "no percentage of 1e16: {tail}");
     assert!(stdout.lines().count() < 12, "short by default: {stdout}");
     std::fs::remove_dir_all(&dir).unwrap();
 }

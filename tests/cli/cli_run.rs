@@ -1,4 +1,4 @@
-//! Source of truth: the command-line contract in the README ("Running scenes"): `courant list`
+//! Source of truth: the command-line contract in docs/guide/running.md: `courant list`
 //! names every built-in scene; `courant run` writes `<case>.csv` profiles with the columns
 //! `t, element, x, stress, reference, error`, histories, energy logs and a `summary.csv` with cost and
 //! error per case; exit status 0 when every expectation holds, 1 when one fails.

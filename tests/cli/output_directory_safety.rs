@@ -1,6 +1,6 @@
-//! Source of truth: the README's promises "no data loss" and "nothing written on bad input"
-//! (section "Output directories") and `courant::io::manifest`; a fuzz of the scene files found that
-//! `courant report --out DIR` deleted a user's files in DIR.
+//! Source of truth: the guide's promises "no data loss" and "nothing written on bad input"
+//! (docs/guide/running.md, "Output directories") and `courant::io::manifest`; a round of misuse
+//! found that `courant report --out DIR` deleted a user's files in DIR.
 //!
 //! ```text
 //!   DIR absent or empty ─────────────> written
@@ -19,7 +19,8 @@ use courant::io::manifest::MANIFEST;
 use std::path::Path;
 use std::process::Command;
 
-use crate::cli;
+#[path = "common/cli.rs"]
+mod cli;
 use cli::scratch;
 
 fn courant(args: &[&str]) -> (Option<i32>, String) {

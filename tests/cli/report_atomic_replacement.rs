@@ -1,4 +1,4 @@
-//! Source of truth: the README's contract for `courant report` and `courant run` ("output
+//! Source of truth: the guide's contract (docs/guide/running.md, docs/guide/report.md) for `courant report` and `courant run` ("output
 //! directories are written whole or not at all (staged, then renamed into place)") and the
 //! recovery rules documented in `courant::io::atomic`.
 //!

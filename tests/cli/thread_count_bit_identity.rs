@@ -1,6 +1,6 @@
 //! Source of truth: the project's determinism rule ("the same scene gives bit-identical output
 //! whatever the thread count") and the speed target that a case of N >= 1e5 uses both cores
-//! (benches/RESULTS.md, "Target 4: both cores, temporal blocking").
+//! (benches/RESULTS.md, "2026-11-25, Intel: blocks of steps (temporal blocking) and both cores").
 //!
 //! ```text
 //!   COURANT_THREADS=1  courant run bar.toml --out A ┐

@@ -1,4 +1,4 @@
-//! Source of truth: the README's "Limits" (files courant reads, the magnitude limit, the
+//! Source of truth: the guide's "Limits" (docs/guide/running.md) (files courant reads, the magnitude limit, the
 //! reference work a file may ask for) and its promise of no NaN or infinity in any table; the
 //! reproducers in `tests/data/score_and_io/` (`INDEX.txt`) are the seeds.
 //!

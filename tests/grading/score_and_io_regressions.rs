@@ -1,6 +1,6 @@
 //! Source of truth: the reproducers of a hostile-user round on `courant score`, `reference`,
 //! `check --baseline`, `--junit`, `bench --out` and stdout, copied in
-//! `tests/data/score_and_io/` with their `INDEX.txt`, and the README's "Limits" and "Exit
+//! `tests/data/score_and_io/` with their `INDEX.txt`, and the guide's "Limits" (docs/guide/running.md) and "Exit
 //! status".
 //!
 //! Proves, one test per INDEX line: each reproducer now gives what its line says it should (no
@@ -423,13 +423,16 @@ fn fuzz_m224_fig1_masses_no_profile_times_points_at_the_output_header() {
     );
 }
 
-/// The README's statement of what the node-step cap means in time for the slowest scheme.
+/// The guide's statement (docs/guide/running.md, "Limits") of what the node-step cap means in
+/// time for the slowest scheme.
 fn readme_states_the_cap_for_the_slowest_scheme() {
-    let readme =
-        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    let guide = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/guide/running.md"),
+    )
+    .unwrap();
     assert!(
-        readme.contains("up to about 12 minutes for the slowest measured, Noh-Bathe"),
-        "README's Limits no longer state the cap's time for Noh-Bathe"
+        guide.contains("up to about 12 minutes for the slowest measured, Noh-Bathe"),
+        "the guide's Limits no longer state the cap's time for Noh-Bathe"
     );
     // ~7 ns per node-step (measured on the m4757 reproducer: 5.7e10 node-steps in ~7 min).
     let minutes = courant::scene::budget::MAX_NODE_STEPS * 7e-9 / 60.0;
@@ -440,7 +443,7 @@ fn readme_states_the_cap_for_the_slowest_scheme() {
 }
 
 /// A reproducer that is slow within the caps: accepted in under a second, within the node-step
-/// cap, and its time covered by the README's statement of the cap.
+/// cap, and its time covered by the guide's statement of the cap.
 fn slow_within_caps(file: &str) {
     let text = std::fs::read_to_string(data(file)).unwrap();
     let started = Instant::now();

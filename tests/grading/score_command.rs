@@ -1,4 +1,5 @@
-//! Source of truth: the README's "Results exchange format" and "Grading another code" contract:
+//! Source of truth: docs/guide/grading.md ("Results exchange format", "Grading another code")
+//! and the README's grading example:
 //! `courant run --exchange DIR` writes the format, `courant score <scene> --results DIR...
 //! [--out DIR] [--junit FILE]` grades it, prints one row per check as `courant check` does and
 //! exits 0 when every check holds, 1 when one fails, 2 on bad input naming file, line, column
@@ -317,12 +318,12 @@ fn the_readme_example_scores_as_documented() {
     let readme =
         std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
     let block = |file: &str| -> String {
-        let start = format!("cat > myresults/fig1/{file} <<'END'\n");
+        let start = format!(" file=myresults/fig1/{file}\n");
         let at = readme
             .find(&start)
             .unwrap_or_else(|| panic!("README has no {file}"))
             + start.len();
-        let end = readme[at..].find("\nEND\n").unwrap();
+        let end = readme[at..].find("\n```\n").unwrap();
         format!("{}\n", &readme[at..at + end])
     };
     let dir = scratch("cli-readme").join("myresults/fig1");

@@ -1,4 +1,4 @@
-//! Source of truth: the norms of `courant run` (README, "Running scenes"; `compare::norms`) and
+//! Source of truth: the norms of `courant run` (docs/guide/running.md; `compare::norms`) and
 //! the references of `courant-references` (d'Alembert, the graded and layered bars, 1D wave
 //! theory of impact, closed-form discrete spectra).
 //!

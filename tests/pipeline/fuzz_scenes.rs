@@ -1,5 +1,5 @@
-//! Source of truth: the README's promises on bad input ("Exit status", "Limits", "Output
-//! directories") and a mutation fuzz of the scene files found hangs, lost files,
+//! Source of truth: the guide's promises on bad input (docs/guide/running.md: "Exit status",
+//! "Limits", "Output directories"); a mutation fuzz of the scene files found hangs, lost files,
 //! aborts and NaN tables; this harness keeps them away.
 //!
 //! ```text
@@ -19,13 +19,14 @@
 //! whose estimated work is large (validated only: they are within the limits but would run for
 //! long) are counted, not run.
 //!
-//! Soak (documented in the README): `COURANT_FUZZ_CASES=1000000 COURANT_FUZZ_SECONDS=600
+//! Soak (documented in docs/guide/tests.md): `COURANT_FUZZ_CASES=1000000 COURANT_FUZZ_SECONDS=600
 //! COURANT_FUZZ_SEED=<any> cargo test --release --test fuzz_scenes -- --nocapture` runs for ten
 //! minutes and prints how many mutants it checked; `COURANT_FUZZ_LOG=FILE` appends the first
 //! line of every refusal to FILE, `COURANT_FUZZ_SLOWEST=FILE` writes the mutant that took
 //! longest to validate.
 
-use crate::mutate;
+#[path = "common/mutate.rs"]
+mod mutate;
 
 use courant::scene::Scene;
 use courant::scene::builtin::BUILTIN_SCENES;
@@ -56,63 +57,63 @@ const RUN_LIMIT: Duration = Duration::from_secs(120);
 const REPRODUCERS: &[(&str, &str)] = &[
     (
         "accepted_expect_min_nan",
-        include_str!("../data/robustness/accepted_expect_min_nan.toml"),
+        include_str!("data/robustness/accepted_expect_min_nan.toml"),
     ),
     (
         "at1-1_comment_as_key_no_scene",
-        include_str!("../data/robustness/at1-1_comment_as_key_no_scene.toml"),
+        include_str!("data/robustness/at1-1_comment_as_key_no_scene.toml"),
     ),
     (
         "hang_contact_bar_area_1e300",
-        include_str!("../data/robustness/hang_contact_bar_area_1e300.toml"),
+        include_str!("data/robustness/hang_contact_bar_area_1e300.toml"),
     ),
     (
         "hang_two_bars_beta_s_1e300",
-        include_str!("../data/robustness/hang_two_bars_beta_s_1e300.toml"),
+        include_str!("data/robustness/hang_two_bars_beta_s_1e300.toml"),
     ),
     (
         "nan_outputs_elements_1",
-        include_str!("../data/robustness/nan_outputs_elements_1.toml"),
+        include_str!("data/robustness/nan_outputs_elements_1.toml"),
     ),
     (
         "not_refused_contact_striker_1e7",
-        include_str!("../data/robustness/not_refused_contact_striker_1e7.toml"),
+        include_str!("data/robustness/not_refused_contact_striker_1e7.toml"),
     ),
     (
         "oom_history_energy_every_1",
-        include_str!("../data/robustness/oom_history_energy_every_1.toml"),
+        include_str!("data/robustness/oom_history_energy_every_1.toml"),
     ),
     (
         "timeout_dispersion_n1e5",
-        include_str!("../data/robustness/timeout_dispersion_n1e5.toml"),
+        include_str!("data/robustness/timeout_dispersion_n1e5.toml"),
     ),
     (
         "timeout_graded_reference_modulus_16_to_1e12",
-        include_str!("../data/robustness/timeout_graded_reference_modulus_16_to_1e12.toml"),
+        include_str!("data/robustness/timeout_graded_reference_modulus_16_to_1e12.toml"),
     ),
     (
         "timeout_graded_reference_modulus_1e11_to_1",
-        include_str!("../data/robustness/timeout_graded_reference_modulus_1e11_to_1.toml"),
+        include_str!("data/robustness/timeout_graded_reference_modulus_1e11_to_1.toml"),
     ),
     (
         "timeout_within_caps_courant_sweep_n1e5",
-        include_str!("../data/robustness/timeout_within_caps_courant_sweep_n1e5.toml"),
+        include_str!("data/robustness/timeout_within_caps_courant_sweep_n1e5.toml"),
     ),
     (
         "weak_beta_s_inf_fig3",
-        include_str!("../data/robustness/weak_beta_s_inf_fig3.toml"),
+        include_str!("data/robustness/weak_beta_s_inf_fig3.toml"),
     ),
     (
         "weak_cmm_not_positive_definite_density_5e-324",
-        include_str!("../data/robustness/weak_cmm_not_positive_definite_density_5e-324.toml"),
+        include_str!("data/robustness/weak_cmm_not_positive_definite_density_5e-324.toml"),
     ),
     (
         "weak_filename_too_long_beta_s_1e-300",
-        include_str!("../data/robustness/weak_filename_too_long_beta_s_1e-300.toml"),
+        include_str!("data/robustness/weak_filename_too_long_beta_s_1e-300.toml"),
     ),
     (
         "weak_filename_too_long_beta_s_1e300",
-        include_str!("../data/robustness/weak_filename_too_long_beta_s_1e300.toml"),
+        include_str!("data/robustness/weak_filename_too_long_beta_s_1e300.toml"),
     ),
 ];
 

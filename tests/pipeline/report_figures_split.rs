@@ -1,5 +1,5 @@
 //! Source of truth: the report contract "no case is left out of a figure without its caption
-//! saying so; every plot is a well-formed SVG" (README, `courant report`), and the closed-form
+//! saying so; every plot is a well-formed SVG" (docs/guide/report.md), and the closed-form
 //! critical Courant numbers of contact with a rigid wall of `courant-references` (methods.md §7)
 //! for the seed's Fig. 3 graph.
 //!

@@ -1,4 +1,4 @@
-//! Source of truth: the report contract of the README ("courant report"): every scene's tables
+//! Source of truth: the report contract of docs/guide/report.md: every scene's tables
 //! and verdicts and the convergence studies in `index.md`, every table also as CSV, every figure
 //! as SVG, a self-contained `index.html`, timings only in `timing.md`/`timing.csv`, written whole
 //! or not at all; the closed-form contact critical Courant numbers of `courant-references`.

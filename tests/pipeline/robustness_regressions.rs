@@ -1,5 +1,5 @@
-//! Source of truth: the reproducers of a 3,738-mutant fuzz of the scene files and a round of misuse)
-//! and the README's promises on bad input ("Exit status", "Limits"); the reproducers are copied
+//! Source of truth: a 3,738-mutant fuzz of the scene files and a round of misuse, and the
+//! guide's promises on bad input (docs/guide/running.md, "Exit status", "Limits"); the reproducers are copied
 //! in `tests/data/robustness/` with their `INDEX.txt`.
 //!
 //! Proves, one test per reproducer: what hung in validation (a Sturm bisection on beta_s = 1e300
@@ -17,7 +17,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use crate::cli;
+#[path = "common/cli.rs"]
+mod cli;
 use cli::scratch;
 
 /// Status 2 comes within this, whatever the input (validation only).
@@ -257,7 +258,7 @@ fn nan_outputs_elements_1_runs_with_no_nan_in_any_table() {
             );
         }
     }
-    // The TV ratio of a one-element profile is undefined: an empty cell, explained in the README.
+    // The TV ratio of a one-element profile is undefined: an empty cell, explained in docs/guide/running.md.
     let summary = std::fs::read_to_string(scene.join("summary.csv")).unwrap();
     let header: Vec<&str> = summary.lines().next().unwrap().split(',').collect();
     let tv = header.iter().position(|c| *c == "tv_ratio").unwrap();

@@ -1,4 +1,4 @@
-//! Source of truth: courant's scene rules (README, "Scene files"): unknown keys, wrong types and
+//! Source of truth: courant's scene rules (docs/guide/scenes.md): unknown keys, wrong types and
 //! values that break a physical or numerical rule are refused before anything runs.
 //!
 //! Proves: every class of bad input gives an error naming the file, the line, the key and the
@@ -218,8 +218,8 @@ fn the_minimal_scene_is_valid_and_uses_the_documented_defaults() {
 #[case::unknown_metric(
     "kind = \"dalembert\"",
     "kind = \"dalembert\"\n\n[[expect]]\nmetric = \"l3\"\nmax = 1.0\nsource = \"x\"",
-    25,
-    "expect",
+    26,
+    "expect.metric",
     "is not one of"
 )]
 #[case::bound_min_above_max(
@@ -293,7 +293,7 @@ fn with_elements(elements: u64) -> String {
         .replace("profile_times = [0.5]", "profile_times = [0.001]")
 }
 
-/// Source of truth: `scene::limits` (README, "Large runs"). Proves: a bar beyond the default
+/// Source of truth: `scene::limits` (docs/guide/running.md, "Large runs"). Proves: a bar beyond the default
 /// 5e5 elements is refused naming the key, the value, the rule and the opt-in; with the opt-in
 /// (`Limits::LARGE`) it validates; beyond the large bound (the solver's 1e7 mesh cap) it is
 /// refused again, with no opt-in left to suggest.

@@ -1,4 +1,4 @@
-//! Source of truth: the scene rules of the README ("Scene files": a scheme parameter given as a
+//! Source of truth: the scene rules of docs/guide/scenes.md ( a scheme parameter given as a
 //! list is a sweep, one case per value) and methods.md §6 (Park's theta = 0 is central
 //! difference).
 //!

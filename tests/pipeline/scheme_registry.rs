@@ -1,5 +1,5 @@
 //! Source of truth: the scheme registry of `courant_solver::schemes::REGISTRY` and the scene
-//! rules of the README ("Scene files": schemes by their registry names, scheme parameters as the
+//! rules of docs/guide/scenes.md ( schemes by their registry names, scheme parameters as the
 //! keys each scheme declares, unknown keys refused naming line and key).
 //!
 //! ```text

@@ -387,7 +387,7 @@ fn check_magnitudes(
                 file.column(column),
                 column,
                 format!(
-                    "{v:e} is beyond the magnitude limit {MAGNITUDE_MAX:e} of every value courant grades (README \"Limits\"); \
+                    "{v:e} is beyond the magnitude limit {MAGNITUDE_MAX:e} of every value courant grades (docs/guide/running.md, \"Limits\"); \
                      a result this large has diverged"
                 ),
             ));

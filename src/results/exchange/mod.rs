@@ -8,7 +8,7 @@
 //!   courant reference ┘
 //! ```
 //!
-//! **Format 2** (the README's "Results exchange format" has a complete example; format 2 adds
+//! **Format 2** (docs/guide/grading.md has a complete example; format 2 adds
 //! `parameters` to `results.toml`'s case tables, and a format-1 set reads as before):
 //!
 //! - a directory per scene; one CSV file per case, `<case>.csv`, the stem naming a case of the

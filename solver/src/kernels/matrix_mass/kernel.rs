@@ -29,7 +29,8 @@
 //! (2 words and the halo's share, 7 % for CMM) and keep the group's residual and solve in cache
 //! (about 9.3 words; `a` not stored either); with the global factor they also copy the residual
 //! out, run the factor's two sweeps over it and a separate velocity pass (about 18 words).
-//! Measured ratios to the lumped step: benches/RESULTS.md, target 3.
+//! Measured ratios to the lumped step: benches/RESULTS.md, "2026-11-28, AMD: matrix-mass steps
+//! against the lumped step".
 
 use crate::kernels::energy::StepEnergy;
 #[cfg(test)]

@@ -71,7 +71,7 @@ pub(crate) const MAX_TILE: usize = 1024;
 /// The shortest tile: a matrix shorter than [`WINDOWS_PER_GROUP`] of them keeps the global
 /// factor (as fast there): 4096 rows shared by the windows of one group, rounded up to a
 /// multiple of [`crate::simd::LANES`] (windows pay from 4096 rows; benches/RESULTS.md, heading
-/// "... shared window factors, constant RMM blocks, the critical step").
+/// "2026-11-27, AMD: shared window factors, constant RMM blocks, the critical step").
 const MIN_TILE: usize = 4096usize
     .div_ceil(WINDOWS_PER_GROUP)
     .next_multiple_of(crate::simd::LANES);
