@@ -19,8 +19,7 @@ use courant::io::manifest::MANIFEST;
 use std::path::Path;
 use std::process::Command;
 
-#[path = "common/cli.rs"]
-mod cli;
+use crate::cli;
 use cli::scratch;
 
 fn courant(args: &[&str]) -> (Option<i32>, String) {

@@ -25,8 +25,7 @@
 //! line of every refusal to FILE, `COURANT_FUZZ_SLOWEST=FILE` writes the mutant that took
 //! longest to validate.
 
-#[path = "common/mutate.rs"]
-mod mutate;
+use crate::mutate;
 
 use courant::scene::Scene;
 use courant::scene::builtin::BUILTIN_SCENES;
@@ -57,63 +56,63 @@ const RUN_LIMIT: Duration = Duration::from_secs(120);
 const REPRODUCERS: &[(&str, &str)] = &[
     (
         "accepted_expect_min_nan",
-        include_str!("data/robustness/accepted_expect_min_nan.toml"),
+        include_str!("../data/robustness/accepted_expect_min_nan.toml"),
     ),
     (
         "at1-1_comment_as_key_no_scene",
-        include_str!("data/robustness/at1-1_comment_as_key_no_scene.toml"),
+        include_str!("../data/robustness/at1-1_comment_as_key_no_scene.toml"),
     ),
     (
         "hang_contact_bar_area_1e300",
-        include_str!("data/robustness/hang_contact_bar_area_1e300.toml"),
+        include_str!("../data/robustness/hang_contact_bar_area_1e300.toml"),
     ),
     (
         "hang_two_bars_beta_s_1e300",
-        include_str!("data/robustness/hang_two_bars_beta_s_1e300.toml"),
+        include_str!("../data/robustness/hang_two_bars_beta_s_1e300.toml"),
     ),
     (
         "nan_outputs_elements_1",
-        include_str!("data/robustness/nan_outputs_elements_1.toml"),
+        include_str!("../data/robustness/nan_outputs_elements_1.toml"),
     ),
     (
         "not_refused_contact_striker_1e7",
-        include_str!("data/robustness/not_refused_contact_striker_1e7.toml"),
+        include_str!("../data/robustness/not_refused_contact_striker_1e7.toml"),
     ),
     (
         "oom_history_energy_every_1",
-        include_str!("data/robustness/oom_history_energy_every_1.toml"),
+        include_str!("../data/robustness/oom_history_energy_every_1.toml"),
     ),
     (
         "timeout_dispersion_n1e5",
-        include_str!("data/robustness/timeout_dispersion_n1e5.toml"),
+        include_str!("../data/robustness/timeout_dispersion_n1e5.toml"),
     ),
     (
         "timeout_graded_reference_modulus_16_to_1e12",
-        include_str!("data/robustness/timeout_graded_reference_modulus_16_to_1e12.toml"),
+        include_str!("../data/robustness/timeout_graded_reference_modulus_16_to_1e12.toml"),
     ),
     (
         "timeout_graded_reference_modulus_1e11_to_1",
-        include_str!("data/robustness/timeout_graded_reference_modulus_1e11_to_1.toml"),
+        include_str!("../data/robustness/timeout_graded_reference_modulus_1e11_to_1.toml"),
     ),
     (
         "timeout_within_caps_courant_sweep_n1e5",
-        include_str!("data/robustness/timeout_within_caps_courant_sweep_n1e5.toml"),
+        include_str!("../data/robustness/timeout_within_caps_courant_sweep_n1e5.toml"),
     ),
     (
         "weak_beta_s_inf_fig3",
-        include_str!("data/robustness/weak_beta_s_inf_fig3.toml"),
+        include_str!("../data/robustness/weak_beta_s_inf_fig3.toml"),
     ),
     (
         "weak_cmm_not_positive_definite_density_5e-324",
-        include_str!("data/robustness/weak_cmm_not_positive_definite_density_5e-324.toml"),
+        include_str!("../data/robustness/weak_cmm_not_positive_definite_density_5e-324.toml"),
     ),
     (
         "weak_filename_too_long_beta_s_1e-300",
-        include_str!("data/robustness/weak_filename_too_long_beta_s_1e-300.toml"),
+        include_str!("../data/robustness/weak_filename_too_long_beta_s_1e-300.toml"),
     ),
     (
         "weak_filename_too_long_beta_s_1e300",
-        include_str!("data/robustness/weak_filename_too_long_beta_s_1e300.toml"),
+        include_str!("../data/robustness/weak_filename_too_long_beta_s_1e300.toml"),
     ),
 ];
 

@@ -17,8 +17,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-#[path = "common/cli.rs"]
-mod cli;
+use crate::cli;
 use cli::scratch;
 
 /// Status 2 comes within this, whatever the input (validation only).
