@@ -162,6 +162,10 @@ enum Command {
         /// Skip the C reference.
         #[arg(long)]
         no_c: bool,
+        /// Skip the other schemes' runs (every scheme and mass beside lumped CD, written to
+        /// FILE's sibling `<stem>.schemes.csv`).
+        #[arg(long)]
+        no_schemes: bool,
     },
 }
 
@@ -240,12 +244,14 @@ fn main() -> ExitCode {
             reps,
             out,
             no_c,
+            no_schemes,
         } => courant::cli::bench::bench(&courant::cli::bench::BenchOptions {
             sizes,
             node_steps,
             reps,
             out,
             skip_c: no_c,
+            skip_schemes: no_schemes,
         }),
     };
     // A failed write to the terminal turns the status into 2, with one line on stderr.

@@ -11,9 +11,10 @@
 //! non-diagonal mass (CMM, AMM: partitioned tridiagonal solve, and windows on a long bar; RMM:
 //! product with M^-1; with a node's acceleration and T* recomputed from the mass), of
 //! Park's scheme (global and local stepping,
-//! both variants), and of the Noh-Bathe stepper with every mass (stepped through the public
-//! `Integrator` interface, as the shared time loop steps it) performs exactly zero heap
-//! allocations, counted by a global allocator wrapper.
+//! both variants), and of the Noh-Bathe stepper with every mass (the lumped one in its one-sweep
+//! step over chunks of the bar, several chunks here; stepped through the public `Integrator`
+//! interface, as the shared time loop steps it) performs exactly zero heap allocations, counted
+//! by a global allocator wrapper.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};

@@ -31,6 +31,7 @@
 //! Timings are medians of wall time on a possibly shared machine: repeat when in doubt. Nothing
 //! here is a test; no test asserts a time.
 
+use super::bench_schemes::{SchemesTable, check_schemes_file};
 use crate::io::owned_file::{Owner, check_file_replaceable, write_owned_file};
 use crate::results::table::{Precision, Table};
 use crate::run::threads;
@@ -89,6 +90,8 @@ pub struct BenchOptions {
     pub out: PathBuf,
     /// Skip the C reference.
     pub skip_c: bool,
+    /// Skip the other schemes' runs (the second table, [`super::bench_schemes`]).
+    pub skip_schemes: bool,
 }
 
 impl Default for BenchOptions {
@@ -99,6 +102,7 @@ impl Default for BenchOptions {
             reps: 9,
             out: PathBuf::from("bench.csv"),
             skip_c: false,
+            skip_schemes: false,
         }
     }
 }
@@ -132,6 +136,7 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
         Err(e) => outln!("C:          not measured: {e}"),
     }
     let mut table = Table::new(&COLUMNS);
+    let mut schemes = SchemesTable::new();
     for &n in &options.sizes {
         let measured = graded_seed_bar(n)
             .map_err(|e| e.to_string())
@@ -146,8 +151,19 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
                 for (time, mode) in kernel.iter_mut().zip(modes) {
                     *time = time_kernel(&model, options, mode)?;
                 }
-                let one = time_run_loop(&model, options, Some(1))?;
-                let all = time_run_loop(&model, options, threads::setting())?;
+                let steps = block_steps_for(n, options);
+                let one = time_run_loop(
+                    &model,
+                    options,
+                    &run_loop_integration(&model, Some(1)),
+                    steps,
+                )?;
+                let all = time_run_loop(
+                    &model,
+                    options,
+                    &run_loop_integration(&model, threads::setting()),
+                    steps,
+                )?;
                 Ok((model, kernel, one, all))
             });
         let (model, [kernel, energy, blocked, blocked_energy], loop_one, run_loop) = match measured
@@ -163,6 +179,16 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
             .ok()
             .and_then(|c| c.rows.iter().find(|r| r.0 == n));
         let ratio = |x: f64| c_row.map(|r| x / r.2);
+        if !options.skip_schemes {
+            let steps = steps_for(n, options);
+            let timed = schemes.measure(&model, loop_one, c_row.map(|r| r.2), |integration| {
+                time_run_loop(&model, options, integration, steps)
+            });
+            if let Err(e) = timed {
+                errln!("error: N = {n}: {e}");
+                return ExitCode::from(2);
+            }
+        }
         table.push(vec![
             n.into(),
             run_loop_integration(&model, threads::setting())
@@ -195,6 +221,15 @@ pub fn bench(options: &BenchOptions) -> ExitCode {
         return ExitCode::from(2);
     }
     outln!("-> {}", options.out.display());
+    if !options.skip_schemes {
+        match schemes.finish(&options.out) {
+            Ok(path) => outln!("-> {}", path.display()),
+            Err(e) => {
+                errln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    }
     ExitCode::SUCCESS
 }
 
@@ -225,6 +260,9 @@ fn check(options: &BenchOptions) -> Result<(), String> {
     // Only a new file or one `courant bench` wrote (its header line) is replaced: never a
     // user's file, a FIFO (which would block) or a device.
     check_file_replaceable(&options.out, BENCH_CSV).map_err(|e| format!("--out {e}"))?;
+    if !options.skip_schemes {
+        check_schemes_file(&options.out)?;
+    }
     Ok(())
 }
 
@@ -316,16 +354,15 @@ fn run_loop_integration(model: &Model, threads: Option<usize>) -> Integration {
     }
 }
 
-/// ns per node-step of the run loop: runs of `2 S` and `S` steps, their difference per
-/// node-step, median over the repetitions.
+/// ns per node-step of the run loop of `integration`: runs of `2 S` and `S` steps (`S =
+/// steps`), their difference per node-step, median over the repetitions.
 fn time_run_loop(
     model: &Model,
     options: &BenchOptions,
-    threads: Option<usize>,
+    integration: &Integration,
+    steps: usize,
 ) -> Result<f64, String> {
     let n = model.bar().element_count();
-    let steps = block_steps_for(n, options);
-    let integration = run_loop_integration(model, threads);
     let run = |steps: usize| -> Result<f64, String> {
         let request = OutputRequest {
             energy_every: steps,

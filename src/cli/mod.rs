@@ -19,6 +19,7 @@ macro_rules! errln {
 }
 
 pub mod bench;
+mod bench_schemes;
 pub mod check;
 pub mod console;
 pub mod reference;

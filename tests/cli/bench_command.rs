@@ -86,6 +86,84 @@ fn bench_writes_one_row_per_size_with_consistent_ratios() {
     }
 }
 
+/// The second table (every scheme and mass beside lumped CD, `<stem>.schemes.csv`): one row per
+/// (size, scheme, mass), each time positive, each ratio to the lumped run of the first table
+/// the quotient of the written columns; `--no-schemes` leaves it out.
+#[test]
+fn bench_times_every_scheme_and_mass_beside_lumped_cd() {
+    let dir = scratch("schemes");
+    let out = dir.join("bench.csv");
+    let run = bench(
+        &out,
+        &["--sizes", "200", "--node-steps", "2e4", "--reps", "1"],
+    );
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let lumped: f64 = std::fs::read_to_string(&out)
+        .unwrap()
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .nth(9)
+        .unwrap()
+        .parse()
+        .unwrap();
+    let text = std::fs::read_to_string(dir.join("bench.schemes.csv")).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "N,scheme,mass,threads,loop_ns,over_lumped_cd,over_c"
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let runs: Vec<(&str, &str)> = rows.iter().map(|r| (r[1], r[2])).collect();
+    assert_eq!(
+        runs,
+        [
+            ("cd", "cmm"),
+            ("cd", "amm(0.5)"),
+            ("cd", "rmm(0.5)"),
+            ("noh-bathe", "lmm"),
+            ("noh-bathe", "cmm"),
+            ("noh-bathe", "amm(0.5)"),
+            ("noh-bathe", "rmm(0.5)"),
+            ("park-lts", "lmm"),
+            ("park-global", "lmm"),
+        ]
+    );
+    for row in &rows {
+        assert_eq!((row[0], row[3], row[6]), ("200", "1", ""), "{row:?}");
+        let (ns, ratio): (f64, f64) = (row[4].parse().unwrap(), row[5].parse().unwrap());
+        assert!(ns.is_finite(), "{row:?}");
+        assert!(
+            (ratio - ns / lumped).abs() <= 1.5e-3 * (ns / lumped).abs() + 1e-12,
+            "{row:?}"
+        );
+    }
+    let skipped = scratch("no_schemes").join("bench.csv");
+    let run = bench(
+        &skipped,
+        &[
+            "--sizes",
+            "200",
+            "--node-steps",
+            "1e3",
+            "--reps",
+            "1",
+            "--no-schemes",
+        ],
+    );
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(!skipped.with_extension("schemes.csv").exists());
+}
+
 #[test]
 fn bad_bench_options_are_refused_naming_the_option() {
     let out = scratch("bad").join("bench.csv");

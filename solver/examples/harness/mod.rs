@@ -1,5 +1,5 @@
-//! The timing harnesses' common arguments (`step_pair`, `run_timing`): `N STEPS MASS [FOURTH]`,
-//! each with the harness's own default.
+//! The timing harnesses' common arguments (`step_pair`, `run_timing`, `scheme_timing`):
+//! `N STEPS MASS [FOURTH]`, each with the harness's own default.
 
 use courant_solver::MassKind;
 

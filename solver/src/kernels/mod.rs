@@ -10,10 +10,12 @@
 //! Folders: `lumped/` (central difference with the lumped mass: the cache-blocked step, its
 //! AVX2 energy sweep, temporal blocking in tiles and the multi-threaded pipeline of blocks),
 //! `matrix_mass/` (central difference with CMM, AMM and RMM: the blocked passes, their AVX2
-//! sweeps, the placed state arrays), `park/` (Park's folded step). `energy` holds what every
+//! sweeps, the placed state arrays), `noh_bathe/` (the Noh-Bathe step with the lumped mass in one sweep), `park/` (Park's folded
+//! step). `energy` holds what every
 //! kernel reports.
 
 pub(crate) mod energy;
 pub(crate) mod lumped;
 pub(crate) mod matrix_mass;
+pub(crate) mod noh_bathe;
 pub(crate) mod park;

@@ -59,6 +59,7 @@ use crate::integrator::{
     SchemeEntry, SchemeLimit, Start, time_loop,
 };
 use crate::kernels::energy::StepEnergy;
+use crate::kernels::noh_bathe::{LumpedNohBathe, NohBatheArrays};
 use crate::mass::{MassKind, MassOperator};
 use crate::model::Model;
 use crate::output::RunOutput;
@@ -169,6 +170,9 @@ pub struct NohBatheStepper {
     /// `a0..a7` of the update (module docs): `h1, h1^2/2, h1/2, h2, h2^2/2, h2 w0, h2 w1, h2 w2`.
     c: [f64; 8],
     mass: MassOperator,
+    /// The one-sweep step of the lumped mass (`None` for the matrix masses, which step pass
+    /// by pass through the arrays below, empty for the lumped mass).
+    lumped: Option<LumpedNohBathe>,
     /// Element stiffnesses padded with a zero at both ends (length N + 2 for N + 1 nodes).
     stiffness: Vec<f64>,
     u: Vec<f64>,
@@ -222,6 +226,19 @@ impl Integrator for NohBatheStepper {
         let mut load_nodes: Vec<usize> = state.model.loads().iter().map(|l| l.node).collect();
         load_nodes.sort_unstable();
         load_nodes.dedup();
+        let c = [
+            h1,
+            0.5 * h1 * h1,
+            0.5 * h1,
+            h2,
+            0.5 * h2 * h2,
+            h2 * w0,
+            h2 * w1,
+            h2 * w2,
+        ];
+        let lumped = matches!(state.mass, MassOperator::Diagonal { .. });
+        // The pass-by-pass arrays, for the matrix masses only.
+        let scratch = |len: usize| if lumped { Vec::new() } else { vec![0.0; len] };
         let impulse: f64 = state
             .acceleration
             .iter()
@@ -231,26 +248,18 @@ impl Integrator for NohBatheStepper {
         Ok(Self {
             dt,
             h1,
-            c: [
-                h1,
-                0.5 * h1 * h1,
-                0.5 * h1,
-                h2,
-                0.5 * h2 * h2,
-                h2 * w0,
-                h2 * w1,
-                h2 * w2,
-            ],
+            c,
             mass: state.mass,
+            lumped: lumped.then(|| LumpedNohBathe::new(c)),
             stiffness,
             u: state.displacement.to_vec(),
             v: state.velocity.to_vec(),
             a: state.acceleration.to_vec(),
-            a_mid: vec![0.0; n],
-            a_next: vec![0.0; n],
-            residual: vec![0.0; n],
-            element_force: vec![0.0; n + 1],
-            scratch: vec![0.0; n],
+            a_mid: scratch(n),
+            a_next: scratch(n),
+            residual: scratch(n),
+            element_force: scratch(n + 1),
+            scratch: scratch(n),
             mid_forces: load_nodes.iter().map(|&i| (i, 0.0)).collect(),
             balance0: state.kinetic - 0.125 * h1 * h1 * impulse,
         })
@@ -269,6 +278,28 @@ impl Integrator for NohBatheStepper {
     }
 
     fn step(&mut self, model: &Model, t: f64, forces: &[(usize, f64)]) -> StepEnergy {
+        if let (Some(kernel), MassOperator::Diagonal { inverse, mass }) =
+            (&mut self.lumped, &self.mass)
+        {
+            for f in self.mid_forces.iter_mut() {
+                f.1 = model.external_force_at(f.0, t + self.h1);
+            }
+            let arrays = NohBatheArrays {
+                u: &mut self.u,
+                v: &mut self.v,
+                a: &mut self.a,
+                stiffness: &self.stiffness,
+                inverse_mass: inverse,
+                mass,
+            };
+            let sums = kernel.step(arrays, &self.mid_forces, forces);
+            let kinetic = 0.5 * sums.twice_kinetic;
+            return StepEnergy {
+                kinetic_staggered: kinetic - 0.125 * self.h1 * self.h1 * sums.impulse,
+                kinetic,
+                strain: 0.5 * sums.twice_strain,
+            };
+        }
         let [c0, c1, c2, c3, c4, c5, c6, c7] = self.c;
         // Sub-step 1: u <- u_p, a_p = M^-1 (F(t + p dt) - K u_p).
         for ((u, v), a) in self.u.iter_mut().zip(&self.v).zip(&self.a) {
@@ -336,4 +367,70 @@ fn dot(x: &[f64], y: &[f64], z: Option<&[f64]>) -> f64 {
         lanes[i % 4] += term;
     }
     (lanes[0] + lanes[1]) + (lanes[2] + lanes[3])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fixtures::{graded_seed_bar, smooth_half_velocity};
+    use crate::integrator::Start;
+
+    /// The one-sweep lumped step (`kernels::noh_bathe`) against the pass-by-pass step it
+    /// replaces (the step of the module docs, one array sweep per operation), on the graded seed
+    /// bar under a load at node 0 from a smooth moving start: the same bits in `u`, `v`, `a` and
+    /// every energy, step after step, on bars of one chunk and of several (with a partial last).
+    #[test]
+    fn the_one_sweep_lumped_step_gives_the_pass_by_pass_bits() {
+        for n in [7, 100, 1000, 1537] {
+            let model = graded_seed_bar(n).unwrap();
+            let dt = 0.5 * model.bar().stiffest_element().1;
+            let u0 = vec![0.0; n + 1];
+            let v0 = smooth_half_velocity(n);
+            let r0: Vec<f64> = (0..=n).map(|i| 1e-3 * (i as f64).sin()).collect();
+            let mass = MassOperator::new(&model, MassKind::Lumped).unwrap();
+            let mut a0 = vec![0.0; n + 1];
+            mass.apply_inverse(&r0, &mut a0);
+            let state = || InitialState {
+                model: &model,
+                dt,
+                displacement: &u0,
+                velocity: &v0,
+                acceleration: &a0,
+                residual: &r0,
+                kinetic: 0.0,
+                start: Start::HalfStep,
+                allow_unstable: false,
+                mass: mass.clone(),
+                threads: 1,
+            };
+            let mut fused = NohBatheStepper::start(&0.54, state()).unwrap();
+            let mut passes = NohBatheStepper::start(&0.54, state()).unwrap();
+            assert!(fused.lumped.is_some());
+            passes.lumped = None;
+            for array in [
+                &mut passes.a_mid,
+                &mut passes.a_next,
+                &mut passes.residual,
+                &mut passes.scratch,
+            ] {
+                *array = vec![0.0; n + 1];
+            }
+            passes.element_force = vec![0.0; n + 2];
+            let bits = |x: &[f64]| x.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            for step in 0..40 {
+                let t = step as f64 * dt;
+                let forces = [(0, -1.0 - 0.01 * step as f64)];
+                let (e1, e2) = (
+                    fused.step(&model, t, &forces),
+                    passes.step(&model, t, &forces),
+                );
+                let energies =
+                    |e: StepEnergy| [e.kinetic, e.kinetic_staggered, e.strain].map(f64::to_bits);
+                assert_eq!(energies(e1), energies(e2), "energies, n = {n}, step {step}");
+                assert_eq!(bits(&fused.u), bits(&passes.u), "u, n = {n}, step {step}");
+                assert_eq!(bits(&fused.v), bits(&passes.v), "v, n = {n}, step {step}");
+                assert_eq!(bits(&fused.a), bits(&passes.a), "a, n = {n}, step {step}");
+            }
+        }
+    }
 }
