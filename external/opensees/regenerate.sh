@@ -10,7 +10,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-venv="${OPENSEES_VENV:-$root/target/opensees-venv}"
+venv="${OPENSEES_VENV:-${CARGO_TARGET_DIR:-$root/target}/opensees-venv}"
 stamp="$venv/.requirements.sha256"
 want="$(sha256sum "$here/requirements.txt" | cut -d' ' -f1)"
 
@@ -34,6 +34,16 @@ find_python() {
   return 1
 }
 
+# --can-run: say whether this machine can regenerate (a built venv, or a Python >= 3.12), build
+# nothing, exit 0 or 1.
+if [ "${1:-}" = "--can-run" ]; then
+  if [ -x "$venv/bin/python" ] && [ "$(cat "$stamp" 2>/dev/null)" = "$want" ]; then
+    echo "OpenSees venv ready in $venv"; exit 0
+  fi
+  python="$(find_python 2>&1)" || { echo "$python"; exit 1; }
+  echo "$python ($("$python" --version 2>&1)) found: the venv can be built"; exit 0
+fi
+
 if [ ! -x "$venv/bin/python" ] || [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
   python="$(find_python)"
   echo "== building the OpenSees venv in $venv with $python ($("$python" --version 2>&1)), pinned requirements.txt"
@@ -44,4 +54,4 @@ if [ ! -x "$venv/bin/python" ] || [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; 
 fi
 # The driver takes each case's mesh, times and step from courant's exact answers.
 cargo build --release --quiet --manifest-path "$root/Cargo.toml"
-exec "$venv/bin/python" "$here/driver.py" --courant "$root/target/release/courant" "$@"
+exec "$venv/bin/python" "$here/driver.py" --courant "${CARGO_TARGET_DIR:-$root/target}/release/courant" "$@"
