@@ -3,7 +3,7 @@
 
 Runs each case of courant's ``fig1``, ``fig1_masses`` (LMM and CMM), ``fig1_schemes`` (central
 difference), ``fig2``, ``fig2_reversed`` and ``layered`` (central difference) scenes with
-OpenSees' own explicit integrators and writes courant's results exchange format 1 (README,
+OpenSees' own explicit integrators and writes courant's results exchange format 2 (README,
 "Results exchange format"), which ``courant score`` grades. See external/opensees/README.md.
 
 The model
@@ -40,9 +40,13 @@ Run
 ---
     bash external/opensees/regenerate.sh               # venv + pinned install + every set
     bash external/opensees/regenerate.sh --out /tmp/fresh --compare-with external/opensees/results
-    target/opensees-venv/bin/python external/opensees/driver.py --check
-        # OpenSees against an independent numpy central difference (half-step form, the same
-        # masses, the same corrected starts): the largest difference per case
+    bash external/opensees/regenerate.sh --out /tmp/x --check --repeat 1
+        # every run against an independent numpy central difference with that start's first
+        # impulse (as it comes and corrected), every fig6 spectrum against numpy's eigenvalues
+
+Cost: ``wall_s`` in results.toml is the median over ``--repeat`` runs (default 3) of the wall
+time of the ``analyze`` calls; ``steps`` the steps. With the default ``--out`` the driver also
+times courant on the same cases right after (``courant_times.csv``).
 
 Dependencies: numpy and openseespy only; the ``courant`` binary for the geometry
 (``--courant PATH``, default ``cargo run --release --``).
@@ -570,7 +574,7 @@ def main():
         write_courant_times(times_file, courant_rows, args.repeat)
         print(f"courant's times: {times_file}")
     if args.check:
-        print(f'check: largest difference {worst:.2e} |sigma0|')
+        print(f'check: largest difference from the numpy models {worst:.2e}')
         if worst > 1e-9:
             sys.exit(1)
     if args.compare_with:

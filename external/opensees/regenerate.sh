@@ -3,7 +3,8 @@
 # (the committed ones). Arguments go to driver.py, e.g.
 #   bash external/opensees/regenerate.sh                                      # rewrite the committed results
 #   bash external/opensees/regenerate.sh --out /tmp/fresh --compare-with external/opensees/results
-# The venv is $OPENSEES_VENV (default target/opensees-venv, outside git), built from
+#   bash external/opensees/regenerate.sh --can-run                            # can this machine regenerate? (builds nothing)
+# The venv is $OPENSEES_VENV (default opensees-venv in $CARGO_TARGET_DIR or target/, outside git), built from
 # requirements.txt when missing or when requirements.txt changed (about 15 s: one 86 MB wheel).
 # OpenSeesPy 3.8 needs Python >= 3.12: $OPENSEES_PYTHON if set, else the first of python3.13,
 # python3.12, python3 on PATH and pyenv's 3.12+ versions that is at least 3.12.

@@ -3,7 +3,8 @@
 # external/sfepy/results/ (the committed ones). Arguments go to driver.py, e.g.
 #   bash external/sfepy/regenerate.sh                                   # rewrite the committed results
 #   bash external/sfepy/regenerate.sh --out /tmp/fresh --compare-with external/sfepy/results
-# The venv is $SFEPY_VENV (default target/sfepy-venv, outside git), built from requirements.txt
+#   bash external/sfepy/regenerate.sh --can-run                         # can this machine regenerate? (builds nothing)
+# The venv is $SFEPY_VENV (default sfepy-venv in $CARGO_TARGET_DIR or target/, outside git), built from requirements.txt
 # when missing or when requirements.txt changed (about 2 minutes: SfePy compiles from source).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
