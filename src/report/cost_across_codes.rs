@@ -61,6 +61,14 @@ struct Point {
     difference: Option<f64>,
 }
 
+/// A case of a scene: courant's steps and worst L1 error, and the other codes' points.
+struct CaseRow {
+    case: String,
+    steps: Option<usize>,
+    l1: Option<f64>,
+    points: Vec<Point>,
+}
+
 /// Every timed case of a committed set: `(case, steps, wall_s)` from its `results.toml`.
 fn timed_cases(
     set: &crate::results::exchange::committed::CommittedSet,
@@ -109,8 +117,8 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
             .first()
             .and_then(|c| c.reference.as_ref())
             .map_or(1.0, |r| r.stress_scale());
-        // (case, courant's steps and L1, the other codes' points), in the scene's case order.
-        let mut rows: Vec<(String, Option<usize>, Option<f64>, Vec<Point>)> = Vec::new();
+        // In the scene's case order.
+        let mut rows: Vec<CaseRow> = Vec::new();
         for (set, _, scored) in others.iter().filter(|(_, i, _)| *i == index) {
             for (case, steps, wall) in timed_cases(set) {
                 let Some(own_wall) = courant_wall(set.code, &scene.name, &case) else {
@@ -127,14 +135,14 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
                         .zip(own)
                         .and_then(|(f, o)| difference_from_courant(f, o, scale)),
                 };
-                match rows.iter_mut().find(|r| r.0 == case) {
-                    Some(row) => row.3.push(point),
-                    None => rows.push((
-                        case.clone(),
-                        own.map(|r| r.run.steps),
-                        own.and_then(|r| r.worst_norms()).map(|n| n.l1),
-                        vec![point],
-                    )),
+                match rows.iter_mut().find(|r| r.case == case) {
+                    Some(row) => row.points.push(point),
+                    None => rows.push(CaseRow {
+                        steps: own.map(|r| r.run.steps),
+                        l1: own.and_then(|r| r.worst_norms()).map(|n| n.l1),
+                        case,
+                        points: vec![point],
+                    }),
                 }
             }
         }
@@ -142,7 +150,7 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
             continue;
         }
         let order = |case: &str| scene.cases.iter().position(|c| c.name == case);
-        rows.sort_by_key(|r| order(&r.0));
+        rows.sort_by_key(|r| order(&r.case));
         let mut table = Table::new(&[
             "case",
             "code",
@@ -152,7 +160,13 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
             "time_over_courant",
         ]);
         let mut series: Vec<(String, Vec<(f64, f64)>)> = vec![("courant".into(), Vec::new())];
-        for (case, steps, l1, points) in &rows {
+        for CaseRow {
+            case,
+            steps,
+            l1,
+            points,
+        } in &rows
+        {
             table.push(vec![
                 case.as_str().into(),
                 "courant".into(),
@@ -228,7 +242,7 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
         .filter_map(|(code, rows)| {
             rows.first().map(|r| {
                 format!(
-                    "{code}'s driver measured courant on {} ({}, median of {} runs)",
+                    "the {code} driver measured courant on {} ({}, median of {} runs)",
                     r.measured, r.cpu, r.repeat
                 )
             })
@@ -265,12 +279,13 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
         ));
     }
     page.push(Block::Paragraph(format!(
-        "The trade: on these bars every code that runs courant's scheme on courant's mesh and step \
-         gets courant's error to round-off, so time is all that differs, and a code buys no accuracy \
-         with it; the error moves only with the scheme, the mass and the Courant number, the same way \
-         in every code (Co = 1 exact with lumped mass, the dispersive cases at the same error). {}. \
-         Where codes differ in error at equal cost it is the start (OpenSees as it comes), not the \
-         time spent.",
+        "The trade: a code that runs courant's scheme and mass on courant's mesh and step gets \
+         courant's error to round-off, so on the same case the time is all that differs and more \
+         time buys no accuracy; the error moves with the scheme, the mass and the Courant number, \
+         the same way in every code (lumped mass at Co = 1 exact on these meshes, the dispersive \
+         cases at the same error), and a code's place on the figures is its distance to the right \
+         of courant at the same height. {}. Where two codes differ in error on the same case, it is \
+         the start (OpenSees as it comes), not the time spent.",
         trade.join("; ")
     )));
     page.extend(blocks);
