@@ -253,8 +253,8 @@ pub fn section(scenes: &[Scene], outcomes: &[(SceneOutcome, f64)], others: &[Oth
          over the case's profile times against its wall time over courant's on the same case. A \
          code's time is its own time loop as its driver measured it (`wall_s` in the set's \
          `results.toml`, the median of at least 3 runs: SfePy's `pb.solve()`, with M and K assembled \
-         in its first step; OpenSees' `analyze` calls); courant's is the `wall_time_s` of `courant \
-         run` of the same case on one thread, measured by the same driver right after, on the same \
+         in its first step; OpenSees' `analyze` calls); courant's is the run time that `courant \
+         run` reports for the same case on one thread, measured by the same driver right after, on the same \
          machine (`external/<code>/courant_times.csv`; {}). Only ratios are shown: the times \
          themselves belong to the machine. `max_difference` is the largest difference of the \
          code's element stresses from courant's at the same times, over |sigma0|.",
