@@ -4,7 +4,8 @@
 //! scene (`central-difference-as-it-comes`), or the code; every file of the directory is listed,
 //! so a set cannot be committed half-listed. A `stated.toml` beside the files holds the
 //! findings stated for the set (what courant finds in that code, so that only a change of
-//! verdict fails). An `external/<code>/cost.csv` is that code's measured cost beside courant's.
+//! verdict fails). An `external/<code>/courant_times.csv` holds courant's times on the cases
+//! that code ran, measured by its driver together with the code's own (`wall_s` in its sets).
 
 use std::fmt::Write as _;
 use std::fs;
@@ -45,7 +46,7 @@ fn main() {
     let mut costs = String::from("&[\n");
     for code_dir in codes {
         let code = code_dir.file_name().unwrap().to_string_lossy().into_owned();
-        let cost = code_dir.join("cost.csv");
+        let cost = code_dir.join("courant_times.csv");
         if cost.is_file() {
             let _ = writeln!(
                 costs,
@@ -97,5 +98,5 @@ fn main() {
     costs.push(']');
     let out = PathBuf::from(std::env::var("OUT_DIR").unwrap());
     fs::write(out.join("committed_sets.rs"), text).unwrap();
-    fs::write(out.join("committed_costs.rs"), costs).unwrap();
+    fs::write(out.join("committed_courant_times.rs"), costs).unwrap();
 }

@@ -3,7 +3,7 @@
 
 Runs each case of courant's ``fig1``, ``fig1_masses`` (LMM and CMM), ``fig1_schemes`` (central
 difference), ``fig2``, ``fig2_reversed`` and ``layered`` (central difference) scenes with
-OpenSees' own explicit integrators and writes courant's results exchange format 1 (README,
+OpenSees' own explicit integrators and writes courant's results exchange format 2 (README,
 "Results exchange format"), which ``courant score`` grades. See external/opensees/README.md.
 
 The model
@@ -40,9 +40,13 @@ Run
 ---
     bash external/opensees/regenerate.sh               # venv + pinned install + every set
     bash external/opensees/regenerate.sh --out /tmp/fresh --compare-with external/opensees/results
-    target/opensees-venv/bin/python external/opensees/driver.py --check
-        # OpenSees against an independent numpy central difference (half-step form, the same
-        # masses, the same corrected starts): the largest difference per case
+    bash external/opensees/regenerate.sh --out /tmp/x --check --repeat 1
+        # every run against an independent numpy central difference with that start's first
+        # impulse (as it comes and corrected), every fig6 spectrum against numpy's eigenvalues
+
+Cost: ``wall_s`` in results.toml is the median over ``--repeat`` runs (default 3) of the wall
+time of the ``analyze`` calls; ``steps`` the steps. With the default ``--out`` the driver also
+times courant on the same cases right after (``courant_times.csv``).
 
 Dependencies: numpy and openseespy only; the ``courant`` binary for the geometry
 (``--courant PATH``, default ``cargo run --release --``).
@@ -308,10 +312,12 @@ def spectrum(n, ends, consistent):
     return [math.sqrt(max(v, 0.0)) for v in values]
 
 
-def write_spectra(directory, courant):
+def write_spectra(directory, courant, check=False):
     """fig6's cases (`<ends>-n<N>`, from courant's exact answers): every mode of the lumped
     and the consistent mass, modes numbered as courant's closed forms (free-free from 0, the
-    rigid mode)."""
+    rigid mode). With `check`, returns the largest difference of omega^2 from the numpy
+    model's over the largest omega^2 (so that the rigid mode's round-off, omega ~ 1e-7, counts
+    as what it is)."""
     tmp = tempfile.mkdtemp(prefix='opensees-fig6-')
     try:
         subprocess.run(courant + ['reference', 'fig6', '--out', tmp], check=True,
@@ -321,25 +327,49 @@ def write_spectra(directory, courant):
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     os.makedirs(directory, exist_ok=True)
+    worst = 0.0
     for name in names:
         ends, n = name.rsplit('-n', 1)
         first = 0 if ends == 'free-free' else 1
         with open(os.path.join(directory, f'{name}.csv'), 'w') as fd:
             fd.write('mode,omega,mass\n')
             for label, consistent in SPECTRUM_MASSES:
-                for i, omega in enumerate(spectrum(int(n), ends, consistent)):
+                omegas = spectrum(int(n), ends, consistent)
+                for i, omega in enumerate(omegas):
                     fd.write(f'{first + i},{omega!r},{label}\n')
+                if check:
+                    ref = numpy_spectrum(int(n), ends, consistent)
+                    top = max(ref) ** 2
+                    d = max(abs(a * a - b * b) / top for a, b in zip(omegas, ref))
+                    worst = max(worst, d)
+                    print(f'check eigen fig6 {name:16s} {label}: max |omega_opensees^2 - '
+                          f'omega_numpy^2| / omega_max^2 = {d:.2e}')
     with open(os.path.join(directory, 'results.toml'), 'w') as fd:
         fd.write(f'format = 1\ncode = "opensees"\nversion = "{ops.version()}"\n')
     print(f'eigen/fig6: {len(names)} case(s), masses lmm and cmm')
+    return worst
 
 
 # ----------------------------------------------------------------------------
 # Independent numpy model (--check): central difference, half-step form.
 # ----------------------------------------------------------------------------
-def numpy_cd(scene, nodes, times, dt, mass):
-    """Half-step central difference on the same bar: a^0 = M^-1 F0, v^{1/2} = dt/2 a^0,
-    u^{n+1} = u^n + dt v^{n+1/2}, v^{n+3/2} = v^{n+1/2} + dt M^-1 (F0 - K u^{n+1})."""
+# The first-step impulse of each variant, in units of the half-step start's (v^{1/2} = s dt a^0,
+# a^0 = M^-1 F0): CentralDifference as it comes (u^-1 = u^0, full F(0)) gives u^1 = dt^2 a^0
+# (s = 1); ExplicitDifference as it comes (committed a^0 = 0) gives u^1 = u^0 (s = 0); both
+# corrected give the half-step start's u^1 = dt^2/2 a^0 (s = 1/2).
+START_IMPULSE = {
+    ('central-difference', 'as-it-comes'): 1.0,
+    ('explicit-difference', 'as-it-comes'): 0.0,
+    ('central-difference', 'corrected'): 0.5,
+    ('explicit-difference', 'corrected'): 0.5,
+}
+
+
+def numpy_cd(scene, nodes, times, dt, mass, start=0.5):
+    """Central difference on the same bar, stiffness and masses assembled here:
+    v^{1/2} = start dt M^-1 F0, u^{n+1} = u^n + dt v^{n+1/2},
+    v^{n+3/2} = v^{n+1/2} + dt M^-1 (F0 - K u^{n+1}); start = 1/2 is the half-step start
+    (methods.md §2), 1 and 0 the starts of OpenSees' integrators as they come."""
     E, rho = element_properties(scene, nodes)
     n = len(nodes) - 1
     h = np.diff(nodes)
@@ -352,7 +382,7 @@ def numpy_cd(scene, nodes, times, dt, mass):
     f = np.zeros(n)
     f[0] = -SIGMA0 * AREA
     u = np.zeros(n)
-    v = 0.5 * dt * (minv @ f)
+    v = start * dt * (minv @ f)
     wanted = dict((step, t) for t, step in times)
     out = {}
     for step in range(1, max(wanted) + 1):
@@ -364,22 +394,39 @@ def numpy_cd(scene, nodes, times, dt, mass):
     return out
 
 
+def numpy_spectrum(n, ends, consistent):
+    """The independent model of a fig6 bar: K and M assembled here, numpy's eigvalsh of
+    M^-1/2 K M^-1/2 (node 0 fixed for fixed-free)."""
+    h = 1.0 / n
+    k = np.zeros((n + 1, n + 1))
+    m = np.zeros((n + 1, n + 1))
+    for e in range(n):
+        k[e:e + 2, e:e + 2] += np.array([[1.0, -1.0], [-1.0, 1.0]]) / h
+        m[e:e + 2, e:e + 2] += (h / 6.0 * np.array([[2.0, 1.0], [1.0, 2.0]]) if consistent
+                                else h / 2.0 * np.eye(2))
+    keep = slice(0, n + 1) if ends == 'free-free' else slice(1, n + 1)
+    w, v = np.linalg.eigh(m[keep, keep])
+    root = v @ np.diag(1.0 / np.sqrt(w)) @ v.T
+    values = np.sort(np.linalg.eigvalsh(root @ k[keep, keep] @ root))
+    return [math.sqrt(max(x, 0.0)) for x in values]
+
+
 # ----------------------------------------------------------------------------
 # Output.
 # ----------------------------------------------------------------------------
 def write_set(directory, scene, rows, integrator, start):
     os.makedirs(directory, exist_ok=True)
-    for name, mass, nodes, profiles, dt, wall in rows:
+    for name, mass, nodes, profiles, dt, wall, steps in rows:
         with open(os.path.join(directory, f'{name}.csv'), 'w') as fd:
             fd.write('t,x_left,x_right,stress\n')
             for t in sorted(profiles):
                 for xl, xr, s in zip(nodes[:-1], nodes[1:], profiles[t][1]):
                     fd.write(f'{t!r},{float(xl)!r},{float(xr)!r},{float(s)!r}\n')
     with open(os.path.join(directory, 'results.toml'), 'w') as fd:
-        fd.write('format = 1\n')
+        fd.write('format = 2\n')
         fd.write('code = "opensees"\n')
         fd.write(f'version = "{ops.version()}"\n')
-        for name, mass, nodes, profiles, dt, wall in rows:
+        for name, mass, nodes, profiles, dt, wall, steps in rows:
             fd.write(f'\n[cases."{name}"]\n')
             # OpenSees' integrators are central difference; only the corrected start is
             # courant's, so only the corrected sets declare the scheme (its signatures then
@@ -389,25 +436,31 @@ def write_set(directory, scene, rows, integrator, start):
             fd.write(f'mass = "{mass}"\n')
             fd.write(f'dt = {dt!r}\n')
             fd.write(f'elements = {len(nodes) - 1}\n')
+            # OpenSees' own time: the median wall time of its time loop (the analyze calls).
+            fd.write(f'wall_s = {wall:.6g}\n')
+            fd.write(f'steps = {steps}\n')
 
 
-def write_cost(path, rows, repeat):
-    """The cost table: per case and integrator, the steps and the median wall times of OpenSees'
-    time loop and of courant's run of the same case, both on one thread on this machine now."""
+def write_courant_times(path, rows, repeat):
+    """courant's times on the cases OpenSees ran, measured right after OpenSees' on this machine
+    (one thread, median of `repeat` runs): the yardstick of the cost ratios."""
     measured = time.strftime('%Y-%m-%d')
     cpu = cpu_name().replace(',', ' ')
     with open(path, 'w') as fd:
-        fd.write('scene,case,integrator,start,steps,opensees_wall_s,courant_wall_s,'
-                 'ratio,repeat,measured,cpu\n')
-        for scene, case, integrator, start, steps, ops_wall, own in rows:
-            fd.write(f'{scene},{case},{integrator},{start},{steps},{ops_wall:.6g},{own:.6g},'
-                     f'{ops_wall / own:.4g},{repeat},{measured},{cpu}\n')
+        fd.write('scene,case,steps,courant_wall_s,repeat,measured,cpu\n')
+        for scene, case, steps, wall in rows:
+            fd.write(f'{scene},{case},{steps},{wall:.6g},{repeat},{measured},{cpu}\n')
+
+
+def without_wall(text):
+    """results.toml without its `wall_s` lines (machine-specific; not compared)."""
+    return [line for line in text.splitlines() if not line.startswith('wall_s =')]
 
 
 def compare_dirs(fresh, committed, tolerance):
     """Every file the driver writes in `committed` is in `fresh` with the same text but for the
-    stresses, which agree within `tolerance` (|sigma0| = 1); `stated.toml` is courant's, not the
-    driver's, and is left out."""
+    stresses, which agree within `tolerance` (|sigma0| = 1), and results.toml's `wall_s` (the
+    machine's, not compared); `stated.toml` is courant's, not the driver's, and is left out."""
     bad = []
     for root, _, files in os.walk(committed):
         rel = os.path.relpath(root, committed)
@@ -419,8 +472,8 @@ def compare_dirs(fresh, committed, tolerance):
                 bad.append(f'{b}: missing')
                 continue
             if f.endswith('.toml'):
-                if open(a).read() != open(b).read():
-                    bad.append(f'{b}: differs from {a}')
+                if without_wall(open(a).read()) != without_wall(open(b).read()):
+                    bad.append(f'{b}: differs from {a} (wall_s aside)')
                 continue
             la, lb = open(a).read().splitlines(), open(b).read().splitlines()
             if len(la) != len(lb):
@@ -457,13 +510,14 @@ def main():
     p.add_argument('--compare-with', default=None)
     p.add_argument('--tolerance', type=float, default=1e-10)
     p.add_argument('--check', action='store_true',
-                   help='compare the corrected runs with an independent numpy model')
+                   help='compare every run (each start) and every spectrum with an '
+                        'independent numpy model')
     p.add_argument('--repeat', type=int, default=3,
-                   help='runs per case; the median wall time is printed')
-    p.add_argument('--cost', default=None,
-                   help='write the cost table (OpenSees and courant wall times of every case, '
-                        'one thread, same machine) here; default: external/opensees/cost.csv '
-                        'when --out is the default')
+                   help='runs per case; wall_s in results.toml is their median (default 3)')
+    p.add_argument('--courant-times', default=None,
+                   help="write courant's times on the same cases (one thread, same machine, "
+                        'median of --repeat) here; default: external/opensees/courant_times.csv '
+                        'when every set is regenerated into the default --out')
     args = p.parse_args()
     courant = ([args.courant] if args.courant else
                ['cargo', 'run', '--quiet', '--release', '--manifest-path',
@@ -471,17 +525,16 @@ def main():
     scenes = SCENES if args.scene == 'all' else tuple(s for s in (args.scene,) if s != 'fig6')
     integrators = tuple(INTEGRATORS) if args.integrator == 'all' else (args.integrator,)
     starts = STARTS if args.start == 'all' else (args.start,)
-    # The cost table is written when asked, or when every set is regenerated in place.
+    # courant's times are written when asked, or when every set is regenerated in place.
     every_set = (args.scene, args.integrator, args.start) == ('all', 'all', 'all')
-    cost_file = args.cost or (os.path.join(HERE, 'cost.csv')
-                              if every_set
-                              and os.path.abspath(args.out) == os.path.join(HERE, 'results')
-                              else None)
-    cost_rows = []
+    times_file = args.courant_times or (
+        os.path.join(HERE, 'courant_times.csv')
+        if every_set and os.path.abspath(args.out) == os.path.join(HERE, 'results') else None)
+    courant_rows = []
     worst = 0.0
+    written = []
     for scene in scenes:
         geometry = courant_cases(courant, scene)
-        courant_wall = courant_walls(courant, scene, args.repeat) if cost_file else {}
         cases = scene_cases(scene, sorted(geometry))
         for integrator in integrators:
             for start in starts:
@@ -495,32 +548,38 @@ def main():
                         walls.append(wall)
                     for t, (t_ops, _) in profiles.items():
                         assert abs(t_ops - t) <= 1e-9 * max(t, 1.0), (name, t, t_ops)
-                    if args.check and start == 'corrected':
-                        ref = numpy_cd(scene, nodes, times, dt, mass)
+                    if args.check:
+                        ref = numpy_cd(scene, nodes, times, dt, mass,
+                                       START_IMPULSE[(integrator, start)])
                         diff = max(np.max(np.abs(profiles[t][1] - ref[t])) for t in ref)
                         worst = max(worst, diff)
-                        print(f'check {integrator:20s} {scene:14s} {name:16s} '
+                        print(f'check {integrator}-{start:12s} {scene:14s} {name:12s} '
                               f'max |opensees - numpy| = {diff:.2e}')
-                    rows.append((name, mass, nodes, profiles, dt, statistics.median(walls)))
-                    if name in courant_wall:
-                        own, steps = courant_wall[name]
-                        cost_rows.append((scene, name, integrator, start, steps,
-                                          statistics.median(walls), own))
+                    steps = max(step for _, step in times)
+                    rows.append((name, mass, nodes, profiles, dt, statistics.median(walls),
+                                 steps))
                 directory = os.path.join(args.out, f'{integrator}-{start}', scene)
                 write_set(directory, scene, rows, integrator, start)
+                written.append(os.path.relpath(directory, args.out))
                 print(f'{integrator}-{start}/{scene}: {len(rows)} case(s), wall '
                       + ', '.join(f'{r[0]} {r[5]:.3f} s' for r in rows))
+        if times_file:
+            walls = courant_walls(courant, scene, args.repeat)
+            courant_rows += [(scene, name, walls[name][1], walls[name][0]) for name, _ in cases]
     if args.scene in ('all', 'fig6'):
-        write_spectra(os.path.join(args.out, 'eigen', 'fig6'), courant)
-    if cost_file:
-        write_cost(cost_file, cost_rows, args.repeat)
-        print(f'cost: {cost_file}')
+        worst = max(worst, write_spectra(os.path.join(args.out, 'eigen', 'fig6'), courant,
+                                         args.check))
+        written.append(os.path.join('eigen', 'fig6'))
+    if times_file:
+        write_courant_times(times_file, courant_rows, args.repeat)
+        print(f"courant's times: {times_file}")
     if args.check:
-        print(f'check: largest difference {worst:.2e} |sigma0|')
+        print(f'check: largest difference from the numpy models {worst:.2e}')
         if worst > 1e-9:
             sys.exit(1)
     if args.compare_with:
-        bad = compare_dirs(args.out, args.compare_with, args.tolerance)
+        bad = [b for d in written for b in compare_dirs(
+            os.path.join(args.out, d), os.path.join(args.compare_with, d), args.tolerance)]
         for b in bad:
             print(b, file=sys.stderr)
         if bad:

@@ -3,14 +3,15 @@
 # (the committed ones). Arguments go to driver.py, e.g.
 #   bash external/opensees/regenerate.sh                                      # rewrite the committed results
 #   bash external/opensees/regenerate.sh --out /tmp/fresh --compare-with external/opensees/results
-# The venv is $OPENSEES_VENV (default target/opensees-venv, outside git), built from
+#   bash external/opensees/regenerate.sh --can-run                            # can this machine regenerate? (builds nothing)
+# The venv is $OPENSEES_VENV (default opensees-venv in $CARGO_TARGET_DIR or target/, outside git), built from
 # requirements.txt when missing or when requirements.txt changed (about 15 s: one 86 MB wheel).
 # OpenSeesPy 3.8 needs Python >= 3.12: $OPENSEES_PYTHON if set, else the first of python3.13,
 # python3.12, python3 on PATH and pyenv's 3.12+ versions that is at least 3.12.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-venv="${OPENSEES_VENV:-$root/target/opensees-venv}"
+venv="${OPENSEES_VENV:-${CARGO_TARGET_DIR:-$root/target}/opensees-venv}"
 stamp="$venv/.requirements.sha256"
 want="$(sha256sum "$here/requirements.txt" | cut -d' ' -f1)"
 
@@ -34,6 +35,16 @@ find_python() {
   return 1
 }
 
+# --can-run: say whether this machine can regenerate (a built venv, or a Python >= 3.12), build
+# nothing, exit 0 or 1.
+if [ "${1:-}" = "--can-run" ]; then
+  if [ -x "$venv/bin/python" ] && [ "$(cat "$stamp" 2>/dev/null)" = "$want" ]; then
+    echo "OpenSees venv ready in $venv"; exit 0
+  fi
+  python="$(find_python 2>&1)" || { echo "$python"; exit 1; }
+  echo "$python ($("$python" --version 2>&1)) found: the venv can be built"; exit 0
+fi
+
 if [ ! -x "$venv/bin/python" ] || [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
   python="$(find_python)"
   echo "== building the OpenSees venv in $venv with $python ($("$python" --version 2>&1)), pinned requirements.txt"
@@ -44,4 +55,4 @@ if [ ! -x "$venv/bin/python" ] || [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; 
 fi
 # The driver takes each case's mesh, times and step from courant's exact answers.
 cargo build --release --quiet --manifest-path "$root/Cargo.toml"
-exec "$venv/bin/python" "$here/driver.py" --courant "$root/target/release/courant" "$@"
+exec "$venv/bin/python" "$here/driver.py" --courant "${CARGO_TARGET_DIR:-$root/target}/release/courant" "$@"

@@ -1,96 +1,66 @@
 #!/usr/bin/env python3
-"""SfePy driver for courant's ``fig1`` and ``fig1_masses`` scenes (external/sfepy/).
+"""SfePy driver for courant's 1D bar scenes (external/sfepy/).
 
-Writes courant's results exchange format 1 (README, "Results exchange format"), which
-``courant score`` grades against the exact solution.  See external/sfepy/README.md.
+Runs courant's ``fig1``, ``fig1_masses``, ``fig1_schemes`` (central difference), ``fig2``,
+``fig2_reversed`` and ``layered`` (central difference) with SfePy's own explicit central
+difference (``ts.central_difference``), and the spectra of ``fig6`` with its eigenvalue solver
+(``eig.scipy``), and writes courant's results exchange format 2 (README, "Results exchange
+format"), which ``courant score`` grades. See external/sfepy/README.md.
 
-What it reproduces
-------------------
-The seed paper's Fig. 1 bar, run with SfePy's own explicit central difference
-(``ts.central_difference``) instead of courant's solver:
+The model
+---------
+A 1D mesh of ``1_2`` cells; the field ``u`` with one component; ``dw_lin_elastic`` with the 1D
+"stiffness tensor" D = [[E]]; ``de_mass`` with ``lumping = row_sum`` and ``beta`` blending the
+consistent (0) and the lumped (1) mass (AMM(beta)); RMM(beta) through the linear solver
+``ls.rmm``, which multiplies by the assembled M^-1 = A^-1 C A^-1 (courant's RMM(beta)). The
+traction sigma0 H(t) at x = 0 (sigma0 = -1, H(0) = 1) is the nodal force F0 = -sigma0 A = +1
+on node 0 (``dw_point_load``); the far end is fixed. The element stress is SfePy's
+``ev_cauchy_stress`` (element average).
 
-* homogeneous free-fixed bar, L = A = rho = E = 1 (c = 1, transit T = 1),
-  N = 100 two-node linear elements (``1_2`` cells of a 1D SfePy mesh);
-* Heaviside traction sigma(0, t) = sigma0 H(t), sigma0 = -1, H(0) = 1, applied as
-  the nodal force F0 = -sigma0 A = +1 at node 0 (``dw_point_load``); u(L, t) = 0;
-* scene ``fig1``: lumped mass at Co = 1, 0.5, 0.1 (cases ``co1``, ``co0.5``,
-  ``co0.1``);
-* scene ``fig1_masses``: LMM, CMM, AMM(1/2) and RMM(1/2) at 1 and 1/2 of each
-  mass's critical Courant number (1, 1/sqrt(3), sqrt(2/3), sqrt(2/3)); cases
-  ``lmm-co1``, ``lmm-co0.5``, ``cmm-co1``, ... ``rmm0.5-co0.5``.
-
-The mass matrix is SfePy's ``de_mass`` term: ``beta`` blends the consistent
-(beta = 0) and the row-sum lumped (beta = 1) mass.  RMM uses SfePy's ``ls.rmm``
-linear "solver", which multiplies by M^-1 = A^-1 C A^-1 (A = lumped mass,
-C = sum_e A_e AMM_e(beta)^-1 A_e), i.e. exactly courant's RMM(beta).
-
-Time step: dt = t_out / ceil(t_out / dt_nominal * (1 - 1e-9)) with t_out = 0.5
-and dt_nominal = Co_abs h / c; every case runs to t = 1.5 = 3 * 0.5, so both
-output times are hit exactly (steps n and 3n).
-
-Outputs (per scene directory ``<out>/<scene>/``, default out: results/ beside
-this file):
-* ``<case>.csv`` with header ``t,x_left,x_right,stress``: one row per element
-  per output time (0.5 and 1.5), the element's end coordinates and its stress
-  sigma_e^n = E (u_{e+1}^n - u_e^n) / h at exactly that time level;
-* ``results.toml``: format 1, code, SfePy version and per case scheme, mass,
-  dt, elements.
+The geometry of each case (node positions, output times, the time step) is courant's own: the
+driver reads it from the exact answers ``courant reference <scene>`` writes, so SfePy runs the
+very mesh and step courant runs. The material per element is the scene's at the element
+midpoint, as courant evaluates it (``MATERIALS``): E = 16 -> 1 linear (fig2), 1 -> 16
+(fig2_reversed), two layers E = 64, rho = 4 then E = rho = 1 (layered), E = rho = 1 otherwise;
+SfePy gets it as a material function of the quadrature points (each point takes its element's
+value).
 
 THE TIME-LEVEL TRAP (why the stresses are taken in a step hook)
 ---------------------------------------------------------------
-``Problem.solve()`` returns Variables holding the state ONE STEP BEFORE t1 for
-the elastodynamics solvers: ``ElastodynamicsBaseTS.__call__`` breaks out of its
-loop after the last step *before* ``vec = vect`` and returns ``vec``
-(SfePy 2026.3: sfepy/solvers/ts_solvers.py:750 ``if ts.nt >= 1: break``,
-:757 ``vec = vect``, :759 ``return vec``), and ``Problem.solve()`` then does
-``variables.set_state(vec)`` (sfepy/discrete/problem.py:1603).  Reading u from the
-return value "the obvious way" thus gives u(t1 - dt).  The state passed to
-``step_hook(pb, ts, variables)`` (called from ``poststep_fun``) is the newly
-computed u^{n+1} with ``ts.time = t^{n+1}``, so this driver records the
-profiles there, keyed by the integer step number.  SfePy's own scheme is the
-standard one: a^0 from F(t=0) (H(0) = 1 with a constant load), and a^{n+1} from
-F(t^{n+1}) and u^{n+1}.
+``Problem.solve()`` returns Variables holding the state ONE STEP BEFORE t1 for the
+elastodynamics solvers: ``ElastodynamicsBaseTS.__call__`` breaks out of its loop after the last
+step *before* ``vec = vect`` and returns ``vec`` (SfePy 2026.3: sfepy/solvers/ts_solvers.py:750
+``if ts.nt >= 1: break``, :757 ``vec = vect``, :759 ``return vec``), and ``Problem.solve()``
+then does ``variables.set_state(vec)`` (sfepy/discrete/problem.py:1603). The state passed to
+``step_hook(pb, ts, variables)`` is the newly computed u^{n+1} with ``ts.time = t^{n+1}``, so
+this driver records the profiles there, keyed by the integer step. ``--naive-readback`` writes
+what the obvious read-back gives (every profile one step late), for the record.
+
+Cost
+----
+``wall_s`` in results.toml is the median over ``--repeat`` runs (default 3) of the wall time of
+``pb.solve()`` (SfePy's time loop; M and K are assembled in its first step); ``steps`` the steps
+it took. With the default ``--out`` the driver also times courant on the same cases right then
+(``courant run <scene>`` on one thread, median of as many runs) into ``courant_times.csv``.
 
 Run
 ---
-    bash external/sfepy/regenerate.sh         # venv + pinned install + both scenes
-    # or by hand:
-    python3 -m venv venv
-    venv/bin/pip install -r external/sfepy/requirements.txt
-    # (PyPI has only the sdist for Linux: pip compiles SfePy's C extensions with
-    # scikit-build/cmake/ninja/Cython from PyPI and the system gcc; needs the
-    # Python headers.  About 1.7-2.5 min on 2 cores.)
-    venv/bin/python driver.py                 # both scenes into results/
-    venv/bin/python driver.py --scene fig1 --out out
-    venv/bin/python driver.py --check         # + numpy CD cross-check table
-    venv/bin/python driver.py --compare-with results --out /tmp/fresh
-                                              # regenerate, then compare with
-                                              # the committed results (CI)
-    venv/bin/python driver.py --naive-readback --scene fig1 --out DIR
-                                              # the trap reproduced: profiles
-                                              # read back after pb.solve()
+    bash external/sfepy/regenerate.sh                  # venv + pinned install + every set
+    bash external/sfepy/regenerate.sh --out /tmp/fresh --compare-with external/sfepy/results
+    bash external/sfepy/regenerate.sh --check          # + independent numpy models
 
-``--naive-readback`` writes what a new user gets reading the state back after
-``pb.solve()`` (one solve per output time): every profile one step late.
-``courant score`` reports it as a time-level offset of -1 step
-(tests/data/sfepy_naive_readback/ holds its output for fig1).
-
-``--compare-with DIR`` compares the freshly written files with those in DIR
-(same rows, times and element ends; stresses within ``--tolerance``, default
-1e-10 |sigma0|) and exits 1 when they differ.
-
-``--check`` re-runs every case with an independent numpy central difference
-(half-step form, same masses) and prints max |sfepy - numpy| per output time,
-the deviation from d'Alembert for lumped Co = 1, the offset of the value
-``pb.solve()`` returns, and the times at which SfePy evaluated the load.
-Dependencies: numpy and sfepy only.
+Dependencies: numpy and sfepy; the ``courant`` binary for the geometry (``--courant PATH``).
 """
 import argparse
 import contextlib
 import io
 import math
 import os
+import shutil
+import statistics
+import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
@@ -98,40 +68,59 @@ import numpy as np
 import sfepy
 from sfepy.base.base import output
 
-# Quiet before importing the terms: otherwise SfePy prints (a bare print() to
-# stdout plus a warning) that its optional JAX terms (sfepy/terms/terms_jax.py)
-# cannot be imported.  Harmless: no JAX term is used here.
+# Quiet before importing the terms: otherwise SfePy prints (a bare print() to stdout plus a
+# warning) that its optional JAX terms cannot be imported. Harmless: no JAX term is used here.
 output.set_output(quiet=True)
 with contextlib.redirect_stdout(io.StringIO()):
     from sfepy.base.conf import ProblemConf
     from sfepy.discrete import Problem
     from sfepy.discrete.fem import Mesh
     from sfepy.discrete.fem.meshio import UserMeshIO
+    from sfepy.solvers import Solver
 
-# ----------------------------------------------------------------------------
-# The bar (normalised units, methods.md §1-2).
-# ----------------------------------------------------------------------------
-L = 1.0          # length
-AREA = 1.0       # cross-section
-RHO = 1.0        # density
-E = 1.0          # Young's modulus
-C = math.sqrt(E / RHO)
-N_EL = 100       # elements
-H = L / N_EL     # element length
-SIGMA0 = -1.0    # traction at x = 0 (compressive)
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+
+AREA = 1.0
+SIGMA0 = -1.0        # traction at x = 0 in every scene here (compressive)
 F0 = -SIGMA0 * AREA  # nodal force at node 0: outward normal is -x -> +1 along +x
-T_OUT = 0.5      # first profile time; dt is fitted to it
-PROFILE_TIMES = (0.5, 1.5)  # both multiples of T_OUT
+BETA = 0.5           # the beta of fig1_masses' and fig6's AMM and RMM
 
-# Critical Courant numbers of the masses (methods.md §5), beta = 1/2.
-BETA = 0.5
-CO_CRIT = {
-    'lmm': 1.0,
-    'cmm': 1.0 / math.sqrt(3.0),
-    'amm': math.sqrt((1.0 + 2.0 * BETA) / 3.0),
-    'rmm': math.sqrt((1.0 + 2.0 * BETA) / 3.0),
+
+def linear(left, right):
+    return lambda x, length: left + (right - left) * x / length
+
+
+def constant(value):
+    return lambda x, length: value
+
+
+def layers(spec):
+    """(thickness, E, rho) from the loaded end; an interface belongs to the layer on its right."""
+    def at(x):
+        end = 0.0
+        for thickness, e, rho in spec:
+            end += thickness
+            if x < end:
+                return e, rho
+        return spec[-1][1], spec[-1][2]
+    return (lambda x, length: at(x)[0]), (lambda x, length: at(x)[1])
+
+
+_LAYERED = layers([(0.5, 64.0, 4.0), (0.5, 1.0, 1.0)])
+
+# Per scene: (modulus(x, L), density(x, L)).
+MATERIALS = {
+    'fig1': (constant(1.0), constant(1.0)),
+    'fig1_masses': (constant(1.0), constant(1.0)),
+    'fig1_schemes': (constant(1.0), constant(1.0)),
+    'fig2': (linear(16.0, 1.0), constant(1.0)),
+    'fig2_reversed': (linear(1.0, 16.0), constant(1.0)),
+    'layered': _LAYERED,
 }
-# SfePy's de_mass (lumping, beta) per mass kind, and the results.toml label.
+SCENES = tuple(MATERIALS)
+
+# de_mass (lumping, beta), the RMM flag, and the results.toml label, per mass kind.
 MASS_SETUP = {
     'lmm': dict(lumping='row_sum', beta=1.0, rmm=False, label='lumped'),
     'cmm': dict(lumping='none', beta=0.0, rmm=False, label='consistent'),
@@ -140,79 +129,141 @@ MASS_SETUP = {
 }
 
 
-def fitted_dt(co_abs, t_out=T_OUT):
-    """dt <= co_abs h / c that hits t_out exactly (methods.md §1)."""
-    dt_nominal = co_abs * H / C
-    n = math.ceil(t_out / dt_nominal * (1.0 - 1e-9))
-    return t_out / n, n
+def scene_cases(scene, names):
+    """[(case, mass kind)] SfePy runs: every case of fig1 and fig1_masses (the mass from the
+    name's prefix); the central difference cases (`cd-*`, lumped) of the others."""
+    out = []
+    for name in names:
+        if scene == 'fig1':
+            out.append((name, 'lmm'))
+        elif scene == 'fig1_masses':
+            out.append((name, name.split('-')[0].rstrip('0123456789.')))
+        elif name.startswith('cd-'):
+            out.append((name, 'lmm'))
+    return out
 
 
-def scene_cases(scene):
-    """[(case name, mass kind, absolute Courant number)] of a scene."""
-    if scene == 'fig1':
-        return [(f'co{co:g}', 'lmm', co) for co in (1.0, 0.5, 0.1)]
-    elif scene == 'fig1_masses':
-        out = []
-        for kind in ('lmm', 'cmm', 'amm', 'rmm'):
-            prefix = kind if kind in ('lmm', 'cmm') else f'{kind}{BETA:g}'
-            for co in (1.0, 0.5):
-                out.append((f'{prefix}-co{co:g}', kind, co * CO_CRIT[kind]))
-        return out
-    raise ValueError(f'unknown scene {scene!r}')
+# ----------------------------------------------------------------------------
+# courant: the geometry of its cases, and its own times.
+# ----------------------------------------------------------------------------
+def courant_reference(courant, scene):
+    """The directory of `courant reference <scene>` in a temporary root (caller removes it)."""
+    tmp = tempfile.mkdtemp(prefix='sfepy-geometry-')
+    subprocess.run(courant + ['reference', scene, '--out', tmp], check=True,
+                   stdout=subprocess.DEVNULL)
+    return tmp, os.path.join(tmp, scene)
+
+
+def courant_cases(courant, scene):
+    """{case: (nodes, [(t, step)], dt)} from `courant reference <scene>`."""
+    import tomllib
+    tmp, base = courant_reference(courant, scene)
+    try:
+        with open(os.path.join(base, 'results.toml'), 'rb') as fd:
+            dts = {k: v['dt'] for k, v in tomllib.load(fd)['cases'].items()}
+        cases = {}
+        for f in sorted(os.listdir(base)):
+            if not f.endswith('.csv'):
+                continue
+            name = f[:-4]
+            rows = np.genfromtxt(os.path.join(base, f), delimiter=',', names=True)
+            first = rows[rows['t'] == rows['t'][0]]
+            nodes = np.r_[first['x_left'], first['x_right'][-1]]
+            dt = dts[name]
+            times = []
+            for t in sorted(set(rows['t'].tolist())):
+                step = round(t / dt)
+                assert abs(step * dt - t) <= 1e-9 * max(t, dt), (scene, name, t, dt)
+                times.append((t, step))
+            cases[name] = (nodes, times, dt)
+        return cases
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+def courant_walls(courant, scene, repeat):
+    """{case: (median wall time s, steps)} of `courant run <scene>` on one thread (COURANT_THREADS=1,
+    RAYON_NUM_THREADS=1): the `wall_time_s` and `steps` of its summary.csv, median of `repeat`."""
+    env = dict(os.environ, COURANT_THREADS='1', RAYON_NUM_THREADS='1')
+    walls, steps = {}, {}
+    for _ in range(max(1, repeat)):
+        tmp = tempfile.mkdtemp(prefix='sfepy-courant-')
+        try:
+            subprocess.run(courant + ['run', scene, '--out', tmp], check=True, env=env,
+                           stdout=subprocess.DEVNULL)
+            rows = np.genfromtxt(os.path.join(tmp, scene, 'summary.csv'), delimiter=',',
+                                 names=True, dtype=None, encoding='utf-8')
+            for row in np.atleast_1d(rows):
+                walls.setdefault(str(row['case']), []).append(float(row['wall_time_s']))
+                steps[str(row['case'])] = int(row['steps'])
+        finally:
+            shutil.rmtree(tmp, ignore_errors=True)
+    return {case: (statistics.median(w), steps[case]) for case, w in walls.items()}
+
+
+def element_properties(scene, nodes):
+    """(E, rho) of each element at its midpoint, as courant evaluates the scene's material."""
+    modulus, density = MATERIALS[scene]
+    length = nodes[-1] - nodes[0]
+    mid = 0.5 * (nodes[:-1] + nodes[1:]) - nodes[0]
+    return (np.array([modulus(x, length) for x in mid]),
+            np.array([density(x, length) for x in mid]))
 
 
 # ----------------------------------------------------------------------------
 # SfePy problem description (the usual `define()` dict of a problem file).
 # ----------------------------------------------------------------------------
-def define(kind, n_steps, t1, load_log=None):
-    """Problem description of the bar for mass `kind`, `n_steps` steps to t1.
+def define(nodes, E, rho, kind, n_steps=0, t1=0.0, fixed='right', load_log=None):
+    """Problem description of the bar on `nodes` with element moduli `E` and densities `rho`,
+    mass `kind`, `n_steps` steps to t1; `fixed` names the supported end ('right', 'left' or
+    None: free-free, for spectra).
 
-    The three unknowns u, du, ddu (orders 0, 1, 2) are what SfePy's
-    elastodynamics solvers expect: they pull M, C, K out of the diagonal
-    blocks of the tangent matrix (see sfepy/examples/linear_elasticity/
-    elastodynamic.py).  dw_zero keeps the (absent) damping block alive.
+    The three unknowns u, du, ddu (orders 0, 1, 2) are what SfePy's elastodynamics solvers
+    expect: they pull M, C, K out of the diagonal blocks of the tangent matrix (see
+    sfepy/examples/linear_elasticity/elastodynamic.py). dw_zero keeps the (absent) damping
+    block alive.
     """
     ms = MASS_SETUP[kind]
+    n_el = len(nodes) - 1
+    h_min = float(np.diff(nodes).min())
 
     def mesh_hook(mesh, mode):
-        """1D mesh: N_EL `1_2` line cells on [0, L]."""
+        """1D mesh: `1_2` line cells on the given nodes."""
         if mode == 'read':
-            coors = np.linspace(0.0, L, N_EL + 1).reshape((-1, 1))
-            conn = np.c_[np.arange(N_EL), np.arange(1, N_EL + 1)]
-            return Mesh.from_data('bar', coors, None, [conn.astype(np.int32)],
-                                  [np.zeros(N_EL, dtype=np.int32)], ['1_2'])
+            conn = np.c_[np.arange(n_el), np.arange(1, n_el + 1)]
+            return Mesh.from_data('bar', nodes.reshape((-1, 1)), None,
+                                  [conn.astype(np.int32)],
+                                  [np.zeros(n_el, dtype=np.int32)], ['1_2'])
+
+    def get_solid(ts, coors, mode=None, **kwargs):
+        """E and rho at the quadrature points: each point takes its element's values (the
+        points are inside their elements, so the element is the interval holding them)."""
+        if mode == 'qp':
+            e = np.clip(np.searchsorted(nodes, coors[:, 0]) - 1, 0, n_el - 1)
+            return {'D': E[e].reshape((-1, 1, 1)), 'rho': rho[e].reshape((-1, 1, 1))}
 
     def get_load(ts, coors, mode=None, **kwargs):
-        """Nodal force F0 H(t) at node 0, H(0) = 1.
-
-        Special ('.val') parameter, evaluated by SfePy in prestep_fun() at
-        ts.time = t^{n+1} before a^{n+1} is computed (and at t = 0 for a^0).
-        In 1D the point-load value must be a Python scalar: SfePy's shape
-        check of the '.: N' argument with N = 1 accepts only numbers.
-        """
+        """Nodal force F0 H(t) at node 0, H(0) = 1, evaluated by SfePy in prestep_fun() at
+        ts.time = t^{n+1} (and at t = 0 for a^0). In 1D the value must be a Python scalar."""
         if mode == 'special':
             if load_log is not None:
                 load_log.append((ts.step, float(ts.time)))
             return {'val': F0 * (1.0 if ts.time >= 0.0 else 0.0)}
 
     filename_mesh = UserMeshIO(mesh_hook)
-
+    x0, x1 = float(nodes[0]), float(nodes[-1])
     regions = {
         'Omega': 'all',
-        'Left': ('vertices in (x < %.16e)' % (1e-6 * H), 'vertex'),
-        'Right': ('vertices in (x > %.16e)' % (L - 1e-6 * H), 'vertex'),
+        'Left': ('vertices in (x < %.16e)' % (x0 + 1e-6 * h_min), 'vertex'),
+        'Right': ('vertices in (x > %.16e)' % (x1 - 1e-6 * h_min), 'vertex'),
     }
     materials = {
-        'solid': ({
-            'D': np.array([[E]]),          # 1D "stiffness tensor": sigma = E eps
-            'rho': RHO,
-            '.lumping': ms['lumping'],     # 'row_sum' or 'none'
-            '.beta': ms['beta'],           # 0 = consistent, 1 = lumped
-        },),
+        'solid': 'get_solid',
+        'mass': ({'.lumping': ms['lumping'], '.beta': ms['beta']},),
         'load': 'get_load',
     }
-    functions = {'get_load': (get_load,)}
-    fields = {'displacement': ('real', 'vector', 'Omega', 1)}  # 1 component in 1D
+    functions = {'get_solid': (get_solid,), 'get_load': (get_load,)}
+    fields = {'displacement': ('real', 'vector', 'Omega', 1)}
     integrals = {'i': 2}   # exact for the mass of linear elements
     variables = {
         'u': ('unknown field', 'displacement', 0),
@@ -222,38 +273,34 @@ def define(kind, n_steps, t1, load_log=None):
         'dv': ('test field', 'displacement', 'du'),
         'ddv': ('test field', 'displacement', 'ddu'),
     }
-    ebcs = {'fixed': ('Right', {'u.0': 0.0, 'du.0': 0.0, 'ddu.0': 0.0})}
-
-    mass_term = 'de_mass.i.Omega(solid.rho, solid.lumping, solid.beta, ddv, ddu)'
+    ebcs = ({} if fixed is None else
+            {'fixed': ('Right' if fixed == 'right' else 'Left',
+                       {'u.0': 0.0, 'du.0': 0.0, 'ddu.0': 0.0})})
+    mass_term = 'de_mass.i.Omega(solid.rho, mass.lumping, mass.beta, ddv, ddu)'
+    stiffness_term = 'dw_lin_elastic.i.Omega(solid.D, v, u)'
     equations = {
-        'balance': mass_term + """
-            + dw_zero.i.Omega(dv, du)
-            + dw_lin_elastic.i.Omega(solid.D, v, u)
-            = dw_point_load.0.Left(load.val, v)""",
+        'balance': mass_term + ' + dw_zero.i.Omega(dv, du) + ' + stiffness_term
+        + ' = dw_point_load.0.Left(load.val, v)',
     }
     solvers = {
         'ls': ('ls.scipy_direct', {'use_presolve': True}),
-        # ls.rmm: "solving" is the product with the directly assembled M^-1.
-        # With it, ts.central_difference bypasses Newton (NoNLS) and uses the
-        # residual of the u block only.
+        # ls.rmm: "solving" is the product with the directly assembled M^-1. With it,
+        # ts.central_difference bypasses Newton and uses the residual of the u block only.
         'lsrmm': ('ls.rmm', {'rmm_term': mass_term}),
-        # One Newton iteration solves M a = F - K u exactly.  eps_a tiny so that
-        # the iteration is never skipped (it=0 returns the old acceleration if
-        # ||r|| <= eps_a), line search off, no precision warnings.
+        # One Newton iteration solves M a = F - K u exactly; eps_a tiny so that it is never
+        # skipped (it = 0 returns the old acceleration if ||r|| <= eps_a).
         'newton': ('nls.newton', {'i_max': 1, 'eps_a': 1e-300, 'eps_r': 1.0,
                                   'ls_on': 1e100, 'lin_red': None}),
         'tscd': ('ts.central_difference', {
-            't0': 0.0,
-            't1': t1,
-            'dt': None,
-            # n_step counts time LEVELS (t0 included): times = linspace(t0, t1,
-            # n_step).  Give it explicitly; the default n_step = 10 would
-            # otherwise take precedence over dt.
+            't0': 0.0, 't1': t1, 'dt': None,
+            # n_step counts time LEVELS (t0 included) and takes precedence over dt.
             'n_step': n_steps + 1,
             'is_linear': True,      # assemble M, K once
             'var_names': {'u': 'u', 'du': 'du', 'ddu': 'ddu'},
             'verbose': 0,
         }),
+        # All modes of a small dense problem: scipy.linalg.eigh of (K, M).
+        'eig': ('eig.scipy', {'method': 'eigh'}),
     }
     options = {
         'ts': 'tscd',
@@ -266,274 +313,393 @@ def define(kind, n_steps, t1, load_log=None):
     return locals()
 
 
-def run_sfepy(kind, co_abs, load_log=None):
-    """Run one case with SfePy.  Returns dict with the profiles per output time.
+def problem(*args, **kwargs):
+    conf = ProblemConf.from_dict(define(*args, **kwargs), sys.modules[__name__])
+    return Problem.from_conf(conf)
 
-    profiles[t] = (ts.time, u_nodes, stress_elements) recorded in the step hook
-    at integer step round(t / dt), i.e. the state u^n with t^n = t.
-    """
-    dt, n_out = fitted_dt(co_abs)
-    ratio = [round(t / T_OUT) for t in PROFILE_TIMES]
-    assert all(abs(r * T_OUT - t) < 1e-12 for r, t in zip(ratio, PROFILE_TIMES))
-    out_steps = {r * n_out: t for r, t in zip(ratio, PROFILE_TIMES)}
+
+def run_sfepy(scene, nodes, times, dt, kind, load_log=None):
+    """One case: {t: (ts.time, u, stress)} recorded in the step hook at each output step, the
+    state pb.solve() returns (one step before t1), and the wall time of pb.solve()."""
+    E, rho = element_properties(scene, nodes)
+    out_steps = {step: t for t, step in times}
     n_steps = max(out_steps)
-    t1 = n_steps * dt
-
-    conf = ProblemConf.from_dict(define(kind, n_steps, t1, load_log),
-                                 sys.modules[__name__])
-    pb = Problem.from_conf(conf)
-
+    pb = problem(nodes, E, rho, kind, n_steps, n_steps * dt, load_log=load_log)
     profiles = {}
 
     def step_hook(pb, ts, variables):
-        # Called from poststep_fun() right after step n -> n+1 with ts.time =
-        # t^{n+1} and `variables` holding u^{n+1}: the correct time level.
+        # Called right after step n -> n+1 with ts.time = t^{n+1} and `variables` holding u^{n+1}.
         if ts.step in out_steps:
-            # Full nodal vector (the fixed node N included, = 0).
             u = variables.get_state_parts()['u'].copy()
-            # Element stresses with SfePy's own term (constant in each linear
-            # element, so el_avg is the element value).
-            sig = pb.evaluate('ev_cauchy_stress.i.Omega(solid.D, u)',
-                              mode='el_avg', copy_materials=False,
-                              verbose=False).ravel().copy()
+            sig = pb.evaluate('ev_cauchy_stress.i.Omega(solid.D, u)', mode='el_avg',
+                              copy_materials=False, verbose=False).ravel().copy()
             profiles[out_steps[ts.step]] = (float(ts.time), u, sig)
 
-    variables = pb.solve(step_hook=step_hook, save_results=False,
-                         verbose=False)
-    # What pb.solve() returns: NOT u(t1) but u(t1 - dt), see module docstring.
-    u_returned = variables.get_state_parts()['u'].copy()
-
-    coors = pb.domain.mesh.coors[:, 0]
-    conn = pb.domain.mesh.get_conn('1_2')
-    return dict(dt=dt, n_steps=n_steps, sfepy_dt=pb.get_solver().ts.dt,
-                x_left=coors[conn[:, 0]], x_right=coors[conn[:, 1]],
-                profiles=profiles, u_returned=u_returned)
+    started = time.perf_counter()
+    variables = pb.solve(step_hook=step_hook, save_results=False, verbose=False)
+    wall = time.perf_counter() - started
+    return dict(profiles=profiles, steps=n_steps, wall=wall,
+                sfepy_dt=pb.get_solver().ts.dt,
+                u_returned=variables.get_state_parts()['u'].copy())
 
 
-def run_sfepy_naive(kind, co_abs):
-    """The trap, for the record: one solve to each output time t, the stress
-    read back from the state ``pb.solve()`` returns, written as time t.  SfePy
-    returns the state one step before t (module docstring), so every profile
-    is u(t - dt) labelled t.
-    """
-    dt, n_out = fitted_dt(co_abs)
+def run_sfepy_naive(scene, nodes, times, dt, kind):
+    """The trap, for the record: one solve to each output time t, the stress read back from the
+    state ``pb.solve()`` returns (u(t - dt)), written as time t."""
+    E, rho = element_properties(scene, nodes)
     profiles = {}
-    for t in PROFILE_TIMES:
-        n_steps = round(t / dt)
-        conf = ProblemConf.from_dict(define(kind, n_steps, n_steps * dt),
-                                     sys.modules[__name__])
-        pb = Problem.from_conf(conf)
+    for t, step in times:
+        pb = problem(nodes, E, rho, kind, step, step * dt)
         variables = pb.solve(save_results=False, verbose=False)
         u = variables.get_state_parts()['u'].copy()
-        profiles[t] = (t, u, E * np.diff(u) / H)
-        coors = pb.domain.mesh.coors[:, 0]
-        conn = pb.domain.mesh.get_conn('1_2')
-    return dict(dt=dt, n_steps=round(PROFILE_TIMES[-1] / dt),
-                sfepy_dt=dt, x_left=coors[conn[:, 0]],
-                x_right=coors[conn[:, 1]], profiles=profiles, u_returned=None)
+        profiles[t] = (t, u, E * np.diff(u) / np.diff(nodes))
+    return dict(profiles=profiles, steps=max(s for _, s in times), wall=None)
 
 
 # ----------------------------------------------------------------------------
-# Independent numpy reference (for --check): half-step central difference.
+# Spectra (fig6): SfePy's K and M, its eigenvalue solver.
 # ----------------------------------------------------------------------------
-def numpy_cd(kind, dt, n_steps, out_steps):
-    """Central difference, half-step form, free nodes 0..N-1 (node N fixed).
+SPECTRUM_MASSES = ('lmm', 'cmm', 'amm', 'rmm')
 
-    a^0 = M^-1 (F - K u^0), v^{1/2} = dt/2 a^0,
-    u^{n+1} = u^n + dt v^{n+1/2}, a^{n+1} = M^-1 (F - K u^{n+1}),
-    v^{n+3/2} = v^{n+1/2} + dt a^{n+1};  F = F0 e_0 (H(t) = 1 for t >= 0).
-    Returns {step: nodal u (N + 1 values, fixed node included)}.
-    """
-    n = N_EL + 1
-    m_e, k_e = RHO * AREA * H, E * AREA / H
-    K = np.zeros((n, n))
-    MC = np.zeros((n, n))
-    ML = np.zeros((n, n))
-    CR = np.zeros((n, n))
-    f = m_e / (2.0 * (1.0 + 2.0 * BETA))
-    for e in range(N_EL):
+
+def sfepy_matrices(nodes, kind, fixed):
+    """K and M (dense, free DOFs) of a uniform bar (E = rho = A = 1) assembled by SfePy; for RMM
+    the inverse of the M^-1 that ls.rmm assembles (SfePy assembles only M^-1 for it)."""
+    n = len(nodes) - 1
+    pb = problem(nodes, np.ones(n), np.ones(n), kind, fixed=fixed)
+    pb.time_update()
+    k = pb.evaluate('dw_lin_elastic.i.Omega(solid.D, v, u)', mode='weak',
+                    dw_mode='matrix', copy_materials=False, verbose=False)
+    if MASS_SETUP[kind]['rmm']:
+        rmm = Solver.any_from_conf(pb.get_solver_conf('lsrmm'), context=pb)
+        m = np.linalg.inv(rmm.init_rmm(None).toarray())
+    else:
+        m = pb.evaluate('de_mass.i.Omega(solid.rho, mass.lumping, mass.beta, ddv, ddu)',
+                        mode='weak', dw_mode='matrix', copy_materials=False,
+                        verbose=False).toarray()
+    return pb, k.toarray(), m
+
+
+def sfepy_spectrum(n, ends, kind):
+    """Every angular frequency of the bar (free-free: n + 1 modes, the rigid one first;
+    fixed-free: node 0 fixed, n modes), from SfePy's eig.scipy (eigh) of its K and M."""
+    nodes = np.linspace(0.0, 1.0, n + 1)
+    pb, k, m = sfepy_matrices(nodes, kind, None if ends == 'free-free' else 'left')
+    eig = Solver.any_from_conf(pb.get_solver_conf('eig'))
+    values = np.sort(np.asarray(eig(k, m, n_eigs=None, eigenvectors=False)).real)
+    return [math.sqrt(max(v, 0.0)) for v in values], k, m
+
+
+def numpy_spectrum(n, ends, kind):
+    """The independent model: K and M assembled here element by element, numpy's eigvalsh of
+    M^-1/2 K M^-1/2 (M^-1 = A^-1 C A^-1 for RMM, methods.md §5)."""
+    h = 1.0 / n
+    size = n + 1
+    k = np.zeros((size, size))
+    m = np.zeros((size, size))
+    c = np.zeros((size, size))
+    f = h / (2.0 * (1.0 + 2.0 * BETA))
+    for e in range(n):
         ix = np.ix_([e, e + 1], [e, e + 1])
-        K[ix] += k_e * np.array([[1.0, -1.0], [-1.0, 1.0]])
-        MC[ix] += m_e / 6.0 * np.array([[2.0, 1.0], [1.0, 2.0]])
-        ML[ix] += m_e / 2.0 * np.eye(2)
-        CR[ix] += f * np.array([[2.0 + BETA, BETA - 1.0],
-                                [BETA - 1.0, 2.0 + BETA]])
-    fr = slice(0, N_EL)   # free DOFs: rows/columns of the fixed node deleted
-    if kind == 'lmm':
-        minv = np.diag(1.0 / np.diag(ML)[fr])
-    elif kind == 'cmm':
-        minv = np.linalg.inv(MC[fr, fr])
-    elif kind == 'amm':
-        minv = np.linalg.inv((1.0 - BETA) * MC[fr, fr] + BETA * ML[fr, fr])
-    elif kind == 'rmm':
-        ainv = 1.0 / np.diag(ML)
-        minv = (ainv[:, None] * CR * ainv[None, :])[fr, fr]   # A^-1 C A^-1
-    Kf = K[fr, fr]
-    F = np.zeros(N_EL)
-    F[0] = F0
+        k[ix] += np.array([[1.0, -1.0], [-1.0, 1.0]]) / h
+        mc = h / 6.0 * np.array([[2.0, 1.0], [1.0, 2.0]])
+        ml = h / 2.0 * np.eye(2)
+        m[ix] += {'lmm': ml, 'cmm': mc, 'amm': (1 - BETA) * mc + BETA * ml,
+                  'rmm': ml}[kind]
+        c[ix] += f * np.array([[2.0 + BETA, BETA - 1.0], [BETA - 1.0, 2.0 + BETA]])
+    keep = slice(0, size) if ends == 'free-free' else slice(1, size)
+    if kind == 'rmm':
+        a = np.diag(m)
+        minv = (c / a[:, None] / a[None, :])[keep, keep]
+    else:
+        minv = np.linalg.inv(m[keep, keep])
+    w, v = np.linalg.eigh(minv)
+    root = v @ np.diag(np.sqrt(w)) @ v.T
+    values = np.sort(np.linalg.eigvalsh(root @ k[keep, keep] @ root))
+    return [math.sqrt(max(x, 0.0)) for x in values]
 
-    u = np.zeros(N_EL)
-    a = minv @ (F - Kf @ u)
-    v = 0.5 * dt * a
+
+def write_spectra(directory, courant, check):
+    """fig6's cases (`<ends>-n<N>`, from courant's exact answers): every mode of each mass, modes
+    numbered as courant's closed forms (free-free from 0, the rigid mode). Returns the largest
+    difference of omega^2 from the numpy model's, over the largest omega^2, when `check`."""
+    tmp, base = courant_reference(courant, 'fig6')
+    try:
+        names = sorted(f[:-4] for f in os.listdir(base) if f.endswith('.csv'))
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    os.makedirs(directory, exist_ok=True)
+    worst = 0.0
+    for name in names:
+        ends, n = name.rsplit('-n', 1)
+        first = 0 if ends == 'free-free' else 1
+        with open(os.path.join(directory, f'{name}.csv'), 'w') as fd:
+            fd.write('mode,omega,mass\n')
+            for kind in SPECTRUM_MASSES:
+                omegas, _, _ = sfepy_spectrum(int(n), ends, kind)
+                for i, omega in enumerate(omegas):
+                    fd.write(f'{first + i},{omega!r},{kind}\n')
+                if check:
+                    ref = numpy_spectrum(int(n), ends, kind)
+                    # On omega^2 over the largest, so that the rigid mode's round-off
+                    # (omega ~ 1e-7, the square root of ~1e-14) counts as what it is.
+                    top = max(ref) ** 2
+                    d = max(abs(a * a - b * b) / top for a, b in zip(omegas, ref))
+                    worst = max(worst, d)
+                    print(f'check eigen fig6 {name:16s} {kind}: max |omega_sfepy^2 - '
+                          f'omega_numpy^2| / omega_max^2 = {d:.2e}')
+    with open(os.path.join(directory, 'results.toml'), 'w') as fd:
+        fd.write(f'format = 2\ncode = "sfepy"\nversion = "{sfepy.__version__}"\n')
+    print(f'eigen/fig6: {len(names)} case(s), masses {", ".join(SPECTRUM_MASSES)}')
+    return worst
+
+
+# ----------------------------------------------------------------------------
+# Independent numpy model (--check): central difference, half-step form.
+# ----------------------------------------------------------------------------
+def numpy_cd(scene, nodes, times, dt, kind, extra_steps=()):
+    """Half-step central difference on the same bar, masses assembled here (methods.md §2, §5):
+    a^0 = M^-1 F0, v^{1/2} = dt/2 a^0, u^{n+1} = u^n + dt v^{n+1/2},
+    v^{n+3/2} = v^{n+1/2} + dt M^-1 (F0 - K u^{n+1}). Returns {step: nodal u, fixed node
+    included} at the output steps and `extra_steps`."""
+    E, rho = element_properties(scene, nodes)
+    n = len(nodes) - 1
+    h = np.diff(nodes)
+    size = n + 1
+    k = np.zeros((size, size))
+    mc = np.zeros((size, size))
+    ml = np.zeros((size, size))
+    cr = np.zeros((size, size))
+    for e in range(n):
+        ix = np.ix_([e, e + 1], [e, e + 1])
+        me = rho[e] * AREA * h[e]
+        k[ix] += E[e] * AREA / h[e] * np.array([[1.0, -1.0], [-1.0, 1.0]])
+        mc[ix] += me / 6.0 * np.array([[2.0, 1.0], [1.0, 2.0]])
+        ml[ix] += me / 2.0 * np.eye(2)
+        cr[ix] += me / (2.0 * (1.0 + 2.0 * BETA)) * np.array(
+            [[2.0 + BETA, BETA - 1.0], [BETA - 1.0, 2.0 + BETA]])
+    fr = slice(0, n)   # free DOFs: the fixed last node deleted
+    if kind == 'lmm':
+        minv = np.diag(1.0 / np.diag(ml)[fr])
+    elif kind == 'cmm':
+        minv = np.linalg.inv(mc[fr, fr])
+    elif kind == 'amm':
+        minv = np.linalg.inv((1.0 - BETA) * mc[fr, fr] + BETA * ml[fr, fr])
+    else:
+        a = np.diag(ml)
+        minv = (cr / a[:, None] / a[None, :])[fr, fr]
+    kf = k[fr, fr]
+    f = np.zeros(n)
+    f[0] = F0
+    wanted = {s for _, s in times} | set(extra_steps)
+    u = np.zeros(n)
+    v = 0.5 * dt * (minv @ f)
     out = {}
-    for step in range(1, n_steps + 1):
+    for step in range(1, max(wanted) + 1):
         u = u + dt * v
-        a = minv @ (F - Kf @ u)
-        v = v + dt * a
-        if step in out_steps:
+        v = v + dt * (minv @ (f - kf @ u))
+        if step in wanted:
             out[step] = np.r_[u, 0.0]
     return out
 
 
-def exact_stress(x_left, x_right, t):
-    """d'Alembert element averages (methods.md §3), homogeneous free-fixed bar."""
-    def prim(x):  # integral of sigma(., t) from 0 to x
-        s = np.zeros_like(x)
-        for k in range(20):
-            sg = (-1.0) ** k
-            # H(t - (2kL + x)/c): active for x < c t - 2kL
-            a1 = C * t - 2 * k * L
-            s += sg * np.clip(np.minimum(x, a1), 0.0, None) * (a1 > 0)
-            # H(t - (2(k+1)L - x)/c): active for x > 2(k+1)L - c t
-            a2 = 2 * (k + 1) * L - C * t
-            s += sg * np.clip(x - np.maximum(a2, 0.0), 0.0, None)
-        return SIGMA0 * s
-    return (prim(x_right) - prim(x_left)) / (x_right - x_left)
+def check_case(scene, nodes, times, dt, kind, res, load_log):
+    """SfePy's run against the numpy model; returns (largest stress difference, report)."""
+    h = np.diff(nodes)
+    E, _ = element_properties(scene, nodes)
+    n_steps = res['steps']
+    ref = numpy_cd(scene, nodes, times, dt, kind, extra_steps=(n_steps - 1,))
+    worst = 0.0
+    lines = []
+    for t, step in times:
+        ts_time, u, sig = res['profiles'][t]
+        d = float(np.abs(sig - E * np.diff(ref[step]) / h).max())
+        worst = max(worst, d)
+        lines.append(f'   t={t:.6g}: ts.time-t={ts_time - t:+.1e} '
+                     f'max|sig_sfepy-sig_numpy|={d:.2e} '
+                     f'max|ev_cauchy_stress-E du/h|={np.abs(sig - E * np.diff(u) / h).max():.1e}')
+    ur = res['u_returned']
+    lines.append(
+        f'   pb.solve() state: |u-u_np(t1-dt)|={np.abs(ur - ref[n_steps - 1]).max():.1e} '
+        f'|u-u_np(t1)|={np.abs(ur - ref[n_steps]).max():.1e}; load evaluated '
+        f'{len(load_log)}x, t={load_log[0][1]:g}..{load_log[-1][1]:.10g}; '
+        f'ts.dt-dt={res["sfepy_dt"] - dt:+.1e}')
+    return worst, '\n'.join(lines)
 
 
 # ----------------------------------------------------------------------------
 # Output.
 # ----------------------------------------------------------------------------
-def write_csv(path, res):
-    with open(path, 'w') as fd:
-        fd.write('t,x_left,x_right,stress\n')
-        for t in PROFILE_TIMES:
-            sig = res['profiles'][t][2]
-            for xl, xr, s in zip(res['x_left'], res['x_right'], sig):
-                # float(): numpy 2 reprs np.float64 as 'np.float64(...)'.
-                fd.write(f'{t!r},{float(xl)!r},{float(xr)!r},{float(s)!r}\n')
-
-
-def write_toml(path, rows):
-    with open(path, 'w') as fd:
-        fd.write('format = 1\n')
-        fd.write('code = "sfepy"\n')
-        fd.write(f'version = "{sfepy.__version__}"\n')
-        for name, kind, res in rows:
+def write_set(directory, rows):
+    os.makedirs(directory, exist_ok=True)
+    for name, kind, nodes, dt, res in rows:
+        with open(os.path.join(directory, f'{name}.csv'), 'w') as fd:
+            fd.write('t,x_left,x_right,stress\n')
+            for t in sorted(res['profiles']):
+                for xl, xr, s in zip(nodes[:-1], nodes[1:], res['profiles'][t][2]):
+                    # float(): numpy 2 reprs np.float64 as 'np.float64(...)'.
+                    fd.write(f'{t!r},{float(xl)!r},{float(xr)!r},{float(s)!r}\n')
+    with open(os.path.join(directory, 'results.toml'), 'w') as fd:
+        fd.write(f'format = 2\ncode = "sfepy"\nversion = "{sfepy.__version__}"\n')
+        for name, kind, nodes, dt, res in rows:
             fd.write(f'\n[cases."{name}"]\n')
             fd.write('scheme = "central-difference"\n')
             fd.write(f'mass = "{MASS_SETUP[kind]["label"]}"\n')
-            fd.write(f'dt = {float(res["dt"])!r}\n')
-            fd.write(f'elements = {N_EL}\n')
+            fd.write(f'dt = {float(dt)!r}\n')
+            fd.write(f'elements = {len(nodes) - 1}\n')
+            if res['wall'] is not None:
+                fd.write(f'wall_s = {res["wall"]:.6g}\n')
+                fd.write(f'steps = {res["steps"]}\n')
+
+
+def write_courant_times(path, rows, repeat):
+    """courant's times on the cases SfePy ran, measured right after SfePy's, on this machine."""
+    measured = time.strftime('%Y-%m-%d')
+    cpu = cpu_name().replace(',', ' ')
+    with open(path, 'w') as fd:
+        fd.write('scene,case,steps,courant_wall_s,repeat,measured,cpu\n')
+        for scene, case, steps, wall in rows:
+            fd.write(f'{scene},{case},{steps},{wall:.6g},{repeat},{measured},{cpu}\n')
+
+
+def cpu_name():
+    try:
+        for line in open('/proc/cpuinfo'):
+            if line.startswith('model name'):
+                return line.split(':', 1)[1].strip()
+    except OSError:
+        pass
+    return 'unknown CPU'
+
+
+def without_wall(text):
+    """results.toml without its `wall_s` lines (machine-specific; not compared)."""
+    return [l for l in text.splitlines() if not l.startswith('wall_s =')]
 
 
 def compare_dirs(fresh, committed, tolerance):
-    """Max |stress difference| per file between two result directories; the
-    rows (t, x_left, x_right) must be identical.  Returns the failures."""
-    failures = []
-    names = sorted(n for n in os.listdir(committed) if n.endswith('.csv'))
-    if names != sorted(n for n in os.listdir(fresh) if n.endswith('.csv')):
-        return [f'{fresh}: files differ from {committed}']
-    for name in names:
-        a = np.genfromtxt(os.path.join(fresh, name), delimiter=',', names=True)
-        b = np.genfromtxt(os.path.join(committed, name), delimiter=',',
-                          names=True)
-        keys = ('t', 'x_left', 'x_right')
-        if a.shape != b.shape or any(not np.array_equal(a[k], b[k])
-                                     for k in keys):
-            failures.append(f'{name}: rows differ')
-            continue
-        diff = float(np.abs(a['stress'] - b['stress']).max()) / abs(SIGMA0)
-        status = 'ok' if diff <= tolerance else 'DIFFERS'
-        print(f'  {name}: max |stress - committed| / |sigma0| = {diff:.2e} '
-              f'({status}, tolerance {tolerance:g})')
-        if diff > tolerance:
-            failures.append(f'{name}: {diff:.2e} > {tolerance:g}')
-    return failures
+    """Every file of `committed` is in `fresh` with the same rows (times, element ends, modes and
+    masses as written), every stress within `tolerance` |sigma0| and every frequency within
+    `tolerance` relative, results.toml the same but for `wall_s`. Returns the failures."""
+    bad = []
+    for root, _, files in os.walk(committed):
+        rel = os.path.relpath(root, committed)
+        for f in sorted(files):
+            if f == 'stated.toml':   # courant's statement about the set, not the driver's
+                continue
+            a, b = os.path.join(root, f), os.path.join(fresh, rel, f)
+            if not os.path.exists(b):
+                bad.append(f'{b}: missing')
+                continue
+            if f.endswith('.toml'):
+                if without_wall(open(a).read()) != without_wall(open(b).read()):
+                    bad.append(f'{b}: differs from {a} (wall_s aside)')
+                continue
+            la, lb = open(a).read().splitlines(), open(b).read().splitlines()
+            if len(la) != len(lb) or la[0] != lb[0]:
+                bad.append(f'{b}: header or length differs from {a}')
+                continue
+            spectrum = la[0] == 'mode,omega,mass'
+            worst = 0.0
+            for i, (x, y) in enumerate(zip(la[1:], lb[1:]), start=2):
+                x, y = x.split(','), y.split(',')
+                if spectrum:
+                    same_rows = (x[0], x[2]) == (y[0], y[2])
+                    d = abs(float(x[1]) - float(y[1])) / max(abs(float(x[1])), 1.0)
+                else:
+                    same_rows = x[:3] == y[:3]
+                    d = abs(float(x[3]) - float(y[3])) / abs(SIGMA0)
+                if not same_rows:
+                    bad.append(f'{b}:{i}: row {y} against {x}')
+                    break
+                worst = max(worst, d)
+            if worst > tolerance:
+                bad.append(f'{b}: differs by {worst:.2e} > {tolerance:g}')
+    return bad
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    parser.add_argument('--scene', choices=['fig1', 'fig1_masses', 'all'],
-                        default='all')
-    parser.add_argument('--out', default=os.path.join(here, 'results'),
-                        help='output root directory (default: results/ '
-                             'beside this file)')
-    parser.add_argument('--check', action='store_true',
-                        help='compare with an independent numpy CD')
-    parser.add_argument('--naive-readback', action='store_true',
-                        help='read the state back after pb.solve() (one step '
-                             'late: the trap, for the record)')
-    parser.add_argument('--compare-with', metavar='DIR',
-                        help='after writing, compare with the result '
-                             'directories in DIR; exit 1 if they differ')
-    parser.add_argument('--tolerance', type=float, default=1e-10,
-                        help='largest |stress difference| / |sigma0| '
-                             'accepted by --compare-with (default 1e-10)')
-    args = parser.parse_args()
-
-    scenes = ['fig1', 'fig1_masses'] if args.scene == 'all' else [args.scene]
-    t_start = time.perf_counter()
-    failures = []
+    p = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    p.add_argument('--scene', choices=SCENES + ('fig6', 'all'), default='all')
+    p.add_argument('--out', default=os.path.join(HERE, 'results'))
+    p.add_argument('--courant', default=None,
+                   help='the courant binary (default: cargo run --release --)')
+    p.add_argument('--compare-with', metavar='DIR', default=None,
+                   help='after writing, compare with the sets in DIR; exit 1 if they differ')
+    p.add_argument('--tolerance', type=float, default=1e-10,
+                   help='largest |stress difference| / |sigma0| (and relative frequency '
+                        'difference) --compare-with accepts (default 1e-10)')
+    p.add_argument('--check', action='store_true',
+                   help='compare every run with an independent numpy model')
+    p.add_argument('--repeat', type=int, default=3,
+                   help='runs per case; wall_s is their median (default 3)')
+    p.add_argument('--naive-readback', action='store_true',
+                   help='read the state back after pb.solve() (one step late: the trap)')
+    p.add_argument('--courant-times', default=None,
+                   help="write courant's times on the same cases here; default: "
+                        'external/sfepy/courant_times.csv when every set is regenerated in place')
+    args = p.parse_args()
+    courant = ([args.courant] if args.courant else
+               ['cargo', 'run', '--quiet', '--release', '--manifest-path',
+                os.path.join(ROOT, 'Cargo.toml'), '--'])
+    scenes = SCENES if args.scene == 'all' else tuple(s for s in (args.scene,) if s != 'fig6')
+    in_place = os.path.abspath(args.out) == os.path.join(HERE, 'results')
+    times_file = args.courant_times or (os.path.join(HERE, 'courant_times.csv')
+                                        if args.scene == 'all' and in_place
+                                        and not args.naive_readback else None)
+    started = time.perf_counter()
+    worst = 0.0
+    courant_rows = []
+    written = []
     for scene in scenes:
-        t_scene = time.perf_counter()
-        odir = os.path.join(args.out, scene)
-        os.makedirs(odir, exist_ok=True)
+        geometry = courant_cases(courant, scene)
         rows = []
-        for name, kind, co_abs in scene_cases(scene):
-            load_log = []
-            tc = time.perf_counter()
+        for name, kind in scene_cases(scene, sorted(geometry)):
+            nodes, times, dt = geometry[name]
             if args.naive_readback:
-                res = run_sfepy_naive(kind, co_abs)
+                res = run_sfepy_naive(scene, nodes, times, dt, kind)
             else:
-                res = run_sfepy(kind, co_abs, load_log)
-            tc = time.perf_counter() - tc
-            write_csv(os.path.join(odir, f'{name}.csv'), res)
-            rows.append((name, kind, res))
-            msg = (f'{scene}/{name}: mass={kind} Co={res["dt"] / H * C:.10g} '
-                   f'dt={res["dt"]!r} steps={res["n_steps"]} wall={tc:.2f}s')
+                runs = []
+                for _ in range(max(1, args.repeat)):
+                    load_log = []
+                    runs.append((run_sfepy(scene, nodes, times, dt, kind, load_log), load_log))
+                res, load_log = runs[-1]
+                res['wall'] = statistics.median(r['wall'] for r, _ in runs)
+            msg = (f'{scene}/{name}: mass={kind} dt={dt!r} steps={res["steps"]}'
+                   + (f' wall_s={res["wall"]:.4f}' if res['wall'] is not None else ''))
             if args.check and not args.naive_readback:
-                msg += '\n' + check_case(kind, res, load_log)
+                d, report = check_case(scene, nodes, times, dt, kind, res, load_log)
+                worst = max(worst, d)
+                msg += f' check max|sfepy-numpy|={d:.2e}\n' + report
             print(msg, flush=True)
-        write_toml(os.path.join(odir, 'results.toml'), rows)
-        print(f'{scene}: wall {time.perf_counter() - t_scene:.2f} s', flush=True)
-        if args.compare_with:
-            failures += compare_dirs(odir, os.path.join(args.compare_with, scene),
-                                     args.tolerance)
-    print(f'total wall {time.perf_counter() - t_start:.2f} s')
-    if failures:
-        print('differs from the committed results:\n  ' + '\n  '.join(failures))
-        sys.exit(1)
-
-
-def check_case(kind, res, load_log):
-    """Cross-check one SfePy run; returns a printable report."""
-    dt, n_steps = res['dt'], res['n_steps']
-    out_steps = {round(t / dt): t for t in PROFILE_TIMES}
-    ref = numpy_cd(kind, dt, n_steps, list(out_steps) + [n_steps - 1])
-    lines = []
-    for step, t in sorted(out_steps.items()):
-        ts_time, u, sig = res['profiles'][t]
-        sig_np = E * np.diff(ref[step]) / H
-        sig_u = E * np.diff(u) / H          # stress from SfePy's nodal u
-        line = (f'   t={t}: ts.time-t={ts_time - t:+.1e} '
-                f'max|sig_sfepy-sig_numpy|={np.abs(sig - sig_np).max():.2e} '
-                f'max|u_sfepy-u_numpy|={np.abs(u - ref[step]).max():.2e} '
-                f'max|ev_cauchy_stress-E du/h|={np.abs(sig - sig_u).max():.1e}')
-        if kind == 'lmm':
-            ex = exact_stress(res['x_left'], res['x_right'], t)
-            line += f' max|sig-exact|={np.abs(sig - ex).max():.2e}'
-        lines.append(line)
-    # The trap: pb.solve()'s returned state equals the numpy state at N-1.
-    ur = res['u_returned']
-    lines.append(
-        f'   pb.solve() state: |u-u_np(t1-dt)|={np.abs(ur - ref[n_steps - 1]).max():.1e}'
-        f' |u-u_np(t1)|={np.abs(ur - ref[n_steps]).max():.1e}'
-        f'; load evaluated {len(load_log)}x at steps {load_log[0][0]}..'
-        f'{load_log[-1][0]}, t={load_log[0][1]:g}..{load_log[-1][1]:.10g}'
-        f'; sfepy ts.dt-dt={res["sfepy_dt"] - dt:+.1e}')
-    return '\n'.join(lines)
+            rows.append((name, kind, nodes, dt, res))
+        write_set(os.path.join(args.out, scene), rows)
+        written.append(scene)
+        if times_file:
+            walls = courant_walls(courant, scene, args.repeat)
+            courant_rows += [(scene, name, *walls[name]) for name, *_ in rows]
+    if args.scene in ('all', 'fig6') and not args.naive_readback:
+        worst = max(worst, write_spectra(os.path.join(args.out, 'eigen', 'fig6'), courant,
+                                         args.check))
+        written.append(os.path.join('eigen', 'fig6'))
+    if times_file:
+        courant_rows = [(s, c, steps, w) for s, c, w, steps in courant_rows]
+        write_courant_times(times_file, courant_rows, args.repeat)
+        print(f"courant's times: {times_file}")
+    print(f'total wall {time.perf_counter() - started:.2f} s')
+    if args.check:
+        print(f'check: largest difference from the numpy models {worst:.2e}')
+        if worst > 1e-9:
+            sys.exit(1)
+    if args.compare_with:
+        bad = [b for d in written for b in compare_dirs(
+            os.path.join(args.out, d), os.path.join(args.compare_with, d), args.tolerance)]
+        for b in bad:
+            print(b, file=sys.stderr)
+        if bad:
+            sys.exit(1)
+        print(f'compare: {args.out} equals {args.compare_with} (wall_s aside; stresses '
+              f'within {args.tolerance:g} |sigma0|)')
 
 
 if __name__ == '__main__':

@@ -44,10 +44,11 @@ impl CommittedSet {
 /// listed by `build.rs` from `external/<code>/results/`, every file of each directory included.
 pub const COMMITTED: &[CommittedSet] = include!(concat!(env!("OUT_DIR"), "/committed_sets.rs"));
 
-/// The cost tables committed beside other codes' results (`external/<code>/cost.csv`: per case,
-/// the code's and courant's wall times measured together on one machine by its regenerate
-/// command), as `(code, text)`.
-pub const COSTS: &[(&str, &str)] = include!(concat!(env!("OUT_DIR"), "/committed_costs.rs"));
+/// courant's times on the cases another code ran (`external/<code>/courant_times.csv`: per
+/// scene and case, the steps and courant's wall time, measured by that code's driver right after
+/// its own, whose times are the `wall_s` of its sets), as `(code, text)`.
+pub const COURANT_TIMES: &[(&str, &str)] =
+    include!(concat!(env!("OUT_DIR"), "/committed_courant_times.rs"));
 
 #[cfg(test)]
 mod tests {

@@ -12,6 +12,8 @@
 //! mass = "lumped"            # lmm/lumped, cmm/consistent, amm(beta), rmm(beta)
 //! dt = 0.005                 # the time step (time-level offsets are counted in steps of it)
 //! elements = 100             # the number of elements
+//! wall_s = 0.0123            # the code's own time for the run, s (format 2; median of >= 3 runs)
+//! steps = 300                # the time steps the run took (format 2)
 //! ```
 //!
 //! `scheme`, `parameters` and `mass` say which of the scene's signature rows apply to the case
@@ -70,6 +72,11 @@ pub struct CaseMeta {
     pub dt: Option<f64>,
     /// Number of elements, with its line.
     pub elements: Option<(usize, usize)>,
+    /// The producing code's own wall time for the run, in seconds, measured by its driver
+    /// around its time loop (format 2). Machine-specific: compared only as a ratio.
+    pub wall_s: Option<f64>,
+    /// The time steps the run took (format 2).
+    pub steps: Option<usize>,
     /// Line of the case's table header.
     pub line: usize,
 }
@@ -114,13 +121,17 @@ struct RawCaseMeta {
     mass: Option<Spanned<String>>,
     dt: Option<Spanned<toml::Value>>,
     elements: Option<Spanned<i64>>,
+    wall_s: Option<Spanned<toml::Value>>,
+    steps: Option<Spanned<toml::Value>>,
 }
 
 /// Read `results.toml` (`file` names it in messages).
 ///
 /// # Errors
 /// TOML that does not parse, an unknown key, a format newer than this courant reads, a `dt`
-/// that is not a positive finite number, `elements` below 1; each naming line, column and key.
+/// or `wall_s` that is not a positive finite number, `elements` below 1, `steps` that is not a
+/// positive integer, a format-2 key (`parameters`, `wall_s`, `steps`) in a file that says
+/// format 1; each naming line, column and key.
 pub fn parse(file: &str, text: &str) -> Result<ResultsMeta, ExchangeError> {
     let at = |offset: usize, key: &str, message: String| {
         let (line, column) = line_column(text, offset);
@@ -190,6 +201,44 @@ pub fn parse(file: &str, text: &str) -> Result<ResultsMeta, ExchangeError> {
                 ));
             }
         };
+        let format_2 = |k: &str, offset: usize| {
+            at(
+                offset,
+                &key(k),
+                format!(
+                    "`{k}` is a key of format 2; this file says format = {format} (write format = 2)"
+                ),
+            )
+        };
+        let wall_s = match raw.wall_s {
+            None => None,
+            Some(v) if format < 2 => return Err(format_2("wall_s", v.span().start)),
+            Some(v) => match v.get_ref() {
+                toml::Value::Float(x) if x.is_finite() && *x > 0.0 => Some(*x),
+                toml::Value::Integer(i) if *i > 0 => Some(*i as f64),
+                other => {
+                    return Err(at(
+                        v.span().start,
+                        &key("wall_s"),
+                        format!("{other} must be a positive finite number of seconds"),
+                    ));
+                }
+            },
+        };
+        let steps = match raw.steps {
+            None => None,
+            Some(v) if format < 2 => return Err(format_2("steps", v.span().start)),
+            Some(v) => match v.get_ref() {
+                toml::Value::Integer(i) if *i >= 1 => Some(*i as usize),
+                other => {
+                    return Err(at(
+                        v.span().start,
+                        &key("steps"),
+                        format!("{other} must be a whole number of steps, at least 1"),
+                    ));
+                }
+            },
+        };
         let mass = raw.mass.map(|m| {
             let (line, column) = line_column(text, m.span().start);
             (m.into_inner(), line, column)
@@ -243,6 +292,8 @@ pub fn parse(file: &str, text: &str) -> Result<ResultsMeta, ExchangeError> {
                 mass,
                 dt,
                 elements,
+                wall_s,
+                steps,
                 line: header,
             },
         );
@@ -317,6 +368,12 @@ pub fn render(code: &str, version: &str, cases: &[(String, CaseMeta)]) -> String
         if let Some((n, _)) = meta.elements {
             out += &format!("elements = {n}\n");
         }
+        if let Some(w) = meta.wall_s {
+            out += &format!("wall_s = {w:?}\n");
+        }
+        if let Some(n) = meta.steps {
+            out += &format!("steps = {n}\n");
+        }
     }
     out
 }
@@ -333,6 +390,8 @@ mod tests {
             mass: Some(("rmm(0.5)".into(), 0, 0)),
             dt: Some(0.1 + 0.2),
             elements: Some((100, 0)),
+            wall_s: Some(0.0125),
+            steps: Some(300),
             ..CaseMeta::default()
         };
         let text = render("courant", "0.1.0", &[("co0.5".into(), case)]);
@@ -344,6 +403,7 @@ mod tests {
         assert_eq!(c.elements.map(|e| e.0), Some(100));
         assert_eq!(c.mass.as_ref().map(|m| m.0.as_str()), Some("rmm(0.5)"));
         assert_eq!(c.scheme.as_deref(), Some("noh-bathe"));
+        assert_eq!((c.wall_s, c.steps), (Some(0.0125), Some(300)));
         assert_eq!(c.parameters[0].0, "p");
         assert_eq!(c.parameters[0].1.value, MetaValue::Number(0.54));
         assert_eq!(c.parameters[0].1.line, 7, "{text}");
@@ -382,5 +442,84 @@ mod tests {
         );
         let e = parse("r.toml", "format = \"1\"\n").unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (1, "format"), "{e}");
+    }
+
+    /// The cost keys of format 2 (README, "Results exchange format"): `wall_s` a positive finite
+    /// number, `steps` a positive integer, both refused in a format-1 file; each error names its
+    /// line and key.
+    #[test]
+    fn wall_time_and_steps_are_checked_and_located() {
+        let ok = parse(
+            "r.toml",
+            "format = 2\n[cases.a]\nwall_s = 0.5\nsteps = 3\n[cases.b]\n",
+        )
+        .unwrap();
+        assert_eq!(
+            ok.case("a").map(|c| (c.wall_s, c.steps)),
+            Some((Some(0.5), Some(3)))
+        );
+        assert_eq!(
+            ok.case("b").map(|c| (c.wall_s, c.steps)),
+            Some((None, None))
+        );
+        for (text, line, key, words) in [
+            (
+                "format = 2\n[cases.a]\nwall_s = 0.0\n",
+                3,
+                "wall_s",
+                "positive finite",
+            ),
+            (
+                "format = 2\n[cases.a]\nwall_s = -1\n",
+                3,
+                "wall_s",
+                "positive finite",
+            ),
+            (
+                "format = 2\n[cases.a]\nwall_s = nan\n",
+                3,
+                "wall_s",
+                "positive finite",
+            ),
+            (
+                "format = 2\n[cases.a]\nwall_s = inf\n",
+                3,
+                "wall_s",
+                "positive finite",
+            ),
+            (
+                "format = 2\n[cases.a]\nwall_s = \"1 s\"\n",
+                3,
+                "wall_s",
+                "positive finite",
+            ),
+            (
+                "format = 2\n[cases.a]\n\nsteps = 0\n",
+                4,
+                "steps",
+                "whole number",
+            ),
+            (
+                "format = 2\n[cases.a]\nsteps = 2.5\n",
+                3,
+                "steps",
+                "whole number",
+            ),
+            ("format = 1\n[cases.a]\nsteps = 2\n", 3, "steps", "format 2"),
+            (
+                "format = 1\n[cases.a]\nwall_s = 2\n",
+                3,
+                "wall_s",
+                "format 2",
+            ),
+        ] {
+            let e = parse("r.toml", text).unwrap_err();
+            assert_eq!(
+                (e.line, e.key.as_str()),
+                (line, format!("cases.\"a\".{key}").as_str()),
+                "{text}: {e}"
+            );
+            assert!(e.message.contains(words), "{text}: {e}");
+        }
     }
 }

@@ -26,8 +26,8 @@
 //!   in any order (they are sorted by position) but must not overlap; force-history times
 //!   increase strictly;
 //! - an optional `results.toml` ([`meta`]): `format` (default 1), `code`, `version`, and per case
-//!   `[cases."<case>"]` with `scheme`, `parameters`, `mass`, `dt`, `elements`; unknown keys are
-//!   errors.
+//!   `[cases."<case>"]` with `scheme`, `parameters`, `mass`, `dt`, `elements`, `wall_s` and
+//!   `steps` (the code's own time for the run and its steps); unknown keys are errors.
 //!
 //! Versioning: `results.toml`'s `format` is the version (absent: 1). A reader refuses a format
 //! newer than [`FORMAT`]; any change a format-1 reader would not read correctly (a new column or
