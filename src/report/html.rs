@@ -3,6 +3,7 @@
 //! left-aligned and numbers right-aligned, verdict cells are coloured, every section ends with a
 //! link back to the top, and the page reads in light and dark mode.
 
+use super::citations;
 use super::document::{Block, Inline, anchor};
 use super::numbers::shown;
 use crate::results::table::Cell;
@@ -54,7 +55,7 @@ fn code_spans(text: &str) -> String {
         if i % 2 == 1 {
             out += &format!("<code>{part}</code>");
         } else {
-            out += part;
+            out += &citations::html(part);
         }
     }
     out
@@ -159,7 +160,7 @@ pub fn html(title: &str, blocks: &[Block]) -> String {
                         out += &format!(
                             "<td class=\"{}\">{}</td>",
                             cell_class(column, cell, text),
-                            escape(text)
+                            citations::html(&escape(text))
                         );
                     }
                     out += "</tr>\n";
@@ -195,7 +196,7 @@ pub fn html(title: &str, blocks: &[Block]) -> String {
                 out += &format!(
                     "<figure>\n{}\n<figcaption>{}</figcaption>\n</figure>\n",
                     body.trim(),
-                    escape(caption)
+                    citations::html(&escape(caption))
                 );
             }
         }
