@@ -78,6 +78,10 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         include_str!("../../scenes/contact_extremes.toml"),
     ),
     ("pc_ratio", include_str!("../../scenes/pc_ratio.toml")),
+    (
+        "contact_impact_stability",
+        include_str!("../../scenes/contact_impact_stability.toml"),
+    ),
 ];
 
 /// The text of a built-in scene.
