@@ -50,7 +50,7 @@ pub fn judge(expectation: &Expectation, case: String, measured: Measured) -> Ver
         measured,
         bound: expectation.bound,
         pass,
-        finding: false,
+        finding: pass && expectation.finding,
         source: expectation.source.clone(),
     }
 }

@@ -199,8 +199,9 @@ pub fn head(
         })
         .collect();
     page.push(Block::Paragraph(format!(
-        "{} verdicts: {} pass, {} findings ({} runs of courant's that disagree with stability theory \
-         as their scene states, with its source; {} findings of other codes, stated beside their \
+        "{} verdicts: {} pass, {} findings ({} verdicts on courant's runs that their scene states as \
+         findings, each with its source: a disagreement with stability theory, or a claim of the seed \
+         that does not hold as stated; {} findings of other codes, stated beside their \
          results), {} FAIL. Verdicts are the scenes' expectations, the stability verdict of every case \
          of a stability scene, the convergence-order bands and the checks of other codes' committed \
          results.",

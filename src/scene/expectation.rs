@@ -306,6 +306,9 @@ pub struct Expectation {
     pub force: Option<ForceMeasure>,
     /// An error bound or a signature of the case's scheme and mass.
     pub kind: RowKind,
+    /// A stated finding (`finding = true`): a row that measures where a claim of the seed does
+    /// not hold as stated; its verdict passes as a finding while the bound holds.
+    pub finding: bool,
     /// Where the bound comes from.
     pub source: String,
 }
@@ -590,6 +593,7 @@ pub(super) fn expectation(
         masses,
         force,
         kind,
+        finding: raw.finding.unwrap_or(false),
         source: raw.source.clone(),
     })
 }
