@@ -82,6 +82,10 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         "contact_impact_stability",
         include_str!("../../scenes/contact_impact_stability.toml"),
     ),
+    (
+        "fig2_park_printed",
+        include_str!("../../scenes/fig2_park_printed.toml"),
+    ),
 ];
 
 /// The text of a built-in scene.
