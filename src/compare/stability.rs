@@ -227,7 +227,7 @@ impl StabilityRow {
     }
 
     /// What the run did: `diverged` (the guard stopped it), `energy growth x<ratio>` (completed,
-    /// energy beyond [`ENERGY_BAND`]), `energy created <fraction>` (completed, more than
+    /// energy beyond [`ENERGY_BAND`]), `energy created <fraction> of the energy scale` (completed, more than
     /// [`ENERGY_CREATED`] of its energy scale created) or `stable`.
     pub fn observed(&self) -> String {
         match self.observed_kind() {
@@ -235,7 +235,10 @@ impl StabilityRow {
                 "energy growth x{:.3}",
                 self.energy_ratio.unwrap_or(f64::NAN)
             ),
-            Observed::EnergyCreated => format!("energy created {:.2e}", self.energy_created),
+            Observed::EnergyCreated => format!(
+                "energy created {:.2e} of the energy scale",
+                self.energy_created
+            ),
             kind => kind.name().into(),
         }
     }
@@ -412,7 +415,10 @@ mod tests {
     fn energy_created_and_stated_findings() {
         let mut created = row("stable", true, Some(1.0));
         created.energy_created = 1.2e-3;
-        assert_eq!(created.observed(), "energy created 1.20e-3");
+        assert_eq!(
+            created.observed(),
+            "energy created 1.20e-3 of the energy scale"
+        );
         assert_eq!(created.agrees(), Some(false));
         assert!(matches!(created.verdict(), Some((false, false, _))));
         let finding = |observed| Finding {
