@@ -86,6 +86,7 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         "fig2_park_printed",
         include_str!("../../scenes/fig2_park_printed.toml"),
     ),
+    ("fig1_airy", include_str!("../../scenes/fig1_airy.toml")),
 ];
 
 /// The text of a built-in scene.
