@@ -245,15 +245,18 @@ impl StabilityRow {
 
     /// Theory and run agree: a predicted-stable run completes with bounded energy, a
     /// predicted-unstable run is caught by the guard, a contact-unstable run stays bounded
-    /// (completes, whatever energy the contact pumps in); a marginal run may do either. `None`
-    /// beyond a sufficient bound, where nothing was predicted.
+    /// (completes, whatever energy the contact pumps in). A marginal run (at the limit, where the
+    /// critical mode has a double root and may grow polynomially, methods.md §2) may stay
+    /// bounded, grow or be caught; energy *created* without growth is the scheme's own defect,
+    /// not the double root, and disagrees there as it does below the limit (one rule for both).
+    /// `None` beyond a sufficient bound, where nothing was predicted.
     pub fn agrees(&self) -> Option<bool> {
         match self.predicted {
             "stable" => Some(self.observed_kind() == Observed::Stable),
             "contact-unstable" => Some(self.completed),
             "unstable" => Some(self.caught.is_some()),
             "beyond bound" => None,
-            _ => Some(true),
+            _ => Some(self.observed_kind() != Observed::EnergyCreated),
         }
     }
 }
