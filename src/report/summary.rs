@@ -11,6 +11,7 @@ use super::tally::Tally;
 use crate::compare::convergence::ConvergenceResult;
 use crate::compare::outcome::SceneOutcome;
 use crate::scene::cases::Scene;
+use crate::scene::expectation::Metric;
 
 /// The anchor of a scene's expectations table.
 pub fn expectations_anchor(scene: &str) -> String {
@@ -158,7 +159,12 @@ pub fn head(
             o.verdicts
                 .iter()
                 .filter(|v| v.finding)
-                .map(move |v| format!("{}/{} ({})", s.name, v.case, v.measured))
+                .map(move |v| match v.metric {
+                    // A stability finding's measure names itself ("energy growth x5.3"); a
+                    // stated row's is a number, shown with its metric.
+                    Metric::Stability => format!("{}/{} ({})", s.name, v.case, v.measured),
+                    metric => format!("{}/{} ({} {})", s.name, v.case, metric.name(), v.measured),
+                })
         })
         .collect();
     // Findings of other codes, one line per code and variant: how many, on which scenes, of
