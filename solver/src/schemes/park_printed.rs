@@ -203,15 +203,14 @@ impl Integrator for ParkPrintedStepper {
         let nodal = model.nodal_mass();
         let (u, v, a) = (&mut self.u, &mut self.v, &mut self.a);
         self.pulled.iter_mut().for_each(|x| *x = 0.0);
-        for e in 0..n - 1 {
+        for (e, &mass) in masses.iter().enumerate() {
             let dt_e = bar.element_transit_time(e);
             let alpha = dt / dt_e;
             let beta1 = alpha * (1.0 + 3.0 * alpha - alpha * alpha) / 6.0;
             let beta2 = alpha * (alpha * alpha - 1.0) / 6.0;
-            let m_e = 0.5 * masses[e];
-            let push = |node: usize| {
-                0.5 * masses[e] / nodal[node] * model.external_force_at(node, t + dt_e)
-            };
+            let m_e = 0.5 * mass;
+            let push =
+                |node: usize| 0.5 * mass / nodal[node] * model.external_force_at(node, t + dt_e);
             let k = model.stiffness()[e];
             let ut = [e, e + 1].map(|i| u[i] + dt_e * v[i] + 0.5 * dt_e * dt_e * a[i]);
             let stretch = ut[1] - ut[0];
