@@ -4,7 +4,7 @@
 //! continuum wave equation and depends on no solver crate, so a finite-element result compared
 //! against it is checked against theory, not against another piece of the same code.
 //! Conventions (units, load sign, Heaviside at t = 0) follow courant's methods note
-//! (`docs/methods.md`, §1-3).
+//! (`docs/methods.md` of the repository, §1-3).
 //!
 //! **Enters:** physical or dimensionless data of a bar (lengths, moduli, densities, areas,
 //! impedances, loads, penalties) and evaluation points. **Leaves:** exact fields, frequencies,

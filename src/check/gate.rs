@@ -140,7 +140,8 @@ pub struct Counts {
     pub total: usize,
     /// Checks failed.
     pub failed: usize,
-    /// Verdicts that pass as stated findings (disagreements with stability theory).
+    /// Verdicts that pass as stated findings (disagreements with stability theory or with a
+    /// claim of the seed).
     pub findings: usize,
     /// Checks skipped (files a report baseline does not keep).
     pub skipped: usize,

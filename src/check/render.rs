@@ -110,7 +110,7 @@ pub fn terminal(report: &CheckReport, verbose: bool) -> String {
     if !findings.is_empty() && !verbose {
         let _ = writeln!(
             out,
-            "\nfindings (disagreements with stability theory the scenes state, with their sources):"
+            "\nfindings (disagreements with stability theory or with a claim of the seed that the scenes state, with their sources):"
         );
         for (scene, v) in &findings {
             let _ = writeln!(out, "  {scene}/{}: {}", v.case, v.excess());

@@ -60,6 +60,13 @@ impl ConvergenceResult {
             .then(|| (ea / eb).ln() / (b.elements as f64 / a.elements as f64).ln())
     }
 
+    /// True when the error decreases strictly from mesh to mesh on the finest [`FIT_LEVELS`]
+    /// meshes.
+    pub fn decreasing(&self, pick: fn(&Level) -> f64) -> bool {
+        let finest = &self.levels[self.levels.len().saturating_sub(FIT_LEVELS)..];
+        finest.len() >= 2 && finest.windows(2).all(|w| pick(&w[1]) < pick(&w[0]))
+    }
+
     /// Least-squares order on the finest [`FIT_LEVELS`] meshes, `-slope` of `ln e` against
     /// `ln N`; `None` when an error there is at round-off level (below 1e-12).
     pub fn fitted_order(&self, pick: fn(&Level) -> f64) -> Option<f64> {
@@ -104,6 +111,10 @@ impl ConvergenceResult {
                         format!("error <= {max_error:e} on every mesh"),
                         Some(self.levels.iter().all(|l| pick(l) <= max_error)),
                     ),
+                    Some(OrderBand::Converges { min }) => (
+                        format!("decreasing on the finest {FIT_LEVELS} meshes, order >= {min}"),
+                        Some(self.decreasing(pick) && fitted.is_some_and(|p| p >= min)),
+                    ),
                 };
                 OrderVerdict {
                     norm,
@@ -144,6 +155,19 @@ impl ConvergenceResult {
                         Bound::Range {
                             min: None,
                             max: Some(max_error),
+                        },
+                    ),
+                    // A non-decreasing error fails even with a positive fitted order: `pass`
+                    // carries both.
+                    OrderBand::Converges { min } => (
+                        Metric::FittedOrder,
+                        v.fitted.map_or(
+                            Measured::Missing("an error at round-off on the finest meshes".into()),
+                            Measured::Value,
+                        ),
+                        Bound::Range {
+                            min: Some(min),
+                            max: None,
                         },
                     ),
                 };

@@ -51,7 +51,7 @@ pub fn judge(expectation: &Expectation, case: String, measured: Measured) -> Ver
         measured,
         bound: expectation.bound,
         pass,
-        finding: false,
+        finding: pass && expectation.finding,
         source: expectation.source.clone(),
     }
 }
@@ -83,7 +83,18 @@ fn measure_all(e: &Expectation, outcome: &SceneOutcome) -> Vec<(String, Measured
         return outcome
             .sweeps
             .iter()
-            .map(|s| ("stability".to_string(), Measured::Value(s.deviation())))
+            .map(|s| {
+                let value = match e.metric {
+                    Metric::UnitCourantDeviation => s.unit_deviation(),
+                    Metric::PenaltyAsymptoteDeviation => s.penalty_asymptote_deviation(),
+                    _ => Some(s.deviation()),
+                };
+                let measured = value.map_or(
+                    Measured::Missing("the sweep has no such curve".into()),
+                    Measured::Value,
+                );
+                ("stability".to_string(), measured)
+            })
             .collect();
     }
     if !outcome.spectra.is_empty() {

@@ -36,6 +36,27 @@ impl SweepResult {
             .map(|r| (r.courant - r.closed_form).abs() / r.closed_form)
             .fold(0.0, f64::max)
     }
+
+    /// Largest `|courant - 1|` over the bipenalty rows with `r <= 1` (methods.md §7: they keep
+    /// the contact-free critical Courant number 1 for every `beta_s`); `None` without such rows.
+    pub fn unit_deviation(&self) -> Option<f64> {
+        self.rows
+            .iter()
+            .filter(|r| r.ratio.is_some_and(|ratio| ratio <= 1.0))
+            .map(|r| (r.courant - 1.0).abs())
+            .reduce(f64::max)
+    }
+
+    /// `|courant sqrt(beta_s/2) - 1|` of the penalty-only row with the largest `beta_s`: the
+    /// closed form `sqrt(2/(1 + sqrt(1 + beta_s^2)))` tends to `sqrt(2/beta_s)` with relative
+    /// error `1/(2 beta_s) + O(beta_s^-2)` (methods.md §7); `None` without penalty-only rows.
+    pub fn penalty_asymptote_deviation(&self) -> Option<f64> {
+        self.rows
+            .iter()
+            .filter(|r| r.ratio.is_none())
+            .max_by(|a, b| a.beta_s.total_cmp(&b.beta_s))
+            .map(|r| (r.courant * (r.beta_s / 2.0).sqrt() - 1.0).abs())
+    }
 }
 
 /// Put the closed-form critical Courant number beside every point of the sweep.

@@ -53,7 +53,8 @@ pub struct Verdict {
     pub bound: Bound,
     /// Whether the bound holds (a stated finding passes).
     pub pass: bool,
-    /// A stability verdict where theory and run disagree as the scene states (`[[finding]]`):
+    /// A stability verdict where theory and run disagree as the scene states (`[[finding]]`), or
+    /// a row stated as a finding (`finding = true`) whose bound holds:
     /// it passes, and is counted apart from the agreements.
     pub finding: bool,
     /// Source of truth of the bound (of the finding, for a finding).

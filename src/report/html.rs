@@ -5,6 +5,7 @@
 //! right-aligned, verdict cells are coloured and a run that did not complete is marked, every
 //! section ends with a link back to the top, and the page reads in light and dark mode.
 
+use super::citations;
 use super::document::{Block, Inline, anchor};
 use super::layout::{column_order, has_status, is_status, needs_a_look, reordered};
 use super::numbers::shown;
@@ -61,7 +62,7 @@ fn code_spans(text: &str) -> String {
         if i % 2 == 1 {
             out += &format!("<code>{part}</code>");
         } else {
-            out += part;
+            out += &citations::html(part);
         }
     }
     out
@@ -112,7 +113,7 @@ fn rows_html(table: &Table, rows: &[(usize, Vec<String>)], order: &[usize]) -> S
             out += &format!(
                 "<td class=\"{}\">{}</td>",
                 cell_class(column, &table.rows[*r][c], &texts[c]),
-                escape(&texts[c])
+                citations::html(&escape(&texts[c]))
             );
         }
         out += "</tr>\n";
@@ -247,7 +248,7 @@ pub fn html(title: &str, blocks: &[Block]) -> String {
                 out += &format!(
                     "<figure>\n{}\n<figcaption>{}</figcaption>\n</figure>\n",
                     body.trim(),
-                    escape(caption)
+                    citations::html(&escape(caption))
                 );
             }
         }

@@ -1,6 +1,7 @@
 //! The document as Markdown (`index.md`): headings, paragraphs, lists, pipe tables with numbers
 //! shown as [`super::numbers`] does and columns in [`super::layout`]'s order, figures as image links to their SVG files.
 
+use super::citations;
 use super::document::{Block, Inline};
 use super::layout::{column_order, reordered};
 use super::numbers::shown;
@@ -19,7 +20,10 @@ fn pipe_table(columns: &[String], rows: &[Vec<String>]) -> String {
     let mut out = format!("| {} |\n", columns.join(" | "));
     out += &format!("|{}\n", "---|".repeat(columns.len()));
     for row in rows {
-        let cells: Vec<String> = row.iter().map(|c| c.replace('|', "\\|")).collect();
+        let cells: Vec<String> = row
+            .iter()
+            .map(|c| citations::markdown(&c.replace('|', "\\|")))
+            .collect();
         out += &format!("| {} |\n", cells.join(" | "));
     }
     out
@@ -31,9 +35,11 @@ pub fn markdown(blocks: &[Block]) -> String {
     for b in blocks {
         match b {
             Block::Heading(level, text) => out += &format!("{} {text}\n\n", "#".repeat(*level)),
-            Block::Paragraph(text) => out += &format!("{text}\n\n"),
+            Block::Paragraph(text) => out += &format!("{}\n\n", citations::markdown(text)),
             Block::List(items) => {
-                items.iter().for_each(|i| out += &format!("- {i}\n"));
+                items
+                    .iter()
+                    .for_each(|i| out += &format!("- {}\n", citations::markdown(i)));
                 out += "\n";
             }
             Block::Links(links) => {

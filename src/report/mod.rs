@@ -15,13 +15,15 @@
 //!   split so that each stays legible;
 //! - sections: [`summary`], [`scenes`], [`convergence`], [`work_precision`], [`stability`],
 //!   [`other_codes`] (another code's committed results beside courant's), [`timing`] (with
-//!   [`bench_table`]).
+//!   [`bench_table`]); [`citations`]: the methods page and reference list carried beside the
+//!   report, and every `methods.md §N` linked to its section.
 //!
 //! Enters: compared outcomes (`compare`, run by `pipeline`). Leaves: the report's files, in
 //! memory (written whole by `io::atomic`). Must not know: how outcomes are run or compared, the
 //! command line.
 
 pub mod bench_table;
+pub mod citations;
 pub mod convergence;
 pub mod cost_across_codes;
 pub mod document;
@@ -102,6 +104,24 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
             &runs.other_codes,
         ));
     }
+    page.push(Block::Heading(2, "Sources".into()));
+    page.push(Block::Paragraph(
+        "Every `source` above names what says it: a formula of courant's methods page (cited as \
+         methods.md §N and linked to its section), a figure or equation of the seed or another \
+         paper or book (full citations in the reference list), or \"measured here\" with what was \
+         measured. Both pages are copied beside this report from the repository's `docs/`."
+            .into(),
+    ));
+    page.push(Block::Links(vec![
+        document::Inline::link(
+            "methods.md: conventions and formulas, with derivations",
+            citations::METHODS_FILE,
+        ),
+        document::Inline::link(
+            "references.md: the seed and every paper or book a source names",
+            citations::REFERENCES_FILE,
+        ),
+    ]));
     page.push(Block::Heading(2, "How this report was made".into()));
     let (command, ci) = if runs.convergence.is_empty() {
         ("`courant report` with scene names or files", "")
@@ -122,6 +142,11 @@ pub fn render(scenes: &[Scene], runs: &ReportRuns) -> Result<Report, String> {
         runs.convergence.len()
     )));
     let Page { blocks, mut files } = page;
+    files.push((citations::METHODS_FILE.into(), citations::METHODS.into()));
+    files.push((
+        citations::REFERENCES_FILE.into(),
+        citations::REFERENCES.into(),
+    ));
     files.push(("index.md".into(), markdown::markdown(&blocks)));
     files.push((
         "index.html".into(),

@@ -11,6 +11,7 @@ use super::tally::Tally;
 use crate::compare::convergence::ConvergenceResult;
 use crate::compare::outcome::SceneOutcome;
 use crate::scene::cases::Scene;
+use crate::scene::expectation::Metric;
 
 /// The anchor of a scene's expectations table.
 pub fn expectations_anchor(scene: &str) -> String {
@@ -173,7 +174,12 @@ pub fn head(
             o.verdicts
                 .iter()
                 .filter(|v| v.finding)
-                .map(move |v| format!("{}/{} ({})", s.name, v.case, v.measured))
+                .map(move |v| match v.metric {
+                    // A stability finding's measure names itself ("energy growth x5.3"); a
+                    // stated row's is a number, shown with its metric.
+                    Metric::Stability => format!("{}/{} ({})", s.name, v.case, v.measured),
+                    metric => format!("{}/{} ({} {})", s.name, v.case, metric.name(), v.measured),
+                })
         })
         .collect();
     // Findings of other codes, one line per code and variant: how many, on which scenes, of
@@ -214,8 +220,9 @@ pub fn head(
         })
         .collect();
     page.push(Block::Paragraph(format!(
-        "{} verdicts: {} pass, {} findings ({} runs of courant's that disagree with stability theory \
-         as their scene states, with its source; {} findings of other codes, stated beside their \
+        "{} verdicts: {} pass, {} findings ({} verdicts on courant's runs that their scene states as \
+         findings, each with its source: a disagreement with stability theory, or a claim of the seed \
+         that does not hold as stated; {} findings of other codes, stated beside their \
          results), {} FAIL. Verdicts are the scenes' expectations, the stability verdict of every case \
          of a stability scene, the convergence-order bands and the checks of other codes' committed \
          results.",

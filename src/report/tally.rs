@@ -10,7 +10,8 @@ use crate::compare::verdict::Verdict;
 pub struct Tally {
     /// Passed (findings not included).
     pub passed: usize,
-    /// Disagreements with stability theory the scenes state, with their sources.
+    /// Disagreements with stability theory or with a claim of the seed that the scenes state,
+    /// with their sources.
     pub findings: usize,
     /// Failed.
     pub failed: usize,

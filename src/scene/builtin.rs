@@ -83,6 +83,15 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         include_str!("../../scenes/contact_extremes.toml"),
     ),
     ("pc_ratio", include_str!("../../scenes/pc_ratio.toml")),
+    (
+        "contact_impact_stability",
+        include_str!("../../scenes/contact_impact_stability.toml"),
+    ),
+    (
+        "fig2_park_printed",
+        include_str!("../../scenes/fig2_park_printed.toml"),
+    ),
+    ("fig1_airy", include_str!("../../scenes/fig1_airy.toml")),
 ];
 
 /// The text of a built-in scene.

@@ -1,6 +1,7 @@
 //! Expectations: the metric a scene bounds, the bound and its source of truth, as read from
 //! `[[expect]]` tables (checked against the scene's cases and profile times when it is parsed).
 
+pub use super::bound::Bound;
 use super::contact::ForceMeasure;
 use super::error::{SceneError, Source};
 use super::mass::{mass_name, parse_mass};
@@ -10,57 +11,6 @@ use toml::Spanned;
 
 use super::metric::{AUTOMATIC, METRICS};
 pub use super::metric::{Metric, Study};
-
-/// The bound of an expectation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Bound {
-    /// `min <= value <= max` (either side optional).
-    Range {
-        /// Lower bound.
-        min: Option<f64>,
-        /// Upper bound.
-        max: Option<f64>,
-    },
-    /// A boolean metric equals this.
-    Equals(bool),
-    /// The stability verdict of a stability scene's case: the run does what theory predicts
-    /// (`stable`, `marginal`, `unstable`, `contact-unstable`).
-    Theory(&'static str),
-}
-
-impl std::fmt::Display for Bound {
-    /// `<= max`, `>= min`, `in [min, max]`, `== flag`, `as predicted: stable`; numbers in their
-    /// shortest round-trip form (scientific below 1e-4 and from 1e6).
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let num = |x: f64| {
-            if x != 0.0 && !(1e-4..1e6).contains(&x.abs()) {
-                format!("{x:e}")
-            } else {
-                format!("{x}")
-            }
-        };
-        match *self {
-            Bound::Range {
-                min: Some(lo),
-                max: Some(hi),
-            } => write!(f, "in [{}, {}]", num(lo), num(hi)),
-            Bound::Range {
-                min: Some(lo),
-                max: None,
-            } => write!(f, ">= {}", num(lo)),
-            Bound::Range {
-                min: None,
-                max: Some(hi),
-            } => write!(f, "<= {}", num(hi)),
-            Bound::Range {
-                min: None,
-                max: None,
-            } => write!(f, "unbounded"),
-            Bound::Equals(b) => write!(f, "== {b}"),
-            Bound::Theory(predicted) => write!(f, "as predicted: {predicted}"),
-        }
-    }
-}
 
 /// A requirement a case must meet, with its source of truth.
 #[derive(Debug, Clone, PartialEq)]
@@ -82,6 +32,9 @@ pub struct Expectation {
     pub force: Option<ForceMeasure>,
     /// An error bound or a signature of the case's scheme and mass.
     pub kind: RowKind,
+    /// A stated finding (`finding = true`): a row that measures where a claim of the seed does
+    /// not hold as stated; its verdict passes as a finding while the bound holds.
+    pub finding: bool,
     /// Where the bound comes from.
     pub source: String,
 }
@@ -373,6 +326,7 @@ pub(super) fn expectation(
         masses,
         force,
         kind,
+        finding: raw.finding.unwrap_or(false),
         source: raw.source.clone(),
     })
 }

@@ -45,6 +45,12 @@ pub enum Metric {
     /// Contact stability: largest relative deviation of the solver's critical Courant number
     /// from the closed form.
     CourantDeviation,
+    /// Contact stability: largest `|Cr - 1|` over the bipenalty curves with `r <= 1`, which
+    /// keep the contact-free critical Courant number 1 for every `beta_s` (methods.md §7).
+    UnitCourantDeviation,
+    /// Contact stability: `|Cr sqrt(beta_s/2) - 1|` of the penalty-only curve at its largest
+    /// `beta_s`, the approach to the asymptote `Cr ~ sqrt(2/beta_s)` (methods.md §7).
+    PenaltyAsymptoteDeviation,
     /// Contact: largest graded contact force over the run (the seed's `eps_s x penetration` for
     /// the penalty schemes).
     MaxForce,
@@ -143,6 +149,16 @@ pub(super) const METRICS: &[(Metric, &str, Study)] = &[
         "courant_deviation",
         Study::ContactStability,
     ),
+    (
+        Metric::UnitCourantDeviation,
+        "unit_courant_deviation",
+        Study::ContactStability,
+    ),
+    (
+        Metric::PenaltyAsymptoteDeviation,
+        "penalty_asymptote_deviation",
+        Study::ContactStability,
+    ),
     (Metric::Stability, "stability", Study::TimeStepping),
     (Metric::FittedOrder, "fitted_order", Study::TimeStepping),
     (Metric::MaxError, "max_error", Study::TimeStepping),
@@ -229,6 +245,8 @@ impl Metric {
                 | Metric::ClosedFormDeviation
                 | Metric::DispersionDeviation
                 | Metric::CourantDeviation
+                | Metric::UnitCourantDeviation
+                | Metric::PenaltyAsymptoteDeviation
         )
     }
 

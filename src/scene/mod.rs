@@ -13,7 +13,7 @@
 //! - [`parse`] reads a file and dispatches by study kind: [`time_stepping`] (with [`geometry`],
 //!   [`material`], [`bar`], [`stepping`] with [`scheme_keys`] (schemes by their registry names,
 //!   with the parameters they declare), [`outputs`]), [`spectrum`], [`dispersion`],
-//!   [`contact`]; [`expectation`] reads `[[expect]]`, [`finding`] `[[finding]]`; [`reference`](mod@reference) binds a case to its analytic
+//!   [`contact`]; [`expectation`] reads `[[expect]]` (its [`bound`]s), [`finding`] `[[finding]]`; [`reference`](mod@reference) binds a case to its analytic
 //!   reference in `courant-references` (validated against the model, evaluated by `compare`).
 //! - [`magnitude`]: the range of magnitudes inputs and derived scales may take, so that no
 //!   numerics overflow; [`budget`]: the size, work and output memory a scene may ask for
@@ -28,6 +28,7 @@
 //! verdicts, reports.
 
 pub mod bar;
+pub mod bound;
 pub mod budget;
 pub mod builtin;
 pub mod cases;

@@ -408,6 +408,10 @@ pub struct RawExpect {
     /// case's scheme and mass do). Default: from the metric and the bound
     /// (`scene::expectation::RowKind::default_for`).
     pub kind: Option<String>,
+    /// A stated finding (default false): the row measures where a claim of the seed does not
+    /// hold as stated (its source says which claim and what was measured); when its bound holds
+    /// it passes as a finding, counted and listed on the report's first screen.
+    pub finding: Option<bool>,
     /// The source of truth the bound comes from.
     pub source: String,
 }

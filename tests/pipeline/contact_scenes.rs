@@ -1,7 +1,8 @@
 //! Source of truth: the seed's Figs. 3 and 5 as built-in scenes (`scenes/fig3.toml`,
 //! `scenes/fig5.toml`, `scenes/contact_wall.toml`, `scenes/contact_unequal.toml`,
-//! `scenes/contact_courant_sweep.toml`, `scenes/contact_extremes.toml`) with their expectations
-//! from 1D wave theory and the exact (bi)penalty stability limits (methods.md §7).
+//! `scenes/contact_courant_sweep.toml`, `scenes/contact_extremes.toml`,
+//! `scenes/contact_impact_stability.toml`) with their expectations from 1D wave theory and the
+//! exact (bi)penalty stability limits (methods.md §7).
 //!
 //! ```text
 //!   v0 --> |== striker ==|  |======= target =======|        o--o--o~~k_s~~|// wall
@@ -25,6 +26,7 @@ fn contact_scenes_meet_every_expectation() {
         "contact_unequal",
         "contact_courant_sweep",
         "contact_extremes",
+        "contact_impact_stability",
     ] {
         let scene = builtin_scene(name).unwrap().unwrap();
         let outcome = run_scene(&scene).unwrap();

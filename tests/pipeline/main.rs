@@ -19,3 +19,4 @@ mod robustness_regressions;
 mod scene_input_errors;
 mod scheme_parameter_sweeps;
 mod scheme_registry;
+mod sources_resolve;

@@ -134,7 +134,7 @@ fn mixed_schemes_each_take_their_own_keys() {
     "scheme = [\"cd\", \"nb\"]",
     0,
     "integrator.scheme",
-    "\"nb\" is not one of cd (central-difference), park-lts, park-global, noh-bathe"
+    "\"nb\" is not one of cd (central-difference), park-lts, park-global, noh-bathe, park-printed"
 )]
 #[case::mass_the_scheme_does_not_take(
     "scheme = \"park-lts\"\nmass = \"cmm\"",

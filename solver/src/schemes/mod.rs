@@ -4,7 +4,7 @@
 //! **Enters:** the interface and the step kernels (`kernels`: `lumped`, `matrix_mass`,
 //! `park`). **Leaves:** [`REGISTRY`] (what scenes, `courant list --schemes` and the report see) and
 //! each scheme's public types. Schemes know the interface, never the reverse, and never each other
-//! (Park's start reuses central difference's `half_step_start`, the one exception).
+//! (Park's schemes reuse central difference's `half_step_start`, the one exception).
 //!
 //! Names: a scheme's `Scheme` (its parameters, what the registry builds) is `XxxScheme`, its
 //! `Integrator` (what the time loop drives) `XxxStepper`, and the arithmetic of its step, where
@@ -18,6 +18,7 @@
 pub mod central_difference;
 pub mod noh_bathe;
 pub mod park;
+pub mod park_printed;
 pub mod seed;
 
 use crate::integrator::SchemeEntry;
@@ -28,6 +29,7 @@ pub const REGISTRY: &[SchemeEntry] = &[
     park::LOCAL_STEPPING,
     park::GLOBAL_STEP,
     noh_bathe::ENTRY,
+    park_printed::ENTRY,
 ];
 
 /// The entry answering to `name` (its name or an alias).

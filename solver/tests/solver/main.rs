@@ -16,3 +16,4 @@ mod integrator_interface_external_scheme;
 mod noh_bathe_amplification;
 mod noh_bathe_convergence_and_stability;
 mod noh_bathe_step_loaded_bar;
+mod park_printed_misprints;

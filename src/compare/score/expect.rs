@@ -266,7 +266,11 @@ fn measure(
             "not measurable from files: format 1 carries no critical steps or stability verdicts"
                 .into(),
         ),
-        Metric::DispersionDeviation | Metric::PhaseErrorOrder | Metric::CourantDeviation => {
+        Metric::DispersionDeviation
+        | Metric::PhaseErrorOrder
+        | Metric::CourantDeviation
+        | Metric::UnitCourantDeviation
+        | Metric::PenaltyAsymptoteDeviation => {
             Err("not measurable from files: format 1 has no dispersion or stability data".into())
         }
     }
