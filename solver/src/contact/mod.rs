@@ -11,7 +11,9 @@
 //!
 //! Files: `problem` (bodies, contact nodes, gap), `penalty` (penalty parameters), `scheme` (the
 //! schemes and their O(1) level update), `stability` (critical steps), `stepper` (the time
-//! loop's state), `run` (the checked, guarded run), `output` (what a run records), `error`.
+//! loop's state), `run` (the checked, guarded run), `output` (what a run records), `error`;
+//! `combined` (Park's local stepping or the reciprocal mass in the bulk, with every contact
+//! scheme: the decision for the contact nodes, the rank-one bipenalty update, measured limits).
 //!
 //! # Problems ([`ContactProblem`])
 //!
@@ -141,6 +143,7 @@
 //! step the contact adds O(1) work (a few nodal values, one scalar update) on top of the
 //! unchanged lumped kernel, which receives the contact momentum as a nodal force.
 
+pub mod combined;
 mod error;
 mod output;
 mod penalty;

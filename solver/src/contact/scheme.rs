@@ -169,9 +169,59 @@ pub(crate) fn level_update(
     }
     let gap = approach + problem.initial_gap();
     let w = input.weight;
-    let (active, impulse) = match *scheme {
+    let (active, impulse) = contact_momentum(
+        scheme,
+        &MomentumInput {
+            gap,
+            relative_velocity: n_v,
+            relative_acceleration: n_a,
+            compliance: s,
+            weight: w,
+            dt,
+        },
+        false,
+    );
+    LevelUpdate {
+        gap,
+        active,
+        impulse,
+        force: impulse / (w * dt),
+    }
+}
+
+/// The scalars the contact momentum of a level depends on (module docs of [`crate::contact`]):
+/// `g^n`, `N^T v^{n-1/2}`, `N^T a0` (the contact-free acceleration `a0 = M^-1 R`),
+/// `s = N^T M^-1 N` (`M^-1` lumped, or any symmetric inverse mass such as RMM's), `w_n`, `dt`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct MomentumInput {
+    pub gap: f64,
+    pub relative_velocity: f64,
+    pub relative_acceleration: f64,
+    pub compliance: f64,
+    pub weight: f64,
+    pub dt: f64,
+}
+
+/// `(active, J^n)`: the contact momentum along N of one level, the O(1) formulas of the module
+/// docs of [`crate::contact`], which need `M^-1` only through `N^T M^-1 R` and `s`.
+/// `bilateral`: apply the contact whatever the sign of the (predicted) gap, the linear
+/// contact-active map whose amplification matrix gives the persistent-contact step limit.
+pub(crate) fn contact_momentum(
+    scheme: &ContactScheme,
+    input: &MomentumInput,
+    bilateral: bool,
+) -> (bool, f64) {
+    let MomentumInput {
+        gap,
+        relative_velocity: n_v,
+        relative_acceleration: n_a,
+        compliance: s,
+        weight: w,
+        dt,
+    } = *input;
+    match *scheme {
         ContactScheme::Penalty { .. } | ContactScheme::Bipenalty(_) => {
-            if gap < 0.0 {
+            if bilateral || gap < 0.0 {
                 let Penalty {
                     stiffness: ks,
                     mass: mp,
@@ -188,7 +238,7 @@ pub(crate) fn level_update(
             mass: mp,
         }) => {
             let predicted = gap + dt * (n_v + w * dt * n_a);
-            if predicted < 0.0 {
+            if bilateral || predicted < 0.0 {
                 (true, -dt * ks * predicted / (1.0 + mp * s))
             } else {
                 (false, 0.0)
@@ -196,17 +246,11 @@ pub(crate) fn level_update(
         }
         ContactScheme::LagrangeMultiplier => {
             let predicted = gap + dt * (n_v + w * dt * n_a);
-            if predicted < 0.0 {
+            if bilateral || predicted < 0.0 {
                 (true, -predicted / (dt * s))
             } else {
                 (false, 0.0)
             }
         }
-    };
-    LevelUpdate {
-        gap,
-        active,
-        impulse,
-        force: impulse / (w * dt),
     }
 }
