@@ -49,16 +49,11 @@ const DIRECT_PERIODS: f64 = 256.0;
 /// conventions of courant's methods.md §2-3. Fields are f64 in any consistent unit system.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DalembertBar {
-    /// Bar length L (> 0).
-    pub length: f64,
-    /// Young's modulus E (> 0).
-    pub modulus: f64,
-    /// Mass density rho (> 0).
-    pub density: f64,
-    /// Cross-section area A (> 0); enters only forces and energies.
-    pub area: f64,
-    /// Amplitude sigma0 of the end traction (any finite value; negative is compressive).
-    pub sigma0: f64,
+    length: f64,
+    modulus: f64,
+    density: f64,
+    area: f64,
+    sigma0: f64,
 }
 
 /// Energies of the bar at one time, each computed independently of the others.
@@ -113,6 +108,53 @@ impl DalembertBar {
             area: ReferenceError::require_positive("area", area)?,
             sigma0: ReferenceError::require_finite("sigma0", sigma0)?,
         })
+    }
+
+    /// The bar from data already validated by another reference's constructor.
+    pub(crate) fn validated(
+        length: f64,
+        modulus: f64,
+        density: f64,
+        area: f64,
+        sigma0: f64,
+    ) -> Self {
+        Self {
+            length,
+            modulus,
+            density,
+            area,
+            sigma0,
+        }
+    }
+
+    /// Bar length L (> 0).
+    #[must_use]
+    pub fn length(&self) -> f64 {
+        self.length
+    }
+
+    /// Young's modulus E (> 0).
+    #[must_use]
+    pub fn modulus(&self) -> f64 {
+        self.modulus
+    }
+
+    /// Mass density rho (> 0).
+    #[must_use]
+    pub fn density(&self) -> f64 {
+        self.density
+    }
+
+    /// Cross-section area A (> 0); enters only forces and energies.
+    #[must_use]
+    pub fn area(&self) -> f64 {
+        self.area
+    }
+
+    /// Amplitude sigma0 of the end traction (any finite value; negative is compressive).
+    #[must_use]
+    pub fn sigma0(&self) -> f64 {
+        self.sigma0
     }
 
     /// Bar wave speed `c = sqrt(E / rho)`.

@@ -17,6 +17,27 @@ pub enum ReferenceError {
         /// The rule it violates, e.g. "positive and finite".
         rule: &'static str,
     },
+    /// The reference cannot be evaluated at time `t`: not finite, or beyond what it reaches.
+    #[error("the {reference} reference is not evaluable at t = {t:e}: {limit}")]
+    BeyondReach {
+        /// Name of the reference.
+        reference: &'static str,
+        /// The time asked for.
+        t: f64,
+        /// What limits it, e.g. "evaluated up to 1000 transit times".
+        limit: String,
+    },
+    /// An exact computation needs more events than its cap (a typed refusal instead of an
+    /// unbounded run).
+    #[error("the {reference} reference needs more than {cap} {what}")]
+    TooManyEvents {
+        /// Name of the reference.
+        reference: &'static str,
+        /// What is counted (waves, interface states).
+        what: &'static str,
+        /// The cap.
+        cap: usize,
+    },
 }
 
 impl ReferenceError {

@@ -18,14 +18,18 @@
 //!   central difference.
 //! - [`contact`]: the stability limit of penalty contact and the contact forces of 1D impact.
 //! - [`error`]: the validation error shared by all references.
+//! - [`exact`]: the contract every exact solution honours ([`ExactSolution`]), with the contact
+//!   force history as a capability ([`ContactHistory`]) and the work of an evaluation.
 
 #![warn(missing_docs)]
 
 pub mod contact;
 pub mod dalembert;
 pub mod error;
+pub mod exact;
 pub mod graded;
 pub mod spectra;
 
 pub use dalembert::{DalembertBar, Energies};
 pub use error::ReferenceError;
+pub use exact::{ContactHistory, Evaluation, ExactSolution};

@@ -1,6 +1,6 @@
 //! Exact profiles evaluated once for all cases of a scene.
 
-use super::exact::ExactSolution;
+use super::exact::ExactOnMesh;
 use crate::scene::reference::Reference;
 use courant_solver::Mesh;
 use rayon::prelude::*;

@@ -2,7 +2,7 @@
 //! profile time, exact nodal histories and energies.
 
 use super::cache::ProfileCache;
-use super::exact::ExactSolution;
+use super::exact::ExactOnMesh;
 use super::norms::ErrorNorms;
 use crate::results::case::{CaseRecord, RunFacts};
 use crate::scene::reference::Reference;

@@ -7,7 +7,7 @@
 
 use crate::results::contact::ContactRecord;
 use crate::scene::contact::ForceMeasure;
-use courant_references::contact::ImpactForce;
+use courant_references::ContactHistory;
 use courant_solver::DivergenceError;
 use courant_solver::contact::{ContactRun, ContactSample};
 use std::time::Duration;
@@ -25,6 +25,17 @@ pub struct ForceErrors {
     /// samples: the L1 norm in time of the force error, relative to the exact impulse (a
     /// discrete L1 error of the force history, seed Figs. 4-5 against 1D wave theory).
     pub force_l1_error: f64,
+    /// The L1 error as `force_l1_error`, over the samples farther than
+    /// [`JUMP_EXCLUSION_SAMPLES`] sample intervals from every jump of the exact force (its
+    /// plateau starts and ends): the error of the smooth stretches, without the smearing of each
+    /// jump over a few steps that every scheme shows and no mesh removes at a fixed Courant
+    /// number.
+    pub force_l1_off_jumps: f64,
+    /// `|t_open - t_exact| / t_exact` for the first opening of the contact: `t_open` is the
+    /// first sample, after the force first reached half the first plateau, that starts
+    /// [`JUMP_EXCLUSION_SAMPLES`] consecutive zero-force samples; `t_exact` the reference's
+    /// separation time. `None` when the recorded force never opens so.
+    pub separation_error: Option<f64>,
     /// Largest force over the run.
     pub max_force: f64,
     /// Fraction of the samples inside the first plateau (10 % to 90 % of it) at which the force
@@ -40,7 +51,7 @@ impl ForceErrors {
         measure: ForceMeasure,
         history: &[ContactSample],
         exact: &[f64],
-        reference: &ImpactForce,
+        reference: &dyn ContactHistory,
     ) -> Self {
         let samples: Vec<(f64, f64)> = history.iter().map(|s| (s.time, measure.force(s))).collect();
         Self::of_samples(&samples, exact, reference)
@@ -48,10 +59,14 @@ impl ForceErrors {
 
     /// The errors of a force history given as `(t_k, F_k)` samples (a run's, or another code's
     /// file) against `exact` (the reference at each sample time).
-    pub fn of_samples(samples: &[(f64, f64)], exact: &[f64], reference: &ImpactForce) -> Self {
-        let plateau = reference.first_plateau();
+    pub fn of_samples(
+        samples: &[(f64, f64)],
+        exact: &[f64],
+        reference: &dyn ContactHistory,
+    ) -> Self {
+        let plateau = reference.first_plateau_force();
         let first = reference
-            .plateaus()
+            .force_plateaus()
             .first()
             .map_or((0.0, 0.0), |p| (p.start, p.end));
         let (lo, hi) = (
@@ -78,7 +93,7 @@ impl ForceErrors {
         // down.
         let threshold = 0.5
             * reference
-                .plateaus()
+                .force_plateaus()
                 .iter()
                 .map(|p| p.force)
                 .filter(|f| *f > 0.0)
@@ -90,7 +105,7 @@ impl ForceErrors {
             .collect();
         let duration_error = match (above.first(), above.last()) {
             (Some(a), Some(b)) => {
-                Some(((b - a) - reference.duration()).abs() / reference.duration())
+                Some(((b - a) - reference.contact_duration()).abs() / reference.contact_duration())
             }
             _ => None,
         };
@@ -99,15 +114,59 @@ impl ForceErrors {
             .zip(exact.iter().skip(1))
             .map(|(pair, exact)| (pair[1].1 - exact).abs() * (pair[1].0 - pair[0].0))
             .sum::<f64>()
-            / reference.impulse();
+            / reference.contact_impulse();
+        let (force_l1_off_jumps, separation_error) =
+            away_from_jumps(samples, exact, reference, plateau);
         Self {
             plateau_deviation,
             duration_error,
             force_l1_error,
+            force_l1_off_jumps,
+            separation_error,
             max_force: samples.iter().map(|s| s.1).fold(0.0, f64::max),
             open_in_plateau,
         }
     }
+}
+
+/// The L1 force error away from the jumps of the exact force and the separation-time error
+/// ([`ForceErrors`]).
+fn away_from_jumps(
+    samples: &[(f64, f64)],
+    exact: &[f64],
+    reference: &dyn ContactHistory,
+    plateau: f64,
+) -> (f64, Option<f64>) {
+    let mut jumps: Vec<f64> = reference
+        .force_plateaus()
+        .iter()
+        .flat_map(|p| [p.start, p.end])
+        .collect();
+    jumps.sort_by(f64::total_cmp);
+    let window = JUMP_EXCLUSION_SAMPLES as f64;
+    let mut l1 = 0.0;
+    for (pair, e) in samples.windows(2).zip(exact.iter().skip(1)) {
+        let (t, dt) = (pair[1].0, pair[1].0 - pair[0].0);
+        let k = jumps.partition_point(|&j| j < t);
+        let near = |j: Option<&f64>| j.is_some_and(|j| (j - t).abs() <= window * dt);
+        if !near(jumps.get(k)) && !near(k.checked_sub(1).and_then(|k| jumps.get(k))) {
+            l1 += (pair[1].1 - e).abs() * dt;
+        }
+    }
+    let started = samples.iter().position(|s| s.1 >= 0.5 * plateau);
+    let opened = started.and_then(|first| {
+        (first..samples.len()).find(|&k| {
+            samples[k..]
+                .iter()
+                .take(JUMP_EXCLUSION_SAMPLES)
+                .filter(|s| s.1 == 0.0)
+                .count()
+                == JUMP_EXCLUSION_SAMPLES
+        })
+    });
+    let exact_open = reference.separation_time();
+    let separation = opened.map(|k| (samples[k].0 - exact_open).abs() / exact_open);
+    (l1 / reference.contact_impulse(), separation)
 }
 
 /// A contact case's run beside its reference, with its accuracy figures.
@@ -153,6 +212,14 @@ pub const PLATEAU_UNDEFINED: &str = "undefined: no recorded force sample lies in
 /// Why a contact case has no `duration_error`.
 pub const DURATION_UNDEFINED: &str = "undefined: no recorded force sample reached half the smallest plateau (the contact opened before, or the sampling, history_every, missed it)";
 
+/// Sample intervals on either side of a jump of the exact force left out of
+/// `force_l1_off_jumps` (steps, when every step is recorded: `history_every = 1`), and the
+/// zero-force samples in a row that count as an opening for `separation_error`.
+pub const JUMP_EXCLUSION_SAMPLES: usize = 5;
+
+/// Why a contact case has no `separation_error`.
+pub const SEPARATION_UNDEFINED: &str = "undefined: the recorded force never reached half the first plateau and then stayed zero for a few samples (no opening seen)";
+
 /// Why a contact case has no `energy_ratio`.
 pub const ENERGY_RATIO_UNDEFINED: &str =
     "undefined: no energy at the first sample, or a non-finite energy at the last (a diverged run)";
@@ -173,7 +240,7 @@ impl ContactResult {
 /// `measure`.
 pub fn compare_contact(
     record: ContactRecord,
-    reference: &ImpactForce,
+    reference: &dyn ContactHistory,
     measure: ForceMeasure,
 ) -> ContactResult {
     let ContactRecord {
@@ -209,7 +276,7 @@ pub fn compare_contact(
     let exact: Vec<f64> = run
         .history
         .iter()
-        .map(|s| reference.force(s.time))
+        .map(|s| reference.contact_force(s.time))
         .collect();
     let errors = ForceErrors::of(measure, &run.history, &exact, reference);
     let other = match measure {
@@ -218,7 +285,8 @@ pub fn compare_contact(
     };
     let other_errors = (ForceMeasure::for_scheme(other, &run.scheme) == other)
         .then(|| ForceErrors::of(other, &run.history, &exact, reference));
-    let impulse_error = (run.impulse - reference.impulse()).abs() / reference.impulse();
+    let impulse_error =
+        (run.impulse - reference.contact_impulse()).abs() / reference.contact_impulse();
     let energy = |s: &ContactSample| s.kinetic + s.strain;
     let conserved = |s: &ContactSample| s.kinetic_staggered + s.strain;
     let ratio = |end: f64, start: f64| Some(end / start).filter(|r| r.is_finite());
@@ -239,7 +307,7 @@ pub fn compare_contact(
         diverged,
         measure,
         reference: exact,
-        plateau: reference.first_plateau(),
+        plateau: reference.first_plateau_force(),
         errors,
         other_errors,
         impulse_error,

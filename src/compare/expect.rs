@@ -8,6 +8,7 @@
 use super::case::CaseResult;
 use super::contact::{
     ContactResult, DURATION_UNDEFINED, ENERGY_RATIO_UNDEFINED, ForceErrors, PLATEAU_UNDEFINED,
+    SEPARATION_UNDEFINED,
 };
 use super::norms::ErrorNorms;
 use super::outcome::SceneOutcome;
@@ -266,6 +267,12 @@ fn contact_value(e: &Expectation, r: &ContactResult, other: Option<&ContactResul
             None => Measured::Missing("the scheme has no penalty force".into()),
         },
         Metric::ForceL1Error => of(|e| e.force_l1_error),
+        Metric::ForceL1OffJumps => of(|e| e.force_l1_off_jumps),
+        Metric::SeparationError => match errors.map(|e| e.separation_error) {
+            Some(Some(d)) => Measured::Value(d),
+            Some(None) => Measured::Missing(SEPARATION_UNDEFINED.into()),
+            None => Measured::Missing("the scheme has no penalty force".into()),
+        },
         Metric::EnergyRatio => r.energy_ratio.map_or(
             Measured::Missing(ENERGY_RATIO_UNDEFINED.into()),
             Measured::Value,

@@ -66,7 +66,7 @@ pub fn compare_scene(scene: &Scene, records: SceneRecords) -> Result<SceneOutcom
             .contact
             .iter()
             .zip(contact)
-            .map(|(case, record)| compare_contact(record, &case.reference, case.force))
+            .map(|(case, record)| compare_contact(record, case.reference.history(), case.force))
             .collect(),
         sweeps: sweeps
             .into_iter()

@@ -111,7 +111,7 @@ fn run_contact_study(
         .par_iter()
         .map(|&(setting, case)| {
             let record = run_contact(case).map_err(|e| e.to_string())?;
-            let r = compare_contact(record, &case.reference, case.force);
+            let r = compare_contact(record, case.reference.history(), case.force);
             if let Some(d) = &r.diverged {
                 return Err(format!(
                     "study {}: case {} diverged: {d}",

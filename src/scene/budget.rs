@@ -58,9 +58,9 @@ pub const MAX_OUTPUT_VALUES: f64 = Limits::DEFAULT.output_values;
 /// Fig. 2 bar with modulus ratios 256 and 1000 it was 6.5 and 3 times the work done (15 s and
 /// 214 s measured here), so a scene within the limit needs at most about 2.5 minutes.
 pub const MAX_REFERENCE_WORK: f64 = 2e10;
-/// Work of one tracked wave of the layered reference in lattice-node equivalents: 0.18 to
-/// 0.65 us per wave measured (ten layers, 10 to 1.7e5 waves), at ~7 ns per node.
-pub const LAYERED_WAVE_WORK: f64 = 100.0;
+/// Work of one tracked wave of the layered reference in lattice-node equivalents (defined with
+/// the reference, whose contract counts its work).
+pub use courant_references::exact::LAYERED_WAVE_WORK;
 /// Sturm passes over the nodes per point of a contact stability sweep: two pencils, each with at
 /// most 64 doublings and ~64 halvings in practice. Counted as node-steps.
 pub const SWEEP_PASSES_PER_POINT: f64 = 256.0;

@@ -32,6 +32,10 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         "contact_unequal",
         include_str!("../../scenes/contact_unequal.toml"),
     ),
+    (
+        "impact_layered",
+        include_str!("../../scenes/impact_layered.toml"),
+    ),
     ("dispersion", include_str!("../../scenes/dispersion.toml")),
     (
         "courant_sweep",

@@ -3,18 +3,17 @@
 //! sweep of the critical Courant number against the penalty stiffness.
 
 use super::budget;
+pub use super::contact_bar::ContactReference;
+use super::contact_bar::{bar, homogeneous, transit};
 use super::error::{SceneError, Source, positive};
 use super::magnitude;
-use super::schema::{
-    RawContact, RawContactBar, RawContactCourantUnit, RawContactScene, RawContactStability,
-};
-use courant_references::contact::{ImpactBar, ImpactForce};
+use super::schema::{RawContact, RawContactCourantUnit, RawContactScene, RawContactStability};
+use courant_references::contact::{ImpactForce, LayeredImpact};
 use courant_solver::contact::{
     ContactCriticalStep, ContactIntegrator, ContactProblem, ContactSample, ContactScheme,
     MassPenalty,
 };
-use courant_solver::{Bar, End, Mesh, StabilityPolicy};
-use toml::Spanned;
+use courant_solver::{End, StabilityPolicy};
 
 /// A case name, its scheme and its dimensionless penalties.
 type Variant = (String, ContactScheme, Option<(f64, f64)>);
@@ -35,7 +34,7 @@ pub struct ContactCase {
     /// `(beta_s, beta_m)`, when the scheme has penalties.
     pub penalty: Option<(f64, f64)>,
     /// The analytic contact force of 1D wave theory (methods.md §7).
-    pub reference: ImpactForce,
+    pub reference: ContactReference,
     /// The force graded and plotted.
     pub force: ForceMeasure,
     /// Transit time of the striker, `L1/c1`: the time unit of the contact figures.
@@ -102,31 +101,6 @@ pub struct StabilitySweep {
     pub ratios: Vec<Option<f64>>,
 }
 
-fn bar(
-    src: &Source,
-    spanned: &Spanned<RawContactBar>,
-    key: &str,
-    area: f64,
-) -> Result<(Bar, ImpactBar), SceneError> {
-    let raw = spanned.get_ref();
-    let span = Some(spanned.span());
-    let fail = |msg: String| src.error(span.clone(), key, msg);
-    let (e, rho) = (raw.modulus.unwrap_or(1.0), raw.density.unwrap_or(1.0));
-    for (name, v) in [("length", raw.length), ("modulus", e), ("density", rho)] {
-        if !(v.is_finite() && v > 0.0) {
-            return Err(fail(format!("{name} = {v} must be positive and finite")));
-        }
-        magnitude::input(src, span.clone(), key, name, v)?;
-    }
-    let elements =
-        budget::element_count(src, span.clone(), &format!("{key}.elements"), raw.elements)?;
-    let mesh = Mesh::uniform(raw.length, elements).map_err(|e| fail(e.to_string()))?;
-    let bar = Bar::homogeneous(mesh, e, rho, area).map_err(|e| fail(e.to_string()))?;
-    let impact =
-        ImpactBar::from_material(e, rho, area, raw.length).map_err(|e| fail(e.to_string()))?;
-    Ok((bar, impact))
-}
-
 /// Build the cases of a `[contact]` study.
 pub(super) fn cases(
     src: &Source,
@@ -166,10 +140,16 @@ pub(super) fn cases(
             let (target, target_impact) = bar(src, target, "contact.target", area)?;
             let problem = ContactProblem::bar_impact(striker, target, velocity, gap)
                 .map_err(|e| src.error(Some(study.problem.span()), "contact", e.to_string()))?;
-            (
-                problem,
-                ImpactForce::new(striker_impact, target_impact, velocity),
-            )
+            let end =
+                positive(src, &study.end_time, "contact.end_time")? * transit(&striker_impact);
+            let reference = match (homogeneous(&striker_impact), homogeneous(&target_impact)) {
+                (Some(s), Some(t)) => {
+                    ImpactForce::new(s, t, velocity).map(ContactReference::Homogeneous)
+                }
+                _ => LayeredImpact::new(&striker_impact, &target_impact, velocity, 1.05 * end)
+                    .map(ContactReference::Layered),
+            };
+            (problem, reference)
         }
         ("two-bars", None) => {
             return Err(src.error(
@@ -181,7 +161,17 @@ pub(super) fn cases(
         ("wall", None) => {
             let problem = ContactProblem::wall_impact(striker, End::Right, velocity, gap)
                 .map_err(|e| src.error(Some(study.problem.span()), "contact", e.to_string()))?;
-            (problem, ImpactForce::rigid_wall(striker_impact, velocity))
+            let reference = match homogeneous(&striker_impact) {
+                Some(s) => ImpactForce::rigid_wall(s, velocity).map(ContactReference::Homogeneous),
+                None => {
+                    return Err(src.error(
+                        Some(study.striker.span()),
+                        "contact.striker.layers",
+                        "a wall problem takes a homogeneous striker (its exact force is for one layer)",
+                    ));
+                }
+            };
+            (problem, reference)
         }
         ("wall", Some(t)) => {
             return Err(src.error(
@@ -231,7 +221,7 @@ pub(super) fn cases(
         ));
     }
     let end = positive(src, &study.end_time, "contact.end_time")?;
-    let end_time = end * striker_impact.transit_time();
+    let end_time = end * transit(&striker_impact);
     let history_every = match &study.history_every {
         None => 1,
         Some(h) if *h.get_ref() >= 1 => *h.get_ref() as usize,
@@ -473,7 +463,7 @@ pub(super) fn cases(
                     penalty,
                     reference: reference.clone(),
                     force: ForceMeasure::for_scheme(force, &scheme),
-                    striker_transit: striker_impact.transit_time(),
+                    striker_transit: transit(&striker_impact),
                 });
             }
         }

@@ -4,13 +4,9 @@
 
 use super::material::Material;
 use super::schema::RawReferenceKind;
-use courant_references::DalembertBar;
 use courant_references::graded::{GradedBar, Layer, LayeredBar};
+use courant_references::{DalembertBar, ExactSolution};
 use courant_solver::{Field, Model, Support, TimeFunction};
-
-/// Points per bar length at which `compare` samples the graded field for its extreme value
-/// (what an overshoot is measured against); here so that the scene's work budget counts them.
-pub const GRADED_EXTREME_SAMPLES: usize = 4000;
 
 /// An analytic reference for a case.
 #[derive(Debug, Clone, PartialEq)]
@@ -82,22 +78,24 @@ impl Reference {
         Ok(Some(reference))
     }
 
+    /// The exact solution, through the one contract every reference honours: the only place
+    /// that looks at which reference this is.
+    pub fn exact(&self) -> &dyn ExactSolution {
+        match self {
+            Reference::Dalembert(d) => d,
+            Reference::Graded(g) => g,
+            Reference::Layered(l) => l,
+        }
+    }
+
     /// Short name, as written in scene files.
     pub fn name(&self) -> &'static str {
-        match self {
-            Reference::Dalembert(_) => "dalembert",
-            Reference::Graded(_) => "graded",
-            Reference::Layered(_) => "layered",
-        }
+        self.exact().name()
     }
 
     /// The applied stress `sigma0` (methods.md §2: nodal force `F0 = -sigma0 A` at x = 0).
     pub fn sigma0(&self) -> f64 {
-        match self {
-            Reference::Dalembert(d) => d.sigma0,
-            Reference::Graded(g) => g.sigma0,
-            Reference::Layered(l) => l.sigma0(),
-        }
+        self.exact().characteristic_stress()
     }
 
     /// `|sigma0|`: the stress scale errors are normalised by (the jump of the load front).

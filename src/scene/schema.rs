@@ -445,6 +445,9 @@ pub struct RawContactBar {
     pub modulus: Option<f64>,
     /// Default 1.
     pub density: Option<f64>,
+    /// Piecewise-constant layers from the bar's left end, instead of `modulus`/`density`; their
+    /// thicknesses sum to `length` and every interface falls on a node of the uniform mesh.
+    pub layers: Option<Vec<RawLayer>>,
 }
 
 /// A contact-impact study: a striker at `velocity` onto a target bar or a rigid wall.

@@ -1,14 +1,13 @@
 //! What a validated scene asks for: node-steps, output values and reference work, estimated
 //! from its cases without running anything, and checked against [`super::budget`]'s limits.
 
-use super::budget::{
-    Blame, LAYERED_WAVE_WORK, MAX_NODE_STEPS, MAX_REFERENCE_WORK, SWEEP_PASSES_PER_POINT, refuse,
-};
+use super::budget::{Blame, MAX_NODE_STEPS, MAX_REFERENCE_WORK, SWEEP_PASSES_PER_POINT, refuse};
 use super::cases::{Case, Scene};
 use super::contact::{ContactCase, StabilitySweep};
 use super::dispersion::DispersionCase;
 use super::error::{SceneError, Source};
-use super::reference::{GRADED_EXTREME_SAMPLES, Reference};
+use super::reference::Reference;
+use courant_references::Evaluation;
 
 /// The node-steps and output values of a scene, with the case that asks for the most.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -172,20 +171,13 @@ fn time_stepping_reference(cases: &[Case]) -> Result<(f64, String), String> {
     // earlier one): graded, lattice nodes; layered, its waves to that time.
     let per_evaluation = references
         .iter()
-        .map(|&(r, end)| match r {
-            Reference::Dalembert(_) => Ok(0.0),
-            Reference::Graded(g) => g.evaluation_work(end).ok_or_else(|| {
+        .map(|&(r, end)| {
+            r.exact().evaluation_work(end).map_err(|e| {
                 format!(
-                    "the graded reference is evaluated up to {} transit times (route (b) declines beyond); the scene runs \
-                     to {:.4} of them",
-                    courant_references::graded::CHARACTERISTIC_TRANSITS_MAX,
-                    end / g.transit_time()
+                    "the {} reference cannot reach the scene's end time {end:e}: {e}",
+                    r.name()
                 )
-            }),
-            Reference::Layered(l) => l
-                .field(end)
-                .map(|f| f.wave_count() as f64 * LAYERED_WAVE_WORK)
-                .map_err(|e| format!("the layered reference cannot reach the end time {end:e}: {e}")),
+            })
         })
         .collect::<Result<Vec<f64>, String>>()?;
     let mut seen = std::collections::HashSet::new();
@@ -207,35 +199,25 @@ fn time_stepping_reference(cases: &[Case]) -> Result<(f64, String), String> {
             if !seen.insert((r, elements, t.to_bits())) {
                 continue;
             }
-            work += match reference {
-                Reference::Graded(g) => {
-                    let mesh = case.model.bar().mesh();
-                    let nodes: Vec<f64> = mesh.nodes().iter().map(|x| x - mesh.start()).collect();
-                    let evaluations = g.average_evaluations(&nodes, t) as f64
-                        + (GRADED_EXTREME_SAMPLES + 1) as f64
-                        + 2.0 * g.front_positions(t).len() as f64;
-                    evaluations * g.evaluation_work(t).unwrap_or(per_evaluation[r])
-                }
-                // One field for the averages, one for the extreme.
-                _ => 2.0 * per_evaluation[r],
+            // The averages on this mesh and the field's extreme: each evaluation's work at t
+            // where the reference knows it up front, else the bound at the latest time.
+            let exact = reference.exact();
+            let mesh = case.model.bar().mesh();
+            let nodes: Vec<f64> = mesh.nodes().iter().map(|x| x - mesh.start()).collect();
+            let evaluations = exact.evaluations(Evaluation::Averages(&nodes), t)
+                + exact.evaluations(Evaluation::Extreme, t);
+            let one = if exact.work_known_up_front() {
+                exact.evaluation_work(t).unwrap_or(per_evaluation[r])
+            } else {
+                per_evaluation[r]
             };
+            work += evaluations as f64 * one;
         }
     }
     let detail = references
         .iter()
-        .find_map(|(r, _)| match r {
-            Reference::Graded(g) => {
-                let (e1, e2) = (g.modulus_loaded, g.modulus_fixed);
-                Some(format!(
-                    " (a graded bar, modulus {e1:e} -> {e2:e}: ratio {:.3e})",
-                    e1.max(e2) / e1.min(e2)
-                ))
-            }
-            Reference::Layered(l) => {
-                Some(format!(" (a layered bar of {} layers)", l.layers().len()))
-            }
-            Reference::Dalembert(_) => None,
-        })
+        .map(|(r, _)| r.exact().cost_detail())
+        .find(|d| !d.is_empty())
         .unwrap_or_default();
     Ok((work, detail))
 }

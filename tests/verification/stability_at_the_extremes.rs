@@ -16,7 +16,7 @@
 //! end and profile times to the nearest step and compares with the reference at the step's actual
 //! time; bad input for the new keys is refused naming the key and line.
 
-use courant::compare::exact::ExactSolution;
+use courant::compare::exact::ExactOnMesh;
 use courant::compare::stability::StabilityRow;
 use courant::pipeline::evaluate_scene as run_scene;
 use courant::results::case::Status;

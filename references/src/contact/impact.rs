@@ -14,17 +14,15 @@ use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 use crate::error::ReferenceError;
+pub use crate::exact::ForcePlateau;
 
 /// A homogeneous elastic bar as seen by 1D impact: impedance `Z = rho c A`, wave speed c,
 /// length L.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ImpactBar {
-    /// Impedance `Z = rho c A` (force per velocity, > 0).
-    pub impedance: f64,
-    /// Bar wave speed `c = sqrt(E/rho)` (> 0).
-    pub wave_speed: f64,
-    /// Length L (> 0).
-    pub length: f64,
+    impedance: f64,
+    wave_speed: f64,
+    length: f64,
 }
 
 impl ImpactBar {
@@ -60,6 +58,24 @@ impl ImpactBar {
         )
     }
 
+    /// Impedance `Z = rho c A` (force per velocity, > 0).
+    #[must_use]
+    pub fn impedance(&self) -> f64 {
+        self.impedance
+    }
+
+    /// Bar wave speed `c = sqrt(E/rho)` (> 0).
+    #[must_use]
+    pub fn wave_speed(&self) -> f64 {
+        self.wave_speed
+    }
+
+    /// Length L (> 0).
+    #[must_use]
+    pub fn length(&self) -> f64 {
+        self.length
+    }
+
     /// Transit time `T = L/c`.
     #[must_use]
     pub fn transit_time(&self) -> f64 {
@@ -80,19 +96,6 @@ pub enum ImpactTarget {
     Bar(ImpactBar),
     /// A rigid, fixed wall (the limit `Z2 -> inf`).
     RigidWall,
-}
-
-/// One constant stretch of the contact force: `force` on `[start, end)`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ForcePlateau {
-    /// Start time (inclusive).
-    pub start: f64,
-    /// End time (exclusive).
-    pub end: f64,
-    /// Contact force, compression positive (`>= 0`).
-    pub force: f64,
-    /// Velocity of the contact interface (`0` against a rigid wall).
-    pub interface_velocity: f64,
 }
 
 /// Relative time tolerance (of `T1 + T2`) within which two wave arrivals at the interface count
@@ -454,4 +457,30 @@ fn track(
         plateaus.pop();
     }
     Ok((plateaus, separation))
+}
+
+impl crate::exact::ContactHistory for ImpactForce {
+    fn contact_force(&self, t: f64) -> f64 {
+        self.force(t)
+    }
+
+    fn force_plateaus(&self) -> &[ForcePlateau] {
+        &self.plateaus
+    }
+
+    fn first_plateau_force(&self) -> f64 {
+        self.first_plateau()
+    }
+
+    fn contact_duration(&self) -> f64 {
+        self.duration()
+    }
+
+    fn separation_time(&self) -> f64 {
+        self.separation
+    }
+
+    fn contact_impulse(&self) -> f64 {
+        self.impulse()
+    }
 }

@@ -22,9 +22,12 @@
 //!   semi-infinite lumped bar ([`signorini_critical_courant_bipenalty`] and friends).
 //! - `impact` (part 2): the exact force of a striker on a bar or a rigid wall ([`ImpactForce`]).
 //! - `penalty_wall`: the same bar against a penalty spring ([`PenaltyWallForce`]).
+//! - `layered_impact`: the exact impact of two layered bars, force history, separation and
+//!   fields ([`LayeredImpact`], method of characteristics).
 
 mod critical_courant;
 mod impact;
+mod layered_impact;
 mod penalty_wall;
 
 pub use critical_courant::{
@@ -32,4 +35,5 @@ pub use critical_courant::{
     signorini_critical_courant_ratio, signorini_localized_mode, two_bar_critical_courant,
 };
 pub use impact::{ARRIVAL_TOLERANCE, ForcePlateau, ImpactBar, ImpactForce, ImpactTarget};
+pub use layered_impact::{DEFAULT_MAX_EVENTS, ImpactLayer, LayeredImpact};
 pub use penalty_wall::PenaltyWallForce;

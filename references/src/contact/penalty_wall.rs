@@ -49,7 +49,7 @@ impl PenaltyWallForce {
     /// positive and finite.
     pub fn new(bar: ImpactBar, v0: f64, stiffness: f64) -> Result<Self, ReferenceError> {
         Ok(Self {
-            bar: ImpactBar::new(bar.impedance, bar.wave_speed, bar.length)?,
+            bar: ImpactBar::new(bar.impedance(), bar.wave_speed(), bar.length())?,
             velocity: ReferenceError::require_positive("v0", v0)?,
             stiffness: ReferenceError::require_positive("stiffness", stiffness)?,
         })
@@ -58,7 +58,7 @@ impl PenaltyWallForce {
     /// Rise time constant `tau = Z/k_s`.
     #[must_use]
     pub fn time_constant(&self) -> f64 {
-        self.bar.impedance / self.stiffness
+        self.bar.impedance() / self.stiffness
     }
 
     /// `E = exp(-2T/tau)` and `Theta = 2T/tau`.
@@ -110,7 +110,7 @@ impl PenaltyWallForce {
         if t < 0.0 {
             return 0.0;
         }
-        let (z, v0, tau) = (self.bar.impedance, self.velocity, self.time_constant());
+        let (z, v0, tau) = (self.bar.impedance(), self.velocity, self.time_constant());
         let two_t = 2.0 * self.bar.transit_time();
         match self.duration() {
             Some(end) if t >= end => return 0.0,
@@ -137,7 +137,7 @@ impl PenaltyWallForce {
     #[must_use]
     pub fn impulse(&self) -> Option<f64> {
         self.duration()?;
-        let (z, v0, tau) = (self.bar.impedance, self.velocity, self.time_constant());
+        let (z, v0, tau) = (self.bar.impedance(), self.velocity, self.time_constant());
         let (e, theta) = self.decay();
         let s = self.release_sigma();
         let es = (-s).exp();

@@ -37,11 +37,11 @@ impl GradedBar {
     fn smoothness_length(&self) -> f64 {
         let b = self.gradient().abs();
         if b == 0.0 {
-            return self.length;
+            return self.length();
         }
         let z_min = self.z1().min(self.z2());
-        let c_min = z_min / self.density;
-        (2.0 * c_min * z_min / b).min(self.length)
+        let c_min = z_min / self.density();
+        (2.0 * c_min * z_min / b).min(self.length())
     }
 
     /// Exact mean of `sigma(., t)` over `[xa, xb]` (`0 <= xa < xb <= L`), what a linear
@@ -56,7 +56,7 @@ impl GradedBar {
         if !(self.in_bar(xa) && self.in_bar(xb) && xa < xb && t.is_finite()) {
             return f64::NAN;
         }
-        let (xa, xb) = (xa.clamp(0.0, self.length), xb.clamp(0.0, self.length));
+        let (xa, xb) = (xa.clamp(0.0, self.length()), xb.clamp(0.0, self.length()));
         let mut sum = 0.0;
         for (x0, parts, width, n) in self.quadrature_plan(xa, xb, t) {
             let rule = gauss_legendre(n);
@@ -104,7 +104,10 @@ impl GradedBar {
             .windows(2)
             .filter(|w| self.in_bar(w[0]) && self.in_bar(w[1]) && w[0] < w[1] && t.is_finite())
             .map(|w| {
-                let (xa, xb) = (w[0].clamp(0.0, self.length), w[1].clamp(0.0, self.length));
+                let (xa, xb) = (
+                    w[0].clamp(0.0, self.length()),
+                    w[1].clamp(0.0, self.length()),
+                );
                 self.quadrature_plan(xa, xb, t)
                     .iter()
                     .map(|&(_, parts, _, n)| parts.saturating_mul(n))

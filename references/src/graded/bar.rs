@@ -51,18 +51,12 @@ use crate::error::ReferenceError;
 /// outside `[0, L]` or non-finite input and zero before the first front arrives.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GradedBar {
-    /// Bar length L (> 0).
-    pub length: f64,
-    /// Modulus E1 at the loaded end x = 0 (> 0).
-    pub modulus_loaded: f64,
-    /// Modulus E2 at the fixed end x = L (> 0).
-    pub modulus_fixed: f64,
-    /// Mass density rho (> 0).
-    pub density: f64,
-    /// Cross-section area A (> 0); enters only forces.
-    pub area: f64,
-    /// Amplitude sigma0 of the end traction (finite; negative is compressive).
-    pub sigma0: f64,
+    length: f64,
+    modulus_loaded: f64,
+    modulus_fixed: f64,
+    density: f64,
+    area: f64,
+    sigma0: f64,
 }
 
 /// Stress and particle velocity at one point and time (per unit area).
@@ -146,6 +140,42 @@ impl GradedBar {
             area: 1.0,
             sigma0: -1.0,
         }
+    }
+
+    /// Bar length L (> 0).
+    #[must_use]
+    pub fn length(&self) -> f64 {
+        self.length
+    }
+
+    /// Modulus E1 at the loaded end x = 0 (> 0).
+    #[must_use]
+    pub fn modulus_loaded(&self) -> f64 {
+        self.modulus_loaded
+    }
+
+    /// Modulus E2 at the fixed end x = L (> 0).
+    #[must_use]
+    pub fn modulus_fixed(&self) -> f64 {
+        self.modulus_fixed
+    }
+
+    /// Mass density rho (> 0).
+    #[must_use]
+    pub fn density(&self) -> f64 {
+        self.density
+    }
+
+    /// Cross-section area A (> 0); enters only forces.
+    #[must_use]
+    pub fn area(&self) -> f64 {
+        self.area
+    }
+
+    /// Amplitude sigma0 of the end traction (finite; negative is compressive).
+    #[must_use]
+    pub fn sigma0(&self) -> f64 {
+        self.sigma0
     }
 
     /// Modulus gradient `b = (E2 - E1)/L`.

@@ -97,7 +97,7 @@ impl GradedBar {
             return FieldPoint::NAN;
         }
         let tau = self
-            .travel_time(x.clamp(0.0, self.length))
+            .travel_time(x.clamp(0.0, self.length()))
             .min(self.transit_time());
         let tol = self.time_tolerance(t);
         if t - tau < -tol {
@@ -171,7 +171,7 @@ impl GradedBar {
             return None;
         }
         // Boundary value of p + m and the constant jump [p] of pass n (sign (-1)^n).
-        let p_bc = self.sigma0 / self.z1().sqrt();
+        let p_bc = self.sigma0() / self.z1().sqrt();
         let jump = |n: usize| if n.is_multiple_of(2) { p_bc } else { -p_bc };
         // Per xi-line j, at its last node: p before any front, m after, kappa.
         let mut line_p = vec![0.0; jx + 1];

@@ -26,7 +26,7 @@ impl GradedBar {
         if !self.in_bar(x) || !t.is_finite() {
             return FieldPoint::NAN;
         }
-        let elapsed = t - self.travel_time(x.clamp(0.0, self.length));
+        let elapsed = t - self.travel_time(x.clamp(0.0, self.length()));
         if self.gradient() == 0.0 || self.laplace_difficulty(elapsed) < LAPLACE_DIFFICULTY_LIMIT {
             self.state_laplace(x, t)
         } else {

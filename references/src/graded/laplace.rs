@@ -103,8 +103,8 @@ impl GradedBar {
             inv_r1: half / z1,
             inv_r2: half / z2,
             toward_is_i: b < 0.0,
-            stress_scale: self.sigma0 * (z / z1).sqrt(),
-            velocity_scale: self.sigma0 / (z * z1).sqrt(),
+            stress_scale: self.sigma0() * (z / z1).sqrt(),
+            velocity_scale: self.sigma0() / (z * z1).sqrt(),
         }
     }
 
@@ -203,19 +203,20 @@ impl GradedBar {
         }
         if self.gradient() == 0.0 {
             // Homogeneous: all Bessel ratios are 1 and the transform is d'Alembert's.
-            let bar = DalembertBar {
-                length: self.length,
-                modulus: self.modulus_loaded,
-                density: self.density,
-                area: self.area,
-                sigma0: self.sigma0,
-            };
+            // The graded bar's data were validated by its own constructor.
+            let bar = DalembertBar::validated(
+                self.length(),
+                self.modulus_loaded(),
+                self.density(),
+                self.area(),
+                self.sigma0(),
+            );
             return FieldPoint {
                 stress: bar.stress(x, t),
                 velocity: bar.velocity(x, t),
             };
         }
-        let g = self.geometry(x.clamp(0.0, self.length));
+        let g = self.geometry(x.clamp(0.0, self.length()));
         let tol = self.time_tolerance(t);
         let elapsed = t - g.tau;
         if elapsed < -tol {
@@ -278,7 +279,7 @@ impl GradedBar {
         if !self.in_bar(x) || !t.is_finite() || self.gradient() == 0.0 {
             return None;
         }
-        let g = self.geometry(x.clamp(0.0, self.length));
+        let g = self.geometry(x.clamp(0.0, self.length()));
         let elapsed = t - g.tau;
         if !(elapsed > 0.0 && DE_HOOG_HALF_PERIOD * elapsed < g.transit - g.tau) {
             return None;

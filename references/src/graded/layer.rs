@@ -6,12 +6,9 @@ use crate::error::ReferenceError;
 /// One homogeneous layer of a [`LayeredBar`](super::LayeredBar).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Layer {
-    /// Thickness (> 0).
-    pub thickness: f64,
-    /// Young's modulus (> 0).
-    pub modulus: f64,
-    /// Mass density (> 0).
-    pub density: f64,
+    thickness: f64,
+    modulus: f64,
+    density: f64,
 }
 
 impl Layer {
@@ -25,6 +22,24 @@ impl Layer {
             modulus: ReferenceError::require_positive("modulus", modulus)?,
             density: ReferenceError::require_positive("density", density)?,
         })
+    }
+
+    /// Thickness (> 0).
+    #[must_use]
+    pub fn thickness(&self) -> f64 {
+        self.thickness
+    }
+
+    /// Young's modulus (> 0).
+    #[must_use]
+    pub fn modulus(&self) -> f64 {
+        self.modulus
+    }
+
+    /// Mass density (> 0).
+    #[must_use]
+    pub fn density(&self) -> f64 {
+        self.density
     }
 
     /// Wave speed `sqrt(E/rho)`.

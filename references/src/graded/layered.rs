@@ -122,8 +122,8 @@ impl LayeredBar {
         let mut boundaries = vec![0.0];
         let mut x = 0.0;
         for layer in layers {
-            let layer = Layer::new(layer.thickness, layer.modulus, layer.density)?;
-            x += layer.thickness;
+            let layer = Layer::new(layer.thickness(), layer.modulus(), layer.density())?;
+            x += layer.thickness();
             boundaries.push(x);
             checked.push(layer);
         }
@@ -152,23 +152,19 @@ impl LayeredBar {
             });
         }
         let dtau = bar.transit_time() / layers as f64;
-        let built: Vec<Layer> = (0..layers)
+        let built = (0..layers)
             .map(|i| {
                 let x0 = bar.position_at_travel_time(i as f64 * dtau);
                 let x1 = if i + 1 == layers {
-                    bar.length
+                    bar.length()
                 } else {
                     bar.position_at_travel_time((i + 1) as f64 * dtau)
                 };
                 let h = x1 - x0;
-                Layer {
-                    thickness: h,
-                    modulus: bar.density * (h / dtau).powi(2),
-                    density: bar.density,
-                }
+                Layer::new(h, bar.density() * (h / dtau).powi(2), bar.density())
             })
-            .collect();
-        Self::new(&built, bar.area, bar.sigma0)
+            .collect::<Result<Vec<Layer>, ReferenceError>>()?;
+        Self::new(&built, bar.area(), bar.sigma0())
     }
 
     /// Sets the cap on the number of tracked waves (default [`DEFAULT_MAX_WAVES`]).
@@ -285,7 +281,7 @@ impl LayeredBar {
             if end > t + tol {
                 partial[i].push(Front {
                     toward_fixed: toward,
-                    reach: (layer.wave_speed() * (t - start).max(0.0)).min(layer.thickness),
+                    reach: (layer.wave_speed() * (t - start).max(0.0)).min(layer.thickness()),
                     amplitude,
                 });
                 continue;
@@ -504,8 +500,8 @@ impl LayeredField {
                 }
                 // Midpoints lie strictly between fronts: classify them exactly.
                 let FieldPoint { stress, velocity } = self.sum_at(i, 0.5 * (w[0] + w[1]), 0.0);
-                kinetic += 0.5 * layer.density * area * velocity * velocity * width;
-                strain += 0.5 * area * stress * stress / layer.modulus * width;
+                kinetic += 0.5 * layer.density() * area * velocity * velocity * width;
+                strain += 0.5 * area * stress * stress / layer.modulus() * width;
             }
         }
         Energies {

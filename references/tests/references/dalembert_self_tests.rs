@@ -26,7 +26,7 @@ fn steel_bar() -> DalembertBar {
 /// Distance (in length units) from `(x, t)` to the nearest front of either family, computed
 /// independently of the crate: fronts pass x when c t - x or c t + x is a multiple of 2L.
 fn front_clearance(bar: &DalembertBar, x: f64, t: f64) -> f64 {
-    let (ct, two_l) = (bar.wave_speed() * t, 2.0 * bar.length);
+    let (ct, two_l) = (bar.wave_speed() * t, 2.0 * bar.length());
     let to_multiple = |s: f64| (s - two_l * (s / two_l).round()).abs();
     to_multiple(ct - x).min(to_multiple(ct + x))
 }
@@ -100,12 +100,17 @@ fn loaded_end_stress_equals_the_applied_traction_at_all_times_even_after_many_re
     for bar in [unit_bar(), steel_bar()] {
         let period = bar.transit_time();
         // H(0) = 1: the traction is on at t = 0 inclusive.
-        assert_eq!(bar.stress(0.0, 0.0), bar.sigma0);
+        assert_eq!(bar.stress(0.0, 0.0), bar.sigma0());
         for j in 1..=410 {
             // 0.05 T, ..., 20.5 T, including every multiple of T where fronts hit x = 0.
             let t = 0.05 * j as f64 * period;
-            assert_eq!(bar.stress(0.0, t), bar.sigma0, "t/T = {}", t / period);
-            assert_eq!(bar.stress_mean(0.0, t), bar.sigma0, "t/T = {}", t / period);
+            assert_eq!(bar.stress(0.0, t), bar.sigma0(), "t/T = {}", t / period);
+            assert_eq!(
+                bar.stress_mean(0.0, t),
+                bar.sigma0(),
+                "t/T = {}",
+                t / period
+            );
         }
     }
 }
@@ -113,8 +118,8 @@ fn loaded_end_stress_equals_the_applied_traction_at_all_times_even_after_many_re
 #[test]
 fn fixed_end_displacement_and_velocity_vanish_at_all_times() {
     for bar in [unit_bar(), steel_bar()] {
-        let (l, period) = (bar.length, bar.transit_time());
-        let u_scale = bar.sigma0.abs() / bar.impedance() * period;
+        let (l, period) = (bar.length(), bar.transit_time());
+        let u_scale = bar.sigma0().abs() / bar.impedance() * period;
         for j in 0..=410 {
             let t = 0.05 * j as f64 * period;
             assert_eq!(bar.velocity(l, t), 0.0);
@@ -127,7 +132,7 @@ fn fixed_end_displacement_and_velocity_vanish_at_all_times() {
 #[test]
 fn all_fields_vanish_before_the_first_front_arrives() {
     for bar in [unit_bar(), steel_bar()] {
-        let (l, period) = (bar.length, bar.transit_time());
+        let (l, period) = (bar.length(), bar.transit_time());
         for i in 1..=20 {
             let x = i as f64 / 20.0 * l;
             for t in [
@@ -154,7 +159,7 @@ fn all_fields_vanish_before_the_first_front_arrives() {
 #[test]
 fn stress_equals_modulus_times_displacement_gradient_away_from_fronts() {
     for bar in [unit_bar(), steel_bar()] {
-        let (l, period) = (bar.length, bar.transit_time());
+        let (l, period) = (bar.length(), bar.transit_time());
         let dx = 1e-4 * l;
         let mut checked = 0;
         for (xr, tr) in sample_points() {
@@ -163,9 +168,9 @@ fn stress_equals_modulus_times_displacement_gradient_away_from_fronts() {
                 continue;
             }
             let gradient = (bar.displacement(x + dx, t) - bar.displacement(x - dx, t)) / (2.0 * dx);
-            let err = (bar.modulus * gradient - bar.stress(x, t)).abs();
+            let err = (bar.modulus() * gradient - bar.stress(x, t)).abs();
             assert!(
-                err <= 1e-9 * bar.sigma0.abs(),
+                err <= 1e-9 * bar.sigma0().abs(),
                 "x/L = {xr}, t/T = {tr}: {err}"
             );
             checked += 1;
@@ -177,9 +182,9 @@ fn stress_equals_modulus_times_displacement_gradient_away_from_fronts() {
 #[test]
 fn velocity_equals_time_derivative_of_displacement_away_from_fronts() {
     for bar in [unit_bar(), steel_bar()] {
-        let (l, period) = (bar.length, bar.transit_time());
+        let (l, period) = (bar.length(), bar.transit_time());
         let dt = 1e-4 * period;
-        let v_scale = bar.sigma0.abs() / bar.impedance();
+        let v_scale = bar.sigma0().abs() / bar.impedance();
         let mut checked = 0;
         for (xr, tr) in sample_points() {
             let (x, t) = (xr * l, tr * period);
@@ -199,7 +204,7 @@ fn velocity_equals_time_derivative_of_displacement_away_from_fronts() {
 fn stress_average_matches_fine_midpoint_quadrature_over_intervals_containing_a_front() {
     let n = 100_000;
     for bar in [unit_bar(), steel_bar()] {
-        let (l, period) = (bar.length, bar.transit_time());
+        let (l, period) = (bar.length(), bar.transit_time());
         // (xa, xb, t) in units of L and T; each interval contains the front at that time.
         for (xa, xb, t) in [
             (0.1, 0.7, 0.3137),
@@ -217,7 +222,7 @@ fn stress_average_matches_fine_midpoint_quadrature_over_intervals_containing_a_f
                 / n as f64;
             let exact = bar.stress_average(xa, xb, t);
             // The midpoint rule misses at most one sub-interval per front, of jump <= 2|sigma0|.
-            assert!((exact - quadrature).abs() <= 2.0 * bar.sigma0.abs() / n as f64);
+            assert!((exact - quadrature).abs() <= 2.0 * bar.sigma0().abs() / n as f64);
             // The average is strictly between the plateau values, not either of them.
             let (left, right) = (bar.stress(xa, t), bar.stress(xb, t));
             assert!(
@@ -231,7 +236,7 @@ fn stress_average_matches_fine_midpoint_quadrature_over_intervals_containing_a_f
 #[test]
 fn stress_average_equals_pointwise_stress_on_intervals_without_fronts() {
     for bar in [unit_bar(), steel_bar()] {
-        let (l, period) = (bar.length, bar.transit_time());
+        let (l, period) = (bar.length(), bar.transit_time());
         let width = 0.01 * l;
         let mut checked = 0;
         for (xr, tr) in sample_points() {
@@ -256,17 +261,24 @@ fn element_averages_are_exact_when_the_front_sits_on_an_element_boundary() {
         |e: usize, t: f64| bar.stress_average(e as f64 / n as f64, (e + 1) as f64 / n as f64, t);
     // t = 0.5: incident front at x = 0.5; loaded half at sigma0, the rest at rest.
     for e in 0..n {
-        let expected = if e < 50 { bar.sigma0 } else { 0.0 };
+        let expected = if e < 50 { bar.sigma0() } else { 0.0 };
         assert!((element(e, 0.5) - expected).abs() <= 1e-15, "element {e}");
     }
     // t = 1.5: reflected front at x = 0.5; doubled stress behind it (x > 0.5).
     for e in 0..n {
-        let expected = if e < 50 { bar.sigma0 } else { 2.0 * bar.sigma0 };
+        let expected = if e < 50 {
+            bar.sigma0()
+        } else {
+            2.0 * bar.sigma0()
+        };
         assert!((element(e, 1.5) - expected).abs() <= 1e-15, "element {e}");
     }
     // t = 1: the front sits on the fixed end, every element is at sigma0.
     for e in 0..n {
-        assert!((element(e, 1.0) - bar.sigma0).abs() <= 1e-15, "element {e}");
+        assert!(
+            (element(e, 1.0) - bar.sigma0()).abs() <= 1e-15,
+            "element {e}"
+        );
     }
 }
 
@@ -299,7 +311,7 @@ fn energies_split_equally_between_kinetic_and_strain_during_first_transit() {
     for bar in [unit_bar(), steel_bar()] {
         let t = 0.4 * bar.transit_time();
         let e = bar.energies(t);
-        let expected = bar.sigma0 * bar.sigma0 * bar.area * t / (2.0 * bar.impedance());
+        let expected = bar.sigma0() * bar.sigma0() * bar.area() * t / (2.0 * bar.impedance());
         assert!((e.kinetic - expected).abs() <= 1e-14 * expected);
         assert!((e.strain - expected).abs() <= 1e-14 * expected);
     }
@@ -308,14 +320,14 @@ fn energies_split_equally_between_kinetic_and_strain_during_first_transit() {
 #[test]
 fn first_transit_carries_stress_sigma0_and_velocity_minus_sigma0_over_z_behind_the_front() {
     for bar in [unit_bar(), steel_bar()] {
-        let (l, period) = (bar.length, bar.transit_time());
-        let v_behind = -bar.sigma0 / bar.impedance();
+        let (l, period) = (bar.length(), bar.transit_time());
+        let v_behind = -bar.sigma0() / bar.impedance();
         for t in [0.2, 0.5, 0.9] {
             let t = t * period;
             let front = bar.wave_speed() * t;
             assert_eq!(bar.front_positions(t), vec![front]);
             for x in [0.0, 0.5 * front, 0.99 * front] {
-                assert_eq!(bar.stress(x, t), bar.sigma0);
+                assert_eq!(bar.stress(x, t), bar.sigma0());
                 assert_eq!(bar.velocity(x, t), v_behind);
             }
             for x in [1.01 * front, 0.5 * (front + l), l] {
@@ -328,18 +340,18 @@ fn first_transit_carries_stress_sigma0_and_velocity_minus_sigma0_over_z_behind_t
 #[test]
 fn after_fixed_end_reflection_stress_doubles_and_velocity_vanishes_behind_the_front() {
     for bar in [unit_bar(), steel_bar()] {
-        let (l, period) = (bar.length, bar.transit_time());
+        let (l, period) = (bar.length(), bar.transit_time());
         for t in [1.2, 1.5, 1.9] {
             let t = t * period;
             let front = 2.0 * l - bar.wave_speed() * t;
             assert_eq!(bar.front_positions(t), vec![front]);
             for x in [1.01 * front, 0.5 * (front + l), l] {
-                assert_eq!(bar.stress(x, t), 2.0 * bar.sigma0);
+                assert_eq!(bar.stress(x, t), 2.0 * bar.sigma0());
                 assert_eq!(bar.velocity(x, t), 0.0);
             }
             for x in [0.0, 0.99 * front] {
-                assert_eq!(bar.stress(x, t), bar.sigma0);
-                assert_eq!(bar.velocity(x, t), -bar.sigma0 / bar.impedance());
+                assert_eq!(bar.stress(x, t), bar.sigma0());
+                assert_eq!(bar.velocity(x, t), -bar.sigma0() / bar.impedance());
             }
         }
     }
@@ -351,9 +363,11 @@ fn loaded_end_displacement_grows_linearly_until_the_reflection_returns() {
         let period = bar.transit_time();
         for j in 0..=40 {
             let t = 0.05 * j as f64 * period;
-            let expected = -bar.sigma0 * t / bar.impedance();
+            let expected = -bar.sigma0() * t / bar.impedance();
             let u = bar.displacement(0.0, t);
-            assert!((u - expected).abs() <= 1e-14 * (bar.sigma0 / bar.impedance() * period).abs());
+            assert!(
+                (u - expected).abs() <= 1e-14 * (bar.sigma0() / bar.impedance() * period).abs()
+            );
         }
     }
 }
@@ -362,24 +376,24 @@ fn loaded_end_displacement_grows_linearly_until_the_reflection_returns() {
 fn front_mean_values_are_the_average_of_the_limits_before_and_after_arrival() {
     let bar = unit_bar();
     // Incident front exactly at x = 0.25 at t = 0.25, and at x = 0.75 after reflection.
-    assert_eq!(bar.stress(0.25, 0.25), bar.sigma0);
-    assert_eq!(bar.stress_mean(0.25, 0.25), 0.5 * bar.sigma0);
-    assert_eq!(bar.velocity(0.25, 0.25), -bar.sigma0);
-    assert_eq!(bar.velocity_mean(0.25, 0.25), -0.5 * bar.sigma0);
-    assert_eq!(bar.stress_mean(0.75, 1.25), 1.5 * bar.sigma0);
-    assert_eq!(bar.velocity_mean(0.75, 1.25), -0.5 * bar.sigma0);
+    assert_eq!(bar.stress(0.25, 0.25), bar.sigma0());
+    assert_eq!(bar.stress_mean(0.25, 0.25), 0.5 * bar.sigma0());
+    assert_eq!(bar.velocity(0.25, 0.25), -bar.sigma0());
+    assert_eq!(bar.velocity_mean(0.25, 0.25), -0.5 * bar.sigma0());
+    assert_eq!(bar.stress_mean(0.75, 1.25), 1.5 * bar.sigma0());
+    assert_eq!(bar.velocity_mean(0.75, 1.25), -0.5 * bar.sigma0());
     // Round-off in x = i h and t = n dt (Co = 1) still finds the front: 0.1 * 3 != 0.3.
     let (x, t) = (3.0 * 0.1, 0.3);
     assert_ne!(x, t);
-    assert_eq!(bar.velocity_mean(x, t), -0.5 * bar.sigma0);
-    assert_eq!(bar.velocity(x, t), -bar.sigma0);
+    assert_eq!(bar.velocity_mean(x, t), -0.5 * bar.sigma0());
+    assert_eq!(bar.velocity(x, t), -bar.sigma0());
 }
 
 #[test]
 fn fields_are_periodic_with_period_four_transit_times() {
     for bar in [unit_bar(), steel_bar()] {
-        let (l, period) = (bar.length, bar.transit_time());
-        let u_scale = (bar.sigma0 / bar.impedance() * period).abs();
+        let (l, period) = (bar.length(), bar.transit_time());
+        let u_scale = (bar.sigma0() / bar.impedance() * period).abs();
         for (xr, tr) in sample_points() {
             let (x, t) = (xr * l, tr * period);
             if front_clearance(&bar, x, t) < 1e-6 * l {
@@ -425,7 +439,7 @@ fn invalid_evaluation_input_gives_nan_instead_of_panicking() {
 #[test]
 fn front_positions_are_sorted_and_mark_where_the_stress_jumps() {
     for bar in [unit_bar(), steel_bar()] {
-        let (l, period) = (bar.length, bar.transit_time());
+        let (l, period) = (bar.length(), bar.transit_time());
         for j in 0..=200 {
             let t = 0.0517 * j as f64 * period;
             let fronts = bar.front_positions(t);

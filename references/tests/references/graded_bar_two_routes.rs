@@ -48,7 +48,7 @@ fn front_clearance(bar: &GradedBar, x: f64, t: f64) -> f64 {
 fn difference(bar: &GradedBar, x: f64, a: FieldPoint, b: FieldPoint) -> f64 {
     let stress = (a.stress - b.stress).abs();
     let velocity = (a.velocity - b.velocity).abs() * bar.impedance(x);
-    stress.max(velocity) / bar.sigma0.abs()
+    stress.max(velocity) / bar.sigma0().abs()
 }
 
 #[test]
@@ -56,7 +56,7 @@ fn closed_forms_of_travel_time_transit_and_front_position_are_consistent() {
     let seed = GradedBar::seed_fig2();
     assert!((seed.transit_time() - 0.4).abs() < 1e-15);
     for bar in bars() {
-        let (l, transit) = (bar.length, bar.transit_time());
+        let (l, transit) = (bar.length(), bar.transit_time());
         assert!((bar.travel_time(l) - transit).abs() < 1e-15);
         assert_eq!(bar.front_position(transit), Some(l));
         assert_eq!(bar.front_position(1.01 * transit), None);
@@ -66,7 +66,7 @@ fn closed_forms_of_travel_time_transit_and_front_position_are_consistent() {
             // Inverse and the literal form of methods.md §4.
             assert!((bar.position_at_travel_time(tau) - x).abs() < 1e-14);
             let literal =
-                2.0 * bar.density.sqrt() * (bar.modulus(x).sqrt() - bar.modulus_loaded.sqrt())
+                2.0 * bar.density().sqrt() * (bar.modulus(x).sqrt() - bar.modulus_loaded().sqrt())
                     / bar.gradient();
             assert!((tau - literal).abs() < 1e-14);
             // dtau/dx = 1/c(x) (central difference, step 1e-5).
@@ -80,7 +80,7 @@ fn closed_forms_of_travel_time_transit_and_front_position_are_consistent() {
         }
         // The first-front jump law.
         let x = 0.37;
-        let expected = bar.sigma0 * (bar.impedance(x) / bar.impedance(0.0)).sqrt();
+        let expected = bar.sigma0() * (bar.impedance(x) / bar.impedance(0.0)).sqrt();
         assert!((bar.first_jump(x) - expected).abs() < 1e-15);
     }
     // Homogeneous limit: tau = x/c exactly, and continuously for a vanishing gradient.
@@ -100,7 +100,7 @@ fn routes_a_and_b_agree_to_1e_9_away_from_fronts_at_half_and_one_and_a_half_tran
         for t_over_t in [0.5, 1.5] {
             let t = t_over_t * transit;
             for i in 0..=20 {
-                let x = i as f64 / 20.0 * bar.length;
+                let x = i as f64 / 20.0 * bar.length();
                 if front_clearance(&bar, x, t) < 1e-3 * transit {
                     continue;
                 }
@@ -110,7 +110,7 @@ fn routes_a_and_b_agree_to_1e_9_away_from_fronts_at_half_and_one_and_a_half_tran
                 assert!(
                     d < 1e-9,
                     "E1 = {}, x = {x}, t/T = {t_over_t}: (a) {a:?} (b) {b:?} diff {d:e}",
-                    bar.modulus_loaded
+                    bar.modulus_loaded()
                 );
                 checked += 1;
             }
@@ -227,7 +227,7 @@ fn jumps_measured_from_both_routes_and_arrival_times_match_the_closed_forms() {
             let passes = bar.passes(x, 3.0 * transit);
             // Arrival times: 2kT + tau and 2(k+1)T - tau, amplitude (-1)^k sigma0 sqrt(z/z1).
             let tau = bar.travel_time(x);
-            let amplitude = bar.sigma0 * (bar.modulus(x) / bar.modulus_loaded).powf(0.25);
+            let amplitude = bar.sigma0() * (bar.modulus(x) / bar.modulus_loaded()).powf(0.25);
             assert_eq!(passes.len(), 3);
             assert_eq!(passes[0].direction, Direction::TowardFixedEnd);
             assert!((passes[0].time - tau).abs() < 1e-15);
@@ -298,7 +298,7 @@ fn boundary_conditions_hold_traction_at_the_loaded_end_and_rest_at_the_fixed_end
         for t_over_t in [0.3, 0.8, 1.4, 2.2, 3.6] {
             let t = t_over_t * transit;
             for route in [bar.state_laplace(0.0, t), bar.state_characteristics(0.0, t)] {
-                assert!((route.stress - bar.sigma0).abs() < 1e-10, "{route:?}");
+                assert!((route.stress - bar.sigma0()).abs() < 1e-10, "{route:?}");
             }
             for route in [bar.state_laplace(1.0, t), bar.state_characteristics(1.0, t)] {
                 assert!(
@@ -485,7 +485,7 @@ fn timing_of_a_1000_point_stress_profile() {
             assert!(profile.iter().all(|s| s.is_finite()));
             println!(
                 "E1 = {:>2}, t = {t_over_t} T: 1000-point profile in {elapsed:?}",
-                bar.modulus_loaded
+                bar.modulus_loaded()
             );
         }
         let nodes: Vec<f64> = (0..=1000).map(|i| i as f64 / 1000.0).collect();

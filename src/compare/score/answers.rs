@@ -144,7 +144,7 @@ pub fn exact_set(
         };
         let force = time
             .iter()
-            .map(|&t| case.reference.force(t) + 0.0)
+            .map(|&t| case.reference.history().contact_force(t) + 0.0)
             .collect();
         let history = ForceHistory {
             time,

@@ -13,7 +13,7 @@ use super::applies::Applies;
 use super::bind::profile_times;
 use super::outcome::{Scored, ScoredCase, ScoredForce, SkipKind, Skipped};
 use crate::compare::contact::ForceErrors;
-use crate::compare::contact::{DURATION_UNDEFINED, PLATEAU_UNDEFINED};
+use crate::compare::contact::{DURATION_UNDEFINED, PLATEAU_UNDEFINED, SEPARATION_UNDEFINED};
 use crate::compare::expect::{at_time, judge, ratio};
 use crate::compare::norms::ErrorNorms;
 use crate::compare::stress_difference::{ProfileView, stress_difference};
@@ -232,6 +232,11 @@ fn measure(
             "undefined: the impulse of the force history is not finite",
         ),
         Metric::DurationError => force(|f| f.errors.duration_error, DURATION_UNDEFINED),
+        Metric::SeparationError => force(|f| f.errors.separation_error, SEPARATION_UNDEFINED),
+        Metric::ForceL1OffJumps => force(
+            |f| Some(f.errors.force_l1_off_jumps).filter(|e| e.is_finite()),
+            "undefined: the L1 error of the force history is not finite",
+        ),
         Metric::ForceL1Error => force(
             |f| Some(f.errors.force_l1_error).filter(|e| e.is_finite()),
             "undefined: the L1 error of the force history is not finite",

@@ -16,12 +16,12 @@ use super::shift_fit::fit_shift;
 use crate::compare::contact::ForceErrors;
 use crate::results::exchange::record::ForceHistory;
 use crate::scene::contact::ContactCase;
-use courant_references::contact::ImpactForce;
+use courant_references::ContactHistory;
 
 /// `int_0^t F dt` of the exact staircase.
-pub fn exact_impulse(reference: &ImpactForce, t: f64) -> f64 {
+pub fn exact_impulse(reference: &dyn ContactHistory, t: f64) -> f64 {
     reference
-        .plateaus()
+        .force_plateaus()
         .iter()
         .map(|p| p.force * (t.min(p.end) - p.start).max(0.0))
         .sum()
@@ -44,7 +44,7 @@ pub fn trapezoid_impulse(time: &[f64], force: &[f64]) -> Vec<f64> {
 /// trapezoid rule over its samples (courant's own runs sum the momentum of every step; the two
 /// agree when every step is sampled and the force ends at 0).
 pub fn score_force(bound: &Bound, case: &ContactCase, h: &ForceHistory) -> ScoredCase {
-    let reference = &case.reference;
+    let reference = case.reference.history();
     let samples: Vec<(f64, f64)> = h
         .time
         .iter()
@@ -53,9 +53,12 @@ pub fn score_force(bound: &Bound, case: &ContactCase, h: &ForceHistory) -> Score
         .collect();
     let cumulative = trapezoid_impulse(&h.time, &h.force);
     let impulse = cumulative.last().copied().unwrap_or(0.0);
-    let exact: Vec<f64> = samples.iter().map(|s| reference.force(s.0)).collect();
+    let exact: Vec<f64> = samples
+        .iter()
+        .map(|s| reference.contact_force(s.0))
+        .collect();
     let errors = ForceErrors::of_samples(&samples, &exact, reference);
-    let impulse_error = (impulse - reference.impulse()).abs() / reference.impulse();
+    let impulse_error = (impulse - reference.contact_impulse()).abs() / reference.contact_impulse();
     let (t0, t1) = (h.time[0], h.time[h.time.len() - 1]);
     let weights = cell_lengths(&h.time, t0, t1);
     let (mut error, mut error_flipped) = (0.0, 0.0);
@@ -65,8 +68,8 @@ pub fn score_force(bound: &Bound, case: &ContactCase, h: &ForceHistory) -> Score
     }
     // Relative to the exact impulse, as the force L1 error.
     let sign = SignCheck {
-        error: error / reference.impulse(),
-        error_flipped: error_flipped / reference.impulse(),
+        error: error / reference.contact_impulse(),
+        error_flipped: error_flipped / reference.contact_impulse(),
     };
     let factor = if sign.matches() == Some(false) {
         -1.0
@@ -115,7 +118,7 @@ pub fn score_force(bound: &Bound, case: &ContactCase, h: &ForceHistory) -> Score
             reference: exact,
             impulse,
             impulse_error,
-            plateau: reference.first_plateau(),
+            plateau: reference.first_plateau_force(),
             errors,
         }),
         diagnostics: Diagnostics {

@@ -6,7 +6,7 @@ use super::diagnostics::{Diagnostics, Layout, LayoutCheck, Magnitude, SignCheck}
 use super::outcome::{Read, ScoreError, Scored, ScoredCase, ScoredProfile};
 use super::shift_fit::{FitProfile, fit_profiles};
 use super::time_level::TimeShift;
-use crate::compare::exact::ExactSolution;
+use crate::compare::exact::ExactOnMesh;
 use crate::compare::norms::ErrorNorms;
 use crate::results::exchange::error::ExchangeError;
 use crate::results::exchange::reader::TOUCH;

@@ -6,9 +6,9 @@
 
 use crate::results::exchange::error::ExchangeError;
 use crate::results::exchange::record::{CaseFile, Positions, Profile};
-use crate::scene::budget::{LAYERED_WAVE_WORK, MAX_REFERENCE_WORK};
-use crate::scene::reference::{GRADED_EXTREME_SAMPLES, Reference};
-use courant_references::graded::CHARACTERISTIC_TRANSITS_MAX;
+use crate::scene::budget::MAX_REFERENCE_WORK;
+use crate::scene::reference::Reference;
+use courant_references::Evaluation;
 
 /// Evaluations of the reference per profile when a file is graded: the exact values, their
 /// mirror image (the layout diagnostic) and the time-level fit's evaluations at shifted times.
@@ -39,36 +39,23 @@ pub fn check_reference_work(
                 message,
             )
         };
-        let per_evaluation = match reference {
-            Reference::Dalembert(_) => 0.0,
-            Reference::Graded(g) => {
-                let Some(one) = g.evaluation_work(t) else {
-                    return Err(at(format!(
-                        "t = {t:e} is beyond where the graded reference is defined: {CHARACTERISTIC_TRANSITS_MAX} transit \
-                         times (t <= {:.6e} on this bar)",
-                        CHARACTERISTIC_TRANSITS_MAX * g.transit_time()
-                    )));
-                };
-                let evaluations = match &p.positions {
-                    Positions::Elements { left, right } => {
-                        let mut nodes: Vec<f64> = left.iter().map(|x| x - start).collect();
-                        nodes.extend(right.last().map(|x| x - start));
-                        g.average_evaluations(&nodes, t) as f64
-                    }
-                    Positions::Points(x) => x.len() as f64,
-                } + (GRADED_EXTREME_SAMPLES + 1) as f64
-                    + 2.0 * g.front_positions(t).len() as f64;
-                evaluations * one
+        let exact = reference.exact();
+        let one = exact.evaluation_work(t).map_err(|e| {
+            at(format!(
+                "t = {t:e} is beyond what the {} reference can reach: {e}",
+                reference.name()
+            ))
+        })?;
+        let nodes: Vec<f64>;
+        let values = match &p.positions {
+            Positions::Elements { left, right } => {
+                nodes = left.iter().chain(right.last()).map(|x| x - start).collect();
+                Evaluation::Averages(&nodes)
             }
-            Reference::Layered(l) => match l.field(t) {
-                Ok(field) => 2.0 * field.wave_count() as f64 * LAYERED_WAVE_WORK,
-                Err(e) => {
-                    return Err(at(format!(
-                        "t = {t:e} is beyond what the layered reference can reach: {e}"
-                    )));
-                }
-            },
+            Positions::Points(x) => Evaluation::Points(x),
         };
+        let evaluations = exact.evaluations(values, t) + exact.evaluations(Evaluation::Extreme, t);
+        let per_evaluation = evaluations as f64 * one;
         work += EVALUATIONS_PER_PROFILE * per_evaluation;
         if work > MAX_REFERENCE_WORK || work.is_nan() {
             return Err(at(format!(
