@@ -183,9 +183,14 @@ impl StabilityRow {
                 StepLimit::ContactFree => "2/omega_max (contact-free)",
                 StepLimit::ContactActive => "2/omega_max (contact-active)",
                 StepLimit::PredictorCorrector => "k_s dt^2/(m_c + m_p) <= 1",
+                StepLimit::Measured => "measured rho(G) <= 1 (combined)",
+                StepLimit::ParkRule => "alpha_e <= 1 (combined)",
             },
             ratio,
-            predicted: predicted_contact(ratio, r.run.dt / critical.contact_free),
+            predicted: match critical.binding {
+                StepLimit::ParkRule => predicted_by_bound(ratio),
+                _ => predicted_contact(ratio, r.run.dt / critical.contact_free),
+            },
             completed: caught.is_none(),
             caught,
             steps: r.run.steps,
@@ -286,6 +291,8 @@ impl StabilityRow {
 fn limit_source(limit: &str) -> &'static str {
     if limit.starts_with("2/omega_max (contact") || limit.starts_with("k_s") {
         "exact critical step of the contact scheme (methods.md §7)"
+    } else if limit.starts_with("measured") {
+        "measured spectral radius of the combined one-step amplification matrix, contact active and off (docs/contact_with_local_stepping.md)"
     } else if limit.starts_with("alpha_e") {
         "Park's alpha_e <= 1 (methods.md §6)"
     } else {

@@ -36,6 +36,22 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         "impact_layered",
         include_str!("../../scenes/impact_layered.toml"),
     ),
+    (
+        "impact_layered_combined",
+        include_str!("../../scenes/impact_layered_combined.toml"),
+    ),
+    (
+        "impact_layered_stability",
+        include_str!("../../scenes/impact_layered_stability.toml"),
+    ),
+    (
+        "impact_layered_below_limits",
+        include_str!("../../scenes/impact_layered_below_limits.toml"),
+    ),
+    (
+        "impact_layered_park_free",
+        include_str!("../../scenes/impact_layered_park_free.toml"),
+    ),
     ("dispersion", include_str!("../../scenes/dispersion.toml")),
     (
         "courant_sweep",
@@ -179,7 +195,7 @@ pub fn resolve_all(args: &[String]) -> Result<Vec<Scene>, Vec<SceneError>> {
 
 /// The name of `names` nearest to `arg` by edit distance, if it is close: at most 2 edits, and
 /// fewer than half of `arg`'s characters.
-fn closest<'a>(arg: &str, names: &[&'a str]) -> Option<&'a str> {
+pub(super) fn closest<'a>(arg: &str, names: &[&'a str]) -> Option<&'a str> {
     let arg = arg.to_lowercase();
     names
         .iter()
