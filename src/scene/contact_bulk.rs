@@ -163,3 +163,95 @@ pub(super) fn check(bulk: &CombinedBulk, dt: f64, allow_unstable: bool) -> Resul
         dt / limit - 1.0
     ))
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::scene::cases::Scene;
+    use courant_solver::contact::StepLimit;
+    use courant_solver::contact::combined::BulkScheme;
+
+    fn scene(extra: &str, elements: usize) -> String {
+        format!(
+            "[scene]\ndescription = \"d\"\nsource = \"s\"\n\n[contact]\nproblem = \"two-bars\"\n\
+             striker = {{ length = 1.0, elements = {elements} }}\n\
+             target = {{ length = 1.0, elements = {elements}, modulus = 4.0 }}\n\
+             velocity = 1.0\nschemes = [\"cd-bipenalty\", \"lagrange-multiplier\"]\n\
+             beta_s = 100.0\ncourant = 0.5\nend_time = 1.0\n{extra}\n"
+        )
+    }
+
+    /// Source of truth: the scene rules (README, "Scene files": errors name key and line, with a
+    /// did-you-mean for a misspelt value). Proves: a misspelt bulk or Park variant is refused at
+    /// its own key and line with the nearest name; a measured limit on a mesh above the dense
+    /// analysis's 400 nodes is refused at `contact.bulk`; Park above `alpha_e = 1` is refused
+    /// at `contact.courant` unless unstable runs are allowed.
+    #[test]
+    fn bulk_keys_are_checked_where_they_are_written() {
+        let e = Scene::parse("t", "t.toml", &scene("bulk = \"park-lst\"", 4)).unwrap_err();
+        assert_eq!((e.key.as_str(), e.line), ("contact.bulk", 14), "{e}");
+        assert!(e.message.contains("did you mean park-lts?"), "{e}");
+        let text = scene("bulk = \"park-lts\"\npark_variant = \"fre\"", 4);
+        let e = Scene::parse("t", "t.toml", &text).unwrap_err();
+        assert_eq!(
+            (e.key.as_str(), e.line),
+            ("contact.park_variant", 15),
+            "{e}"
+        );
+        assert!(e.message.contains("did you mean free?"), "{e}");
+        let e = Scene::parse("t", "t.toml", &scene("bulk = \"cd-rmm\"", 250)).unwrap_err();
+        assert_eq!(e.key, "contact.bulk", "{e}");
+        assert!(e.message.contains("400 nodes"), "{e}");
+        let above = scene("bulk = \"park-lts\"", 4).replace("courant = 0.5", "courant = 1.2");
+        let e = Scene::parse("t", "t.toml", &above).unwrap_err();
+        assert_eq!(e.key, "contact.courant", "{e}");
+        let allowed = format!("{above}allow_unstable = true\n");
+        if let Err(e) = Scene::parse("t", "t.toml", &allowed) {
+            panic!("{e}");
+        }
+    }
+
+    /// Source of truth: the meaning of `bulk` (module docs). Proves: without `bulk` the cases
+    /// keep their names and the lumped contact stepper (the report of existing scenes does not
+    /// change); each named bulk prefixes its cases and carries its limit: Park's rule for
+    /// `park-*`, the measured limit for `cd-rmm` and, with `courant_unit = "measured"`, for every
+    /// bulk (with the Lagrange multiplier CD-LMM's limit is its contact-free one, the stiffest
+    /// element's transit time to the bisection's tolerance).
+    #[test]
+    fn bulks_name_their_cases_and_carry_their_limits() {
+        let plain = Scene::parse("t", "t.toml", &scene("", 4)).unwrap();
+        let names: Vec<_> = plain.contact.iter().map(|c| c.name.as_str()).collect();
+        assert_eq!(names, ["cd-bipenalty-bs100", "lagrange-multiplier"]);
+        assert!(plain.contact.iter().all(|c| c.bulk.is_none()));
+        let text = scene("bulk = [\"cd-lmm\", \"park-global\", \"cd-rmm\"]", 4);
+        let mixed = Scene::parse("t", "t.toml", &text).unwrap();
+        let limits: Vec<_> = mixed
+            .contact
+            .iter()
+            .map(|c| (c.name.as_str(), c.bulk.map(|b| b.critical.binding)))
+            .collect();
+        assert_eq!(
+            limits,
+            [
+                ("cd-bipenalty-bs100", None),
+                ("park-global-cd-bipenalty-bs100", Some(StepLimit::ParkRule)),
+                ("cd-rmm-cd-bipenalty-bs100", Some(StepLimit::Measured)),
+                ("lagrange-multiplier", None),
+                ("park-global-lagrange-multiplier", Some(StepLimit::ParkRule)),
+                ("cd-rmm-lagrange-multiplier", Some(StepLimit::Measured)),
+            ]
+        );
+        let text = scene("courant_unit = \"measured\"", 4);
+        let measured = Scene::parse("t", "t.toml", &text).unwrap();
+        for case in &measured.contact {
+            let bulk = case.bulk.expect("measured cases run combined");
+            assert_eq!(bulk.scheme, BulkScheme::CentralDifference);
+            assert_eq!(bulk.critical.binding, StepLimit::Measured);
+            assert!(case.integrator.dt == 0.5 * bulk.critical.applicable);
+        }
+        let lm = measured.contact[1].bulk.unwrap().critical;
+        assert!(
+            lm.applicable == lm.contact_free && lm.applicable >= 0.999 * lm.stiffest_transit,
+            "{lm:?}"
+        );
+    }
+}
