@@ -4,6 +4,7 @@
 use super::cases::Scene;
 use super::error::SceneError;
 use super::limits::Limits;
+use super::names::closest;
 use std::path::Path;
 
 /// (name, TOML text) of every built-in scene.
@@ -193,36 +194,10 @@ pub fn resolve_all(args: &[String]) -> Result<Vec<Scene>, Vec<SceneError>> {
     }
 }
 
-/// The name of `names` nearest to `arg` by edit distance, if it is close: at most 2 edits, and
-/// fewer than half of `arg`'s characters.
-pub(super) fn closest<'a>(arg: &str, names: &[&'a str]) -> Option<&'a str> {
-    let arg = arg.to_lowercase();
-    names
-        .iter()
-        .map(|n| (edit_distance(&arg, n), *n))
-        .filter(|&(d, _)| d <= 2 && 2 * d < arg.chars().count())
-        .min_by_key(|&(d, _)| d)
-        .map(|(_, n)| n)
-}
-
-/// Levenshtein distance between two strings (insertions, deletions, substitutions).
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut previous: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut current = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            let substitution = previous[j] + usize::from(ca != *cb);
-            current.push(substitution.min(previous[j + 1] + 1).min(current[j] + 1));
-        }
-        previous = current;
-    }
-    previous[b.len()]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::names::edit_distance;
 
     /// Source of truth: Levenshtein's edit distance. Proves: a misspelt built-in name gets the
     /// nearest name, an unrelated word gets none.

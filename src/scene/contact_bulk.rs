@@ -7,8 +7,8 @@
 //! (`docs/contact_with_local_stepping.md`). With `courant_unit = "measured"` every bulk, `cd-lmm`
 //! included, runs combined against its measured limit.
 
-use super::builtin::closest;
 use super::error::{SceneError, Source};
+use super::names::closest;
 use super::schema::{RawContact, RawContactCourantUnit};
 use courant_solver::contact::combined::amplification::MAX_NODES;
 use courant_solver::contact::combined::{BulkScheme, CombinedIntegrator};

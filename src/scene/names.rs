@@ -65,6 +65,33 @@ pub fn check(
     Ok(())
 }
 
+/// The name of `names` nearest to `arg` by edit distance, if it is close: at most 2 edits, and
+/// fewer than half of `arg`'s characters.
+pub fn closest<'a>(arg: &str, names: &[&'a str]) -> Option<&'a str> {
+    let arg = arg.to_lowercase();
+    names
+        .iter()
+        .map(|n| (edit_distance(&arg, n), *n))
+        .filter(|&(d, _)| d <= 2 && 2 * d < arg.chars().count())
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, n)| n)
+}
+
+/// Levenshtein distance between two strings (insertions, deletions, substitutions).
+pub fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut previous: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut current = vec![i + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let substitution = previous[j] + usize::from(ca != *cb);
+            current.push(substitution.min(previous[j + 1] + 1).min(current[j] + 1));
+        }
+        previous = current;
+    }
+    previous[b.len()]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
