@@ -73,6 +73,11 @@ fn the_exact_answers_meet_every_bound_and_no_signature_applies(
         "fig6",
         "contact_wall",
         "contact_unequal",
+        "impact_layered",
+        "impact_layered_combined",
+        "impact_layered_stability",
+        "impact_layered_below_limits",
+        "impact_layered_park_free",
         "dispersion",
         "courant_sweep",
         "courant_sweep_schemes",
@@ -137,7 +142,7 @@ fn the_exact_answers_meet_every_bound_and_no_signature_applies(
 
 #[test]
 fn the_builtin_list_above_is_complete() {
-    let listed = 28;
+    let listed = 33;
     assert_eq!(
         BUILTIN_SCENES.len(),
         listed,
