@@ -15,6 +15,11 @@
 //! bounded, possibly pumping energy into the bars, while above the contact-free limit the bulk
 //! modes grow and the run is `unstable`.
 //!
+//! A contact case with a combined bulk (`contact::combined`) is judged against the limit it was
+//! built with: the measured spectral radius of its one-step amplification matrix with the
+//! contact active and off (`measured rho(G) <= 1`, read as the contact and contact-free limits
+//! above), or Park's rule `alpha_e <= 1` (sufficient only: `beyond bound` above it).
+//!
 //! "Stable" promises bounded energy, not only a run that finishes: a completed run whose
 //! `energy_ratio` exceeds [`ENERGY_BAND`] is observed as `energy growth` and, where stability
 //! was predicted, disagrees with the prediction.
