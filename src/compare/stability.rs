@@ -15,6 +15,11 @@
 //! bounded, possibly pumping energy into the bars, while above the contact-free limit the bulk
 //! modes grow and the run is `unstable`.
 //!
+//! A contact case with a combined bulk (`contact::combined`) is judged against the limit it was
+//! built with: the measured spectral radius of its one-step amplification matrix with the
+//! contact active and off (`measured rho(G) <= 1`, read as the contact and contact-free limits
+//! above), or Park's rule `alpha_e <= 1` (sufficient only: `beyond bound` above it).
+//!
 //! "Stable" promises bounded energy, not only a run that finishes: a completed run whose
 //! `energy_ratio` exceeds [`ENERGY_BAND`] is observed as `energy growth` and, where stability
 //! was predicted, disagrees with the prediction.
@@ -183,9 +188,14 @@ impl StabilityRow {
                 StepLimit::ContactFree => "2/omega_max (contact-free)",
                 StepLimit::ContactActive => "2/omega_max (contact-active)",
                 StepLimit::PredictorCorrector => "k_s dt^2/(m_c + m_p) <= 1",
+                StepLimit::Measured => "measured rho(G) <= 1 (combined)",
+                StepLimit::ParkRule => "alpha_e <= 1 (combined)",
             },
             ratio,
-            predicted: predicted_contact(ratio, r.run.dt / critical.contact_free),
+            predicted: match critical.binding {
+                StepLimit::ParkRule => predicted_by_bound(ratio),
+                _ => predicted_contact(ratio, r.run.dt / critical.contact_free),
+            },
             completed: caught.is_none(),
             caught,
             steps: r.run.steps,
@@ -292,6 +302,8 @@ impl StabilityRow {
 fn limit_source(limit: &str) -> &'static str {
     if limit.starts_with("2/omega_max (contact") || limit.starts_with("k_s") {
         "exact critical step of the contact scheme (methods.md §7)"
+    } else if limit.starts_with("measured") {
+        "measured spectral radius of the combined one-step amplification matrix, contact active and off (docs/contact_with_local_stepping.md)"
     } else if limit.starts_with("alpha_e") {
         "Park's alpha_e <= 1 (methods.md §6)"
     } else {

@@ -37,6 +37,22 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         "impact_layered",
         include_str!("../../scenes/impact_layered.toml"),
     ),
+    (
+        "impact_layered_combined",
+        include_str!("../../scenes/impact_layered_combined.toml"),
+    ),
+    (
+        "impact_layered_stability",
+        include_str!("../../scenes/impact_layered_stability.toml"),
+    ),
+    (
+        "impact_layered_below_limits",
+        include_str!("../../scenes/impact_layered_below_limits.toml"),
+    ),
+    (
+        "impact_layered_park_free",
+        include_str!("../../scenes/impact_layered_park_free.toml"),
+    ),
     ("dispersion", include_str!("../../scenes/dispersion.toml")),
     (
         "courant_sweep",

@@ -5,6 +5,7 @@
 use super::budget;
 pub use super::contact_bar::ContactReference;
 use super::contact_bar::{bar, homogeneous, transit};
+pub use super::contact_bulk::CombinedBulk;
 use super::error::{SceneError, Source, positive};
 use super::magnitude;
 use super::schema::{RawContact, RawContactCourantUnit, RawContactScene, RawContactStability};
@@ -39,6 +40,8 @@ pub struct ContactCase {
     pub force: ForceMeasure,
     /// Transit time of the striker, `L1/c1`: the time unit of the contact figures.
     pub striker_transit: f64,
+    /// The combined bulk (`None`: central difference with the lumped mass, the contact stepper).
+    pub bulk: Option<CombinedBulk>,
 }
 
 /// The force a contact case is graded and plotted by.
@@ -335,7 +338,8 @@ pub(super) fn cases(
         .filter(|s| s.as_str() != "lagrange-multiplier")
         .map(|s| per_beta(s) * betas.len().max(1))
         .sum();
-    let cases = (schemes.len() - penalised + penalty_cases) * courants.len();
+    let bulks = super::contact_bulk::bulks(src, study)?;
+    let cases = (schemes.len() - penalised + penalty_cases) * courants.len() * bulks.len();
     budget::validation(
         src,
         &(Some(study.schemes.span()), "contact.schemes"),
@@ -406,7 +410,21 @@ pub(super) fn cases(
                 ));
             }
         };
-        for (name, scheme, penalty) in variants {
+        for ((prefix, bulk), (name, scheme, penalty)) in bulks
+            .iter()
+            .flat_map(|b| variants.iter().map(move |v| (b, v)))
+        {
+            let (name, scheme, penalty) = (format!("{prefix}{name}"), *scheme, *penalty);
+            let combined = bulk
+                .map(|b| super::contact_bulk::critical(&problem, b, scheme, study.courant_unit))
+                .transpose()
+                .map_err(|m| {
+                    let at = study
+                        .bulk
+                        .as_ref()
+                        .map_or(study.courant.span(), |b| b.span());
+                    src.error(Some(at), "contact.bulk", format!("case {name}: {m}"))
+                })?;
             for &courant in &courants {
                 let case_name = if courants.len() > 1 {
                     format!("{name}-co{}", super::names::number(courant))
@@ -420,9 +438,13 @@ pub(super) fn cases(
                         format!("case {case_name}: {msg}"),
                     )
                 };
-                let dt = match study.courant_unit {
-                    RawContactCourantUnit::StiffestElement => courant * problem.stiffest_transit(),
-                    RawContactCourantUnit::Critical => {
+                let dt = match (study.courant_unit, &combined) {
+                    (RawContactCourantUnit::StiffestElement, _) => {
+                        courant * problem.stiffest_transit()
+                    }
+                    (_, Some(c)) => courant * c.critical.applicable,
+                    // `bulks` makes every case of the measured unit combined.
+                    (RawContactCourantUnit::Critical | RawContactCourantUnit::Measured, None) => {
                         scheme
                             .validate()
                             .map_err(|e| fail("contact.beta_s", e.to_string()))?;
@@ -451,9 +473,14 @@ pub(super) fn cases(
                     scheme,
                     stability,
                 };
-                integrator
-                    .check_stability(&problem)
-                    .map_err(|e| fail("contact.courant", e.to_string()))?;
+                match &combined {
+                    None => integrator
+                        .check_stability(&problem)
+                        .map(|_| ())
+                        .map_err(|e| fail("contact.courant", e.to_string()))?,
+                    Some(c) => super::contact_bulk::check(c, dt, study.allow_unstable)
+                        .map_err(|m| fail("contact.courant", m))?,
+                }
                 cases.push(ContactCase {
                     name: case_name,
                     problem: problem.clone(),
@@ -464,6 +491,7 @@ pub(super) fn cases(
                     reference: reference.clone(),
                     force: ForceMeasure::for_scheme(force, &scheme),
                     striker_transit: transit(&striker_impact),
+                    bulk: combined,
                 });
             }
         }

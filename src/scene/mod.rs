@@ -34,6 +34,7 @@ pub mod builtin;
 pub mod cases;
 pub mod contact;
 pub mod contact_bar;
+pub mod contact_bulk;
 pub mod dispersion;
 pub mod error;
 pub mod expectation;

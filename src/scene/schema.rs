@@ -498,6 +498,13 @@ pub struct RawContact {
     /// the bars per step over dt). The Lagrange multiplier method has no penalty and always
     /// uses `transferred`.
     pub force: Option<Spanned<String>>,
+    /// Bulk scheme(s), one case each (prefixed `<bulk>-` except `cd-lmm`): `cd-lmm` (default),
+    /// `cd-rmm`, `park-lts`, `park-global` (`scene::contact_bulk`).
+    pub bulk: Option<Spanned<OneOrManyStrings>>,
+    /// RMM's beta for a `cd-rmm` bulk (default 1/2).
+    pub rmm_beta: Option<Spanned<f64>>,
+    /// Park's element acceleration for a `park-*` bulk: `incremental` (default) or `free`.
+    pub park_variant: Option<Spanned<String>>,
 }
 
 /// The unit of a contact scene's Courant numbers.
@@ -513,6 +520,10 @@ pub enum RawContactCourantUnit {
     /// `"exact"` is accepted too, the word `[integrator]` uses for a scheme's exact limit.
     #[serde(alias = "exact")]
     Critical,
+    /// Multiples of the combination's measured limit: the largest step with the spectral radius
+    /// of the one-step amplification matrix at most `1 + 1e-6`, contact always active and
+    /// contact off (`courant_solver::contact::combined::amplification`; dense, <= 400 nodes).
+    Measured,
 }
 
 /// A contact stability sweep: the critical Courant number of a bar against a rigid wall

@@ -74,6 +74,10 @@ fn the_exact_answers_meet_every_bound_and_no_signature_applies(
         "contact_wall",
         "contact_unequal",
         "impact_layered",
+        "impact_layered_combined",
+        "impact_layered_stability",
+        "impact_layered_below_limits",
+        "impact_layered_park_free",
         "dispersion",
         "courant_sweep",
         "courant_sweep_schemes",
@@ -141,7 +145,7 @@ fn the_exact_answers_meet_every_bound_and_no_signature_applies(
 
 #[test]
 fn the_builtin_list_above_is_complete() {
-    let listed = 31;
+    let listed = 36;
     assert_eq!(
         BUILTIN_SCENES.len(),
         listed,

@@ -237,6 +237,12 @@ pub enum StepLimit {
     ContactActive,
     /// The predictor-corrector's own limit `k_s dt^2/(m_c + m_p) <= 1`.
     PredictorCorrector,
+    /// A combined bulk's limit measured from the spectral radius of its one-step amplification
+    /// matrix with the contact always active ([`super::combined::amplification`]).
+    Measured,
+    /// Park's a-priori rule `alpha_e = dt/dt_e <= 1` in every element (methods.md §6): a
+    /// sufficient condition of the scheme on a uniform mesh, not a measured limit.
+    ParkRule,
 }
 
 impl fmt::Display for StepLimit {
@@ -249,6 +255,10 @@ impl fmt::Display for StepLimit {
             StepLimit::PredictorCorrector => {
                 "the predictor-corrector limit k_s dt^2/(m_c + m_p) <= 1"
             }
+            StepLimit::Measured => {
+                "the measured limit rho(G) <= 1 of the combined step with the contact active"
+            }
+            StepLimit::ParkRule => "Park's rule alpha_e = dt/dt_e <= 1 in every element",
         })
     }
 }

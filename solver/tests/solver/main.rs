@@ -7,6 +7,7 @@
 mod common;
 
 mod blocked_time_loop_equals_single_steps;
+mod contact_combined_run;
 mod contact_graded_impact_convergence;
 mod contact_local_stepping_and_reciprocal_mass;
 mod contact_momentum_and_outputs;

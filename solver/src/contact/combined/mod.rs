@@ -84,9 +84,11 @@
 
 pub mod amplification;
 mod bulk;
+mod run;
 mod stepper;
 #[cfg(test)]
 mod tests;
 
 pub use bulk::{BulkScheme, ContactDirection};
+pub use run::CombinedIntegrator;
 pub use stepper::{CombinedEnergy, CombinedLevel, CombinedStepper, ContactMode};
