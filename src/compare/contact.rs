@@ -6,6 +6,7 @@
 //! always the momentum delivered, whatever force is graded.
 
 use crate::results::contact::ContactRecord;
+use crate::results::table::{Cell, Table};
 use crate::scene::contact::ForceMeasure;
 use courant_references::ContactHistory;
 use courant_solver::DivergenceError;
@@ -315,4 +316,147 @@ pub fn compare_contact(
         energy_ratio_conserved,
         wall_time,
     }
+}
+
+/// The force history: `t, force, reference, transferred_force, gap, active, impulse, kinetic,
+/// strain, penalty_spring, penalty_kinetic, total`. `force` is the graded force
+/// ([`ForceMeasure`](super::contact::ForceMeasure): the seed's `eps_s x penetration` for the
+/// penalty schemes, momentum/dt for the Lagrange multiplier), `transferred_force` the momentum
+/// delivered to the real masses at the level over the span of its velocity update.
+pub fn force_table(r: &ContactResult) -> Table {
+    let mut table = Table::new(&[
+        "t",
+        "force",
+        "reference",
+        "transferred_force",
+        "gap",
+        "active",
+        "impulse",
+        "kinetic",
+        "strain",
+        "penalty_spring",
+        "penalty_kinetic",
+        "total",
+    ]);
+    for (s, reference) in r.run.history.iter().zip(&r.reference) {
+        table.push(vec![
+            s.time.into(),
+            r.measure.force(s).into(),
+            (*reference).into(),
+            s.force.into(),
+            s.gap.into(),
+            Cell::Int(s.active as u64),
+            s.impulse.into(),
+            s.kinetic.into(),
+            s.strain.into(),
+            s.penalty_spring.into(),
+            s.penalty_kinetic.into(),
+            s.total.into(),
+        ]);
+    }
+    table
+}
+
+/// One row per contact case: cost beside accuracy.
+pub fn contact_summary_table(results: &[ContactResult]) -> Table {
+    let mut table = Table::new(&[
+        "case",
+        "scheme",
+        "beta_s",
+        "beta_m",
+        "Co",
+        "Co_crit",
+        "binding_limit",
+        "dt",
+        "steps",
+        "force_measure",
+        "plateau",
+        "plateau_deviation",
+        "impulse_error",
+        "duration_error",
+        "force_l1_error",
+        "energy_ratio",
+        "energy_ratio_conserved",
+        "max_force",
+        "max_transferred_force",
+        "status",
+        "note",
+        "wall_time_s",
+    ]);
+    for r in results {
+        let status = match &r.diverged {
+            None => "completed".to_string(),
+            Some(d) => format!("diverged at step {}", d.step),
+        };
+        // A diverged run's figures may have overflowed: those are empty cells (its note says
+        // so). A completed run's figures are finite.
+        let figure = |x: f64| -> Cell {
+            if r.diverged.is_some() && !x.is_finite() {
+                Cell::Empty
+            } else {
+                Cell::Num(x)
+            }
+        };
+        table.push(vec![
+            r.case.as_str().into(),
+            r.run.scheme.label().into(),
+            r.penalty.map(|p| p.0).into(),
+            r.penalty.map(|p| p.1).into(),
+            r.run.courant.into(),
+            r.run.critical.critical_courant().into(),
+            format!("{:?}", r.run.critical.binding).into(),
+            r.run.dt.into(),
+            r.run.steps.into(),
+            r.measure.label().into(),
+            r.plateau.into(),
+            r.errors.plateau_deviation.map_or(Cell::Empty, figure),
+            figure(r.impulse_error),
+            r.errors.duration_error.map_or(Cell::Empty, figure),
+            figure(r.errors.force_l1_error),
+            r.energy_ratio.into(),
+            r.energy_ratio_conserved.into(),
+            figure(r.errors.max_force),
+            figure(r.run.max_force),
+            status.into(),
+            contact_note(r).into(),
+            r.wall_time.as_secs_f64().into(),
+        ]);
+    }
+    table
+}
+
+/// What a contact row's numbers need said: chatter (a plateau deviation near 1 without a
+/// plateau), or a diverged run's missing conserved energy.
+fn contact_note(r: &ContactResult) -> String {
+    let mut notes = Vec::new();
+    if r.errors.open_in_plateau == 1.0 {
+        notes.push(
+            "contact open at every plateau sample: the bars separated before the plateau (plateau deviation 1)"
+                .to_string(),
+        );
+    } else if r.errors.open_in_plateau > 0.0 {
+        notes.push(format!(
+            "contact open at {:.0} % of the plateau samples (chatter: the plateau deviation is that of a force switching between 0 and its peak)",
+            100.0 * r.errors.open_in_plateau
+        ));
+    }
+    if r.errors.plateau_deviation.is_none() {
+        notes.push(format!(
+            "plateau_deviation {}",
+            super::contact::PLATEAU_UNDEFINED
+        ));
+    }
+    if r.errors.duration_error.is_none() {
+        notes.push(format!(
+            "duration_error {}",
+            super::contact::DURATION_UNDEFINED
+        ));
+    }
+    if r.diverged.is_some() {
+        notes.push(
+            "diverged: no conserved energy above the critical step; energy_ratio is where the guard stopped it (a figure that overflowed is empty)"
+                .to_string(),
+        );
+    }
+    notes.join("; ")
 }

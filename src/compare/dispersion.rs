@@ -3,7 +3,9 @@
 
 use super::spectrum::closed_form_kind;
 use crate::results::dispersion::{DispersionRecord, ModeMeasurement};
+use crate::results::table::{Cell, Table};
 use crate::scene::dispersion::DispersionCase;
+use courant_solver::MassKind;
 
 /// One row of a dispersion case: a mode, its closed-form and measured phase-speed ratios.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -75,4 +77,47 @@ pub fn compare_dispersion(record: DispersionRecord, case: &DispersionCase) -> Di
         case: case.clone(),
         rows,
     }
+}
+
+/// `case, mass, beta, fourth_order, Co, mode, kh, closed_form, measured, difference, phase_error,
+/// observed_order` (order between mode `n/2` and `n`, when both are listed).
+pub fn dispersion_table(results: &[DispersionResult]) -> Table {
+    let mut table = Table::new(&[
+        "case",
+        "mass",
+        "beta",
+        "fourth_order",
+        "Co",
+        "mode",
+        "kh",
+        "closed_form",
+        "measured",
+        "difference",
+        "phase_error",
+        "observed_order",
+    ]);
+    for r in results {
+        let beta = match r.case.mass {
+            MassKind::Averaged { beta } | MassKind::Reciprocal { beta } => Some(beta),
+            _ => None,
+        };
+        for (i, row) in r.rows.iter().enumerate() {
+            let m = row.measured;
+            table.push(vec![
+                r.case.name.as_str().into(),
+                r.case.mass.label().into(),
+                beta.into(),
+                r.case.fourth_order.to_string().into(),
+                r.case.courant.into(),
+                row.mode.into(),
+                m.kh.into(),
+                row.closed_form.into(),
+                m.phase_speed_ratio.into(),
+                (m.phase_speed_ratio - row.closed_form).into(),
+                (m.phase_speed_ratio - 1.0).into(),
+                Cell::from(r.observed_order(i)),
+            ]);
+        }
+    }
+    table
 }

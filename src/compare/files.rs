@@ -3,11 +3,11 @@
 //! `courant check --baseline <report>` compares.
 
 use super::case::CaseResult;
+use super::contact::{contact_summary_table, force_table};
+use super::dispersion::dispersion_table;
 use super::outcome::SceneOutcome;
-use super::study_tables::{
-    contact_summary_table, dispersion_table, force_table, spectrum_summary_table, spectrum_table,
-    sweep_table,
-};
+use super::spectrum::{spectrum_summary_table, spectrum_table};
+use super::sweep::sweep_table;
 use super::tables::{
     PROFILE_COLUMNS, energy_table, expectations_table, history_table, norms_table, profile_rows,
     summary_table,

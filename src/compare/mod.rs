@@ -15,8 +15,8 @@
 //! - [`convergence`] (observed and fitted orders against the study's band), [`stability`]
 //!   (predicted against observed stability), [`work_precision`] (cost beside error),
 //!   [`contact_closed_forms`] (the closed forms against their asymptotes);
-//! - [`tables`], [`study_tables`], [`files`]: the CSV tables of all of the above, the files
-//!   `courant run` writes and those a report keeps;
+//! - [`tables`], [`files`]: the CSV tables of time-stepping cases (each other study's tables
+//!   sit in its own module), the files `courant run` writes and those a report keeps;
 //! - [`score`]: another code's results (exchange files) graded against the scene's references
 //!   with the same norms and expectations, plus time-level, sign and load diagnostics.
 //!
@@ -42,7 +42,6 @@ pub mod spectrum;
 pub mod stability;
 pub mod stability_verdicts;
 pub mod stress_difference;
-pub mod study_tables;
 pub mod sweep;
 pub mod tables;
 pub mod verdict;

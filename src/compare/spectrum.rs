@@ -2,6 +2,8 @@
 //! Fig. 6, methods.md §5).
 
 use crate::results::spectrum::SpectrumRecord;
+use crate::results::table::{Cell, Table};
+use crate::scene::mass::mass_name;
 use crate::scene::spectrum::SpectrumCase;
 use courant_references::spectra as closed;
 use courant_solver::MassKind;
@@ -88,4 +90,55 @@ pub fn compare_spectrum(record: SpectrumRecord, case: &SpectrumCase) -> Spectrum
         closed_form,
         wall_time: record.wall_time,
     }
+}
+
+/// One row per spectrum case: `case, N, masses, closed_form_deviation, wall_time_s`.
+pub fn spectrum_summary_table(spectra: &[SpectrumResult]) -> Table {
+    let mut table = Table::new(&[
+        "case",
+        "modes",
+        "masses",
+        "closed_form_deviation",
+        "wall_time_s",
+    ]);
+    for s in spectra {
+        let masses: Vec<String> = s.masses.iter().map(|m| m.label()).collect();
+        table.push(vec![
+            s.case.as_str().into(),
+            s.modes.len().into(),
+            masses.join(" ").into(),
+            s.closed_form_deviation().into(),
+            s.wall_time.as_secs_f64().into(),
+        ]);
+    }
+    table
+}
+
+/// `mode, exact`, then per mass kind its frequency, its closed form and its relative error
+/// against the continuum (`exact` and the error are empty where there is no continuum
+/// reference or for the rigid mode).
+pub fn spectrum_table(r: &SpectrumResult) -> Table {
+    let names: Vec<String> = r.masses.iter().map(|&m| mass_name(m)).collect();
+    let mut columns = vec!["mode".to_string(), "exact".to_string()];
+    columns.extend(names.iter().cloned());
+    columns.extend(names.iter().map(|n| format!("{n}_closed_form")));
+    columns.extend(names.iter().map(|n| format!("{n}_rel_error")));
+    let mut table = Table {
+        columns,
+        rows: Vec::new(),
+    };
+    for (i, &mode) in r.modes.iter().enumerate() {
+        let exact = r.continuum.as_ref().map(|c| c[i]);
+        let mut row: Vec<Cell> = vec![mode.into(), exact.into()];
+        row.extend(r.computed.iter().map(|c| Cell::from(c.get(i).copied())));
+        row.extend(
+            (0..r.masses.len()).map(|m| Cell::from(r.closed_form.as_ref().map(|c| c[m][i]))),
+        );
+        row.extend(r.computed.iter().map(|c| match (exact, c.get(i)) {
+            (Some(e), Some(v)) if e > 0.0 => Cell::Num((v - e) / e),
+            _ => Cell::Empty,
+        }));
+        table.rows.push(row);
+    }
+    table
 }

@@ -2,6 +2,7 @@
 //! (semi-infinite bar against a rigid wall, methods.md §7).
 
 use crate::results::sweep::SweepRecord;
+use crate::results::table::Table;
 use courant_references::ReferenceError;
 use courant_references::contact as closed;
 use std::time::Duration;
@@ -84,4 +85,18 @@ pub fn compare_sweep(record: SweepRecord) -> Result<SweepResult, ReferenceError>
         rows,
         wall_time: record.wall_time,
     })
+}
+
+/// `beta_s, r, cr, cr_closed_form` (`r` empty on the penalty-only curve).
+pub fn sweep_table(r: &SweepResult) -> Table {
+    let mut table = Table::new(&["beta_s", "r", "cr", "cr_closed_form"]);
+    for row in &r.rows {
+        table.push(vec![
+            row.beta_s.into(),
+            row.ratio.into(),
+            row.courant.into(),
+            row.closed_form.into(),
+        ]);
+    }
+    table
 }

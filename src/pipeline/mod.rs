@@ -39,7 +39,7 @@ pub enum EvaluateError {
     Run(#[from] RunError),
     /// A contact case the solver refused.
     #[error(transparent)]
-    Contact(#[from] courant_solver::contact::ContactError),
+    Contact(#[from] crate::run::contact::ContactRunError),
     /// A reference refused its parameters.
     #[error(transparent)]
     Reference(#[from] ReferenceError),

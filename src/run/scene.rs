@@ -1,11 +1,11 @@
 //! Running every case of a scene.
 
+use super::contact::ContactRunError;
 use crate::io::parallel::in_order;
 use crate::results::case::CaseRecord;
 use crate::results::scene::SceneRecords;
 use crate::scene::cases::{Case, Scene};
 use courant_solver::RunError;
-use courant_solver::contact::ContactError;
 use rayon::prelude::*;
 
 /// Run every case of a scene. The cases are independent: each list (time-stepping cases,
@@ -70,7 +70,7 @@ fn run_cases(cases: &[Case]) -> Result<Vec<CaseRecord>, RunError> {
 }
 
 /// A case the solver refused: a time-stepping, spectrum or dispersion case ([`RunError`]) or a
-/// contact case ([`ContactError`], whose stability limit is the contact scheme's).
+/// contact case ([`ContactRunError`], whose stability limit is the contact scheme's).
 #[derive(Debug, thiserror::Error)]
 pub enum RefusedRun {
     /// A time-stepping, spectrum, dispersion or sweep case.
@@ -78,7 +78,7 @@ pub enum RefusedRun {
     Case(#[from] RunError),
     /// A contact case.
     #[error(transparent)]
-    Contact(#[from] ContactError),
+    Contact(#[from] ContactRunError),
 }
 
 impl From<courant_solver::InputError> for RefusedRun {

@@ -442,9 +442,14 @@ pub(super) fn cases(
                     (RawContactCourantUnit::StiffestElement, _) => {
                         courant * problem.stiffest_transit()
                     }
-                    (_, Some(c)) => courant * c.critical.applicable,
+                    (
+                        _,
+                        Some(CombinedBulk {
+                            critical: Some(c), ..
+                        }),
+                    ) => courant * c.applicable,
                     // `bulks` makes every case of the measured unit combined.
-                    (RawContactCourantUnit::Critical | RawContactCourantUnit::Measured, None) => {
+                    (RawContactCourantUnit::Critical | RawContactCourantUnit::Measured, _) => {
                         scheme
                             .validate()
                             .map_err(|e| fail("contact.beta_s", e.to_string()))?;

@@ -8,8 +8,8 @@
 //! included, runs combined against its measured limit.
 
 use super::error::{SceneError, Source};
-use super::spelling::closest;
 use super::schema::{RawContact, RawContactCourantUnit};
+use super::spelling::closest;
 use courant_solver::contact::combined::amplification::MAX_NODES;
 use courant_solver::contact::combined::{BulkScheme, CombinedIntegrator};
 use courant_solver::contact::{ContactCriticalStep, ContactProblem, ContactScheme};
@@ -24,8 +24,10 @@ pub const BULKS: [&str; 4] = ["cd-lmm", "cd-rmm", "park-lts", "park-global"];
 pub struct CombinedBulk {
     /// What steps the bulk.
     pub scheme: BulkScheme,
-    /// The limit the case is checked and reported against.
-    pub critical: ContactCriticalStep,
+    /// The limit the case is checked and reported against; `None` when it is measured as the
+    /// case runs (a measured limit whose steps are not counted in it: validation stays fast, and
+    /// the run refuses a step above it before stepping).
+    pub critical: Option<ContactCriticalStep>,
 }
 
 /// The bulks of a study: `(case-name prefix, bulk)`, `None` for today's lumped CD stepper.
@@ -129,14 +131,18 @@ pub(super) fn critical(
         BulkScheme::Park(_) if unit != RawContactCourantUnit::Measured => {
             CombinedIntegrator::park_rule_critical(problem, scheme).map_err(|e| e.to_string())?
         }
+        _ if unit == RawContactCourantUnit::StiffestElement => {
+            if problem.node_count() > MAX_NODES {
+                return Err(too_large(bulk, problem));
+            }
+            return Ok(CombinedBulk {
+                scheme: bulk,
+                critical: None,
+            });
+        }
         _ => {
             if problem.node_count() > MAX_NODES {
-                return Err(format!(
-                    "the {} bulk's step limit is measured from the dense amplification matrix, \
-                     limited to {MAX_NODES} nodes; this problem has {} (use a coarser mesh)",
-                    bulk.label(),
-                    problem.node_count()
-                ));
+                return Err(too_large(bulk, problem));
             }
             CombinedIntegrator::measured_critical(problem, bulk, scheme)
                 .map_err(|e| e.to_string())?
@@ -144,14 +150,27 @@ pub(super) fn critical(
     };
     Ok(CombinedBulk {
         scheme: bulk,
-        critical,
+        critical: Some(critical),
     })
+}
+
+fn too_large(bulk: BulkScheme, problem: &ContactProblem) -> String {
+    format!(
+        "the {} bulk's step limit is measured from the dense amplification matrix, limited to \
+         {MAX_NODES} nodes; this problem has {} (use a coarser mesh)",
+        bulk.label(),
+        problem.node_count()
+    )
 }
 
 /// Refuse a step above the combination's limit (with the time plan's relative allowance) unless
 /// unstable runs are allowed; Park's `alpha_e > 1` is refused with it.
 pub(super) fn check(bulk: &CombinedBulk, dt: f64, allow_unstable: bool) -> Result<(), String> {
-    let limit = bulk.critical.applicable;
+    // A limit measured as the case runs is checked there.
+    let Some(critical) = bulk.critical else {
+        return Ok(());
+    };
+    let limit = critical.applicable;
     if allow_unstable || dt <= limit * (1.0 + courant_solver::analysis::ROUNDING_SLACK) {
         return Ok(());
     }
@@ -159,7 +178,7 @@ pub(super) fn check(bulk: &CombinedBulk, dt: f64, allow_unstable: bool) -> Resul
         "dt = {dt:.6e} exceeds the {} limit {limit:.6e} ({}) by {:.3e} relative; lower the \
          Courant number or set allow_unstable = true",
         bulk.scheme.label(),
-        bulk.critical.binding,
+        critical.binding,
         dt / limit - 1.0
     ))
 }
@@ -227,7 +246,12 @@ mod tests {
         let limits: Vec<_> = mixed
             .contact
             .iter()
-            .map(|c| (c.name.as_str(), c.bulk.map(|b| b.critical.binding)))
+            .map(|c| {
+                (
+                    c.name.as_str(),
+                    c.bulk.and_then(|b| b.critical).map(|c| c.binding),
+                )
+            })
             .collect();
         assert_eq!(
             limits,
@@ -245,10 +269,13 @@ mod tests {
         for case in &measured.contact {
             let bulk = case.bulk.expect("measured cases run combined");
             assert_eq!(bulk.scheme, BulkScheme::CentralDifference);
-            assert_eq!(bulk.critical.binding, StepLimit::Measured);
-            assert!(case.integrator.dt == 0.5 * bulk.critical.applicable);
+            let critical = bulk
+                .critical
+                .expect("a measured unit is measured at validation");
+            assert_eq!(critical.binding, StepLimit::Measured);
+            assert!(case.integrator.dt == 0.5 * critical.applicable);
         }
-        let lm = measured.contact[1].bulk.unwrap().critical;
+        let lm = measured.contact[1].bulk.unwrap().critical.unwrap();
         assert!(
             lm.applicable == lm.contact_free && lm.applicable >= 0.999 * lm.stiffest_transit,
             "{lm:?}"
