@@ -65,3 +65,39 @@ pub enum ContactRunError {
     #[error("measuring the step limit of the combined bulk: {0}")]
     Limit(#[from] AmplificationError),
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{ContactRunError, run_contact};
+    use crate::scene::cases::Scene;
+    use courant_solver::contact::ContactError;
+
+    /// Source of truth: the measured limit of a combined bulk (`contact::combined`, `rho(G) <=
+    /// 1`; RMM(1/2) with contact measured at 0.83 of the stiffest transit on two bars of this
+    /// kind). Proves: a `cd-rmm` case whose steps count in the stiffest element's transit is not
+    /// measured at validation, and the run measures it and refuses a step above it before the
+    /// first step, naming the limit; below it the case runs.
+    #[test]
+    fn a_limit_left_to_the_run_is_measured_and_enforced_there() {
+        let text = |courant: f64| {
+            format!(
+                "[scene]\ndescription = \"d\"\nsource = \"s\"\n\n[contact]\nproblem = \"two-bars\"\n\
+                 striker = {{ length = 1.0, elements = 4 }}\n\
+                 target = {{ length = 1.0, elements = 4, modulus = 4.0 }}\n\
+                 velocity = 1.0\nschemes = [\"lagrange-multiplier\"]\nbulk = \"cd-rmm\"\n\
+                 courant = {courant}\nend_time = 1.0\n"
+            )
+        };
+        let above = Scene::parse("t", "t.toml", &text(0.99)).unwrap();
+        let case = &above.contact[0];
+        assert!(case.bulk.unwrap().critical.is_none());
+        match run_contact(case) {
+            Err(ContactRunError::Refused(ContactError::Unstable(e))) => {
+                assert!(e.dt > e.dt_crit, "{e}");
+            }
+            other => panic!("expected a refusal, got {:?}", other.map(|r| r.case)),
+        }
+        let below = Scene::parse("t", "t.toml", &text(0.5)).unwrap();
+        assert!(run_contact(&below.contact[0]).is_ok());
+    }
+}
