@@ -45,19 +45,12 @@ impl ContactIntegrator {
         crate::model::mesh::positive("dt", self.dt)?;
         self.scheme.validate()?;
         let critical = ContactCriticalStep::of(problem, &self.scheme).map_err(InputError::from)?;
-        if self.dt > critical.applicable * (1.0 + crate::analysis::time_step::ROUNDING_SLACK)
-            && !self.stability.allow_unstable
-        {
-            return Err(ContactUnstableError {
-                scheme: self.scheme.label(),
-                dt: self.dt,
-                dt_crit: critical.applicable,
-                courant: critical.courant(self.dt),
-                critical_courant: critical.critical_courant(),
-                limit: critical.binding,
-            }
-            .into());
-        }
+        refuse_above(
+            self.dt,
+            &self.scheme,
+            &critical,
+            self.stability.allow_unstable,
+        )?;
         Ok(critical)
     }
 
@@ -79,21 +72,7 @@ impl ContactIntegrator {
         steps: usize,
         request: &ContactRequest,
     ) -> Result<ContactRun, ContactError> {
-        if request.history_every == 0 {
-            return Err(InputError::EveryIsZero {
-                field: "history_every",
-            }
-            .into());
-        }
-        if let Some(&step) = request.profile_steps.iter().find(|&&s| s > steps) {
-            return Err(InputError::ProfileAfterLastStep { step, last: steps }.into());
-        }
-        if !problem.is_excited() {
-            return Err(InputError::NothingExcites {
-                what: "the contact problem",
-            }
-            .into());
-        }
+        check_request(problem, steps, request)?;
         let critical = self.check_stability(problem)?;
         let mut stepper = ContactStepper::new(problem, self.dt, self.scheme)?;
         let mut profile_steps = request.profile_steps.clone();
@@ -139,25 +118,94 @@ impl ContactIntegrator {
             profile(&stepper, &mut run, step);
             if diverged {
                 run.final_momentum = stepper.momenta();
-                let error = DivergenceError {
+                let node = stepper.largest_displacement_node();
+                return Err(diverged_at(
+                    run,
                     step,
-                    time: sample.time,
-                    node: stepper.largest_displacement_node(),
-                    energy_ratio: if mechanical.is_finite() {
-                        mechanical / reference
-                    } else {
-                        f64::INFINITY
-                    },
-                    courant: run.courant,
-                };
-                return Err(ContactError::Diverged {
-                    error,
-                    partial: Box::new(run),
-                });
+                    sample.time,
+                    node,
+                    mechanical / reference,
+                ));
             }
         }
         run.final_momentum = stepper.momenta();
         Ok(run)
+    }
+}
+
+/// The checks every contact run makes before stepping: a recording interval of at least one
+/// step, profile steps the run reaches, and something that sets the problem in motion.
+pub(crate) fn check_request(
+    problem: &ContactProblem,
+    steps: usize,
+    request: &ContactRequest,
+) -> Result<(), ContactError> {
+    if request.history_every == 0 {
+        return Err(InputError::EveryIsZero {
+            field: "history_every",
+        }
+        .into());
+    }
+    if let Some(&step) = request.profile_steps.iter().find(|&&s| s > steps) {
+        return Err(InputError::ProfileAfterLastStep { step, last: steps }.into());
+    }
+    if !problem.is_excited() {
+        return Err(InputError::NothingExcites {
+            what: "the contact problem",
+        }
+        .into());
+    }
+    Ok(())
+}
+
+/// Refuse `dt` above `critical.applicable` (with the time plan's relative allowance
+/// [`crate::analysis::ROUNDING_SLACK`]) unless unstable runs are allowed.
+pub(crate) fn refuse_above(
+    dt: f64,
+    scheme: &ContactScheme,
+    critical: &ContactCriticalStep,
+    allow_unstable: bool,
+) -> Result<(), ContactError> {
+    if dt > critical.applicable * (1.0 + crate::analysis::time_step::ROUNDING_SLACK)
+        && !allow_unstable
+    {
+        return Err(ContactUnstableError {
+            scheme: scheme.label(),
+            dt,
+            dt_crit: critical.applicable,
+            courant: critical.courant(dt),
+            critical_courant: critical.critical_courant(),
+            limit: critical.binding,
+        }
+        .into());
+    }
+    Ok(())
+}
+
+/// The blow-up guard's stop: `run` so far (its `final_momentum` set) with where it diverged;
+/// `energy_ratio` is the energy of the real masses over the guard's reference (infinite for a
+/// non-finite state).
+pub(crate) fn diverged_at(
+    run: ContactRun,
+    step: usize,
+    time: f64,
+    node: usize,
+    energy_ratio: f64,
+) -> ContactError {
+    let error = DivergenceError {
+        step,
+        time,
+        node,
+        energy_ratio: if energy_ratio.is_finite() {
+            energy_ratio
+        } else {
+            f64::INFINITY
+        },
+        courant: run.courant,
+    };
+    ContactError::Diverged {
+        error,
+        partial: Box::new(run),
     }
 }
 

@@ -123,7 +123,7 @@ impl LayeredImpact {
             let mut cuts = vec![x0, x1];
             cuts.extend(fronts.iter().filter(|&&f| f > x0 && f < x1));
             cuts.sort_by(f64::total_cmp);
-            let mass_per_length = layer.density * layer.area;
+            let mass_per_length = layer.density() * layer.area;
             for w in cuts.windows(2) {
                 let width = w[1] - w[0];
                 if width <= 0.0 {
@@ -131,7 +131,7 @@ impl LayeredImpact {
                 }
                 let (n, v) = self.state(0.5 * (w[0] + w[1]), t);
                 kinetic += 0.5 * mass_per_length * v * v * width;
-                strain += 0.5 * n * n / (layer.modulus * layer.area) * width;
+                strain += 0.5 * n * n / (layer.modulus() * layer.area) * width;
                 momentum += mass_per_length * v * width;
             }
         }

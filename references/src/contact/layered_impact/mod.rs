@@ -54,6 +54,7 @@ use super::impact::{ARRIVAL_TOLERANCE, ForcePlateau};
 
 mod field;
 use crate::error::ReferenceError;
+use crate::graded::Layer;
 
 /// Default cap on the number of boundary events tracked.
 pub const DEFAULT_MAX_EVENTS: usize = 2_000_000;
@@ -62,12 +63,11 @@ pub const DEFAULT_MAX_EVENTS: usize = 2_000_000;
 /// zero (neither tensile nor compressive).
 const FORCE_TOLERANCE: f64 = 1e-12;
 
-/// One homogeneous layer of a bar in an impact: thickness, modulus, density and area.
+/// One homogeneous layer of a bar in an impact: a [`Layer`] (thickness, modulus, density) and
+/// its cross-section area.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ImpactLayer {
-    thickness: f64,
-    modulus: f64,
-    density: f64,
+    material: Layer,
     area: f64,
 }
 
@@ -83,9 +83,7 @@ impl ImpactLayer {
         area: f64,
     ) -> Result<Self, ReferenceError> {
         Ok(Self {
-            thickness: ReferenceError::require_positive("thickness", thickness)?,
-            modulus: ReferenceError::require_positive("modulus", modulus)?,
-            density: ReferenceError::require_positive("density", density)?,
+            material: Layer::new(thickness, modulus, density)?,
             area: ReferenceError::require_positive("area", area)?,
         })
     }
@@ -93,19 +91,19 @@ impl ImpactLayer {
     /// Thickness.
     #[must_use]
     pub fn thickness(&self) -> f64 {
-        self.thickness
+        self.material.thickness()
     }
 
     /// Young's modulus.
     #[must_use]
     pub fn modulus(&self) -> f64 {
-        self.modulus
+        self.material.modulus()
     }
 
     /// Mass density.
     #[must_use]
     pub fn density(&self) -> f64 {
-        self.density
+        self.material.density()
     }
 
     /// Cross-section area.
@@ -114,22 +112,23 @@ impl ImpactLayer {
         self.area
     }
 
-    /// Wave speed `sqrt(E/rho)`.
+    /// Wave speed `sqrt(E/rho)` ([`Layer::wave_speed`]).
     #[must_use]
     pub fn wave_speed(&self) -> f64 {
-        (self.modulus / self.density).sqrt()
+        self.material.wave_speed()
     }
 
-    /// Bar impedance `Z = A sqrt(E rho)` (force per velocity).
+    /// Bar impedance `Z = A sqrt(E rho)` (force per velocity): the area times
+    /// [`Layer::impedance`].
     #[must_use]
     pub fn impedance(&self) -> f64 {
-        self.area * (self.modulus * self.density).sqrt()
+        self.area * self.material.impedance()
     }
 
-    /// Travel time `thickness/c`.
+    /// Travel time `thickness/c` ([`Layer::travel_time`]).
     #[must_use]
     pub fn travel_time(&self) -> f64 {
-        self.thickness / self.wave_speed()
+        self.material.travel_time()
     }
 }
 
@@ -259,13 +258,10 @@ impl LayeredImpact {
         }
         let velocity = ReferenceError::require_positive("v0", v0)?;
         let horizon = ReferenceError::require_positive("horizon", horizon)?;
-        let mut layers = Vec::with_capacity(striker.len() + target.len());
-        for l in striker.iter().chain(target) {
-            layers.push(ImpactLayer::new(l.thickness, l.modulus, l.density, l.area)?);
-        }
+        let layers: Vec<ImpactLayer> = striker.iter().chain(target).copied().collect();
         let mut boundaries = vec![0.0];
         for l in &layers {
-            boundaries.push(boundaries[boundaries.len() - 1] + l.thickness);
+            boundaries.push(boundaries[boundaries.len() - 1] + l.thickness());
         }
         let transit: f64 = layers.iter().map(ImpactLayer::travel_time).sum();
         let (zs, zt) = (

@@ -6,12 +6,13 @@
 use super::amplification::{AmplificationError, measured_limit};
 use super::bulk::BulkScheme;
 use super::stepper::{CombinedStepper, ContactMode};
-use crate::contact::error::{ContactError, ContactUnstableError};
+use crate::contact::error::ContactError;
 use crate::contact::output::{ContactRequest, ContactRun, ContactSample};
 use crate::contact::problem::ContactProblem;
+use crate::contact::run::{check_request, diverged_at, refuse_above};
 use crate::contact::scheme::ContactScheme;
 use crate::contact::stability::{ContactCriticalStep, StepLimit};
-use crate::error::{DivergenceError, InputError};
+use crate::error::InputError;
 use crate::integrator::StabilityPolicy;
 
 /// A combined contact integrator: bulk, contact scheme, step and stability policy.
@@ -94,32 +95,9 @@ impl CombinedIntegrator {
         request: &ContactRequest,
         critical: ContactCriticalStep,
     ) -> Result<ContactRun, ContactError> {
-        if request.history_every == 0 {
-            return Err(InputError::EveryIsZero {
-                field: "history_every",
-            }
-            .into());
-        }
-        if !problem.is_excited() {
-            return Err(InputError::NothingExcites {
-                what: "the contact problem",
-            }
-            .into());
-        }
+        check_request(problem, steps, request)?;
         let allow = self.stability.allow_unstable;
-        if self.dt > critical.applicable * (1.0 + crate::analysis::time_step::ROUNDING_SLACK)
-            && !allow
-        {
-            return Err(ContactUnstableError {
-                scheme: self.scheme.label(),
-                dt: self.dt,
-                dt_crit: critical.applicable,
-                courant: critical.courant(self.dt),
-                critical_courant: critical.critical_courant(),
-                limit: critical.binding,
-            }
-            .into());
-        }
+        refuse_above(self.dt, &self.scheme, &critical, allow)?;
         let mut stepper = if allow {
             CombinedStepper::allowing_unstable(
                 problem,
@@ -162,21 +140,7 @@ impl CombinedIntegrator {
                 run.final_momentum = stepper.momenta();
                 let [u, _, _] = stepper.state();
                 let node = largest(u);
-                let error = DivergenceError {
-                    step,
-                    time: s.time,
-                    node,
-                    energy_ratio: if mechanical.is_finite() {
-                        mechanical / initial
-                    } else {
-                        f64::INFINITY
-                    },
-                    courant: run.courant,
-                };
-                return Err(ContactError::Diverged {
-                    error,
-                    partial: Box::new(run),
-                });
+                return Err(diverged_at(run, step, s.time, node, mechanical / initial));
             }
         }
         run.final_momentum = stepper.momenta();
