@@ -351,6 +351,7 @@ pub(super) fn cases(
         ..StabilityPolicy::default()
     };
     let mut cases = Vec::new();
+    let mut free_limits = Vec::new();
     for label in study.schemes.get_ref().values() {
         let penalty_scheme =
             |beta_s: f64, mass: MassPenalty| -> Result<(ContactScheme, (f64, f64)), String> {
@@ -416,7 +417,15 @@ pub(super) fn cases(
         {
             let (name, scheme, penalty) = (format!("{prefix}{name}"), *scheme, *penalty);
             let combined = bulk
-                .map(|b| super::contact_bulk::critical(&problem, b, scheme, study.courant_unit))
+                .map(|b| {
+                    super::contact_bulk::critical(
+                        &problem,
+                        b,
+                        scheme,
+                        study.courant_unit,
+                        &mut free_limits,
+                    )
+                })
                 .transpose()
                 .map_err(|m| {
                     let at = study

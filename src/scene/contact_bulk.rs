@@ -120,12 +120,15 @@ fn unknown(value: &str, names: &[&str]) -> String {
 
 /// The limit a combined case is checked against: measured (`courant_unit = "measured"`, or a
 /// `cd-rmm` bulk, whose contact pencil is not the lumped one) or Park's rule `alpha_e <= 1`.
-/// The measurement is dense: at most [`MAX_NODES`] nodes.
+/// The measurement is dense: at most [`MAX_NODES`] nodes. The contact-free limit does not
+/// depend on the contact scheme: `free` keeps it per bulk, measured once for all the study's
+/// contact schemes.
 pub(super) fn critical(
     problem: &ContactProblem,
     bulk: BulkScheme,
     scheme: ContactScheme,
     unit: RawContactCourantUnit,
+    free: &mut Vec<(BulkScheme, f64)>,
 ) -> Result<CombinedBulk, String> {
     let critical = match bulk {
         BulkScheme::Park(_) if unit != RawContactCourantUnit::Measured => {
@@ -144,7 +147,16 @@ pub(super) fn critical(
             if problem.node_count() > MAX_NODES {
                 return Err(too_large(bulk, problem));
             }
-            CombinedIntegrator::measured_critical(problem, bulk, scheme)
+            let contact_free = match free.iter().find(|(b, _)| *b == bulk) {
+                Some(&(_, limit)) => limit,
+                None => {
+                    let limit = CombinedIntegrator::measured_contact_free(problem, bulk, scheme)
+                        .map_err(|e| e.to_string())?;
+                    free.push((bulk, limit));
+                    limit
+                }
+            };
+            CombinedIntegrator::measured_critical_given_free(problem, bulk, scheme, contact_free)
                 .map_err(|e| e.to_string())?
         }
     };

@@ -97,3 +97,48 @@ fn combined_run_is_checked_against_its_limit_and_guarded() {
     ));
     assert!(run(0.5 * rule.applicable, false).is_ok());
 }
+
+/// Source of truth: the combined stepper with the contact off applies no contact impulse and
+/// steps the contact nodes with the bulk (`contact::combined::stepper`). Proves: the measured
+/// contact-free limit of a bulk is the same, bit for bit, whatever contact scheme it is measured
+/// with, so a scene measures it once per bulk (`measured_critical_given_free`), and the split
+/// measurement equals `measured_critical`.
+#[test]
+fn the_contact_free_limit_does_not_depend_on_the_contact_scheme() {
+    let problem = problem();
+    let penalty = |b| problem.penalty(b, MassPenalty::Ratio(1.0)).unwrap();
+    let schemes = [
+        ContactScheme::Penalty {
+            stiffness: penalty(1e4).stiffness,
+        },
+        ContactScheme::Bipenalty(penalty(1e4)),
+        ContactScheme::PredictorCorrector(penalty(1e4)),
+        ContactScheme::LagrangeMultiplier,
+    ];
+    let park = ParkOptions {
+        theta: 0.5,
+        variant: ParkVariant::Incremental,
+        local_stepping: true,
+    };
+    for bulk in [
+        BulkScheme::CentralDifference,
+        BulkScheme::Reciprocal { beta: 0.5 },
+        BulkScheme::Park(park),
+    ] {
+        let free: Vec<f64> = schemes
+            .iter()
+            .map(|&s| CombinedIntegrator::measured_contact_free(&problem, bulk, s).unwrap())
+            .collect();
+        assert!(
+            free.iter().all(|&f| f == free[0]),
+            "{bulk:?}: contact-free limits {free:?}"
+        );
+        for scheme in schemes {
+            let whole = CombinedIntegrator::measured_critical(&problem, bulk, scheme).unwrap();
+            let split =
+                CombinedIntegrator::measured_critical_given_free(&problem, bulk, scheme, free[0])
+                    .unwrap();
+            assert_eq!(whole, split, "{bulk:?} {}", scheme.label());
+        }
+    }
+}

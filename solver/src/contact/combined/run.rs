@@ -42,8 +42,37 @@ impl CombinedIntegrator {
         bulk: BulkScheme,
         scheme: ContactScheme,
     ) -> Result<ContactCriticalStep, AmplificationError> {
+        let contact_free = Self::measured_contact_free(problem, bulk, scheme)?;
+        Self::measured_critical_given_free(problem, bulk, scheme, contact_free)
+    }
+
+    /// The measured limit of `bulk` with the contact off. It does not depend on the contact
+    /// scheme (with the contact off no contact impulse acts and the contact nodes step with the
+    /// bulk), so cases sharing a bulk may share it ([`Self::measured_critical_given_free`]);
+    /// `scheme` is only validated.
+    ///
+    /// # Errors
+    /// As [`Self::measured_critical`].
+    pub fn measured_contact_free(
+        problem: &ContactProblem,
+        bulk: BulkScheme,
+        scheme: ContactScheme,
+    ) -> Result<f64, AmplificationError> {
+        measured_limit(problem, bulk, scheme, ContactMode::Off)
+    }
+
+    /// [`Self::measured_critical`] with the contact-free limit already measured by
+    /// [`Self::measured_contact_free`] for the same problem and bulk.
+    ///
+    /// # Errors
+    /// As [`Self::measured_critical`].
+    pub fn measured_critical_given_free(
+        problem: &ContactProblem,
+        bulk: BulkScheme,
+        scheme: ContactScheme,
+        contact_free: f64,
+    ) -> Result<ContactCriticalStep, AmplificationError> {
         let lumped = ContactCriticalStep::of(problem, &scheme)?;
-        let contact_free = measured_limit(problem, bulk, scheme, ContactMode::Off)?;
         let contact_active = measured_limit(problem, bulk, scheme, ContactMode::Bilateral)?;
         let applicable = contact_free.min(contact_active);
         Ok(ContactCriticalStep {
