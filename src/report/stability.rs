@@ -3,7 +3,8 @@
 
 use super::document::{Block, Page};
 use crate::compare::contact_closed_forms::{CONTACT_CLOSED_FORMS_TEXT, contact_closed_form_table};
-use crate::compare::stability::{ENERGY_BAND, ENERGY_CREATED, StabilityRow, stability_table};
+use crate::compare::growth::ENERGY_BAND;
+use crate::compare::stability::{ENERGY_CREATED, StabilityRow, stability_table};
 
 /// The section, from the rows of every stability scene.
 ///
@@ -110,6 +111,7 @@ mod tests {
             energy_balance: Some(0.0),
             energy_ratio: Some(1.0),
             energy_created: 0.0,
+            growth: None,
             finding: None,
         }
     }
