@@ -33,8 +33,8 @@ use courant_solver::{EnergyLog, EnergySample};
 pub const ENERGY_BAND: f64 = 1.5;
 
 /// Fewest logged samples in the first half of a run for its growth exponent to be measured
-/// (with fewer, only the end ratio is tested): with `n >= 2 MIN_SAMPLES k` the doubling bound
-/// is at most `1 + (3 + 1/2)^2 / (1 - 1/4)^2 = 22.8`, `p <= 4.5`.
+/// (with fewer, only the end ratio is tested): steps `0, k, 2k, 3k <= n/2` need `n >= 6k`, where
+/// the doubling bound is `1 + (20/4)^2 = 26`, `p <= 4.70`.
 pub const MIN_SAMPLES: usize = 4;
 
 /// The largest `R = max E over (n/2, n] / max E over [0, n/2]` the double root allows for a run

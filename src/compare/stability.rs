@@ -23,6 +23,14 @@
 //! "Stable" promises bounded energy, not only a run that finishes: a completed run whose
 //! `energy_ratio` exceeds [`ENERGY_BAND`] is observed as `energy growth` and, where stability
 //! was predicted, disagrees with the prediction.
+//!
+//! "Marginal" (at the limit) allows growth, but only the double root's: the critical mode's
+//! amplitude grows at most linearly, its energy like `n^2` (methods.md §2). A marginal row
+//! agrees when it completes or is caught with its energy within that law ([`Growth`]: the
+//! growth exponent over the last doubling of its own energy log, and its energy ratio against
+//! `1.5 + 4 (1 + n)^2`), without the critical mode's content of the initial state; faster growth
+//! disagrees, whatever the run's end. Contact switching is not linear, so a contact row at 1.00
+//! of its linear limit may break the law; its scene then states that as a finding.
 
 use super::case::CaseResult;
 use super::contact::ContactResult;
