@@ -12,8 +12,7 @@
 use crate::common;
 
 use common::fig1_model;
-use courant::compare::growth::doubling_bound;
-use courant::compare::stability::time_stepping_growth;
+use courant::compare::growth::{doubling_bound, time_stepping_growth};
 use courant_solver::{
     CentralDifference, CriticalStep, OutputRequest, RunError, StabilityPolicy, TimeFunction,
 };
