@@ -1,9 +1,9 @@
 //! A run's energy growth: its energy ratio ([`time_stepping_energy_ratio`]) against the band of
 //! a stable run ([`ENERGY_BAND`]), and the growth law of a run exactly at its stability limit
-//! (methods.md §2, "At the limit"), [`Growth`]: there the critical mode of central difference has the double eigenvalue `-1` with one eigenvector,
-//! its amplitude grows at most linearly in the step count `n` and its energy at most like `n^2`,
-//! whatever the mode's content of the initial state; an eigenvalue `|lambda| > 1` grows
-//! exponentially. Two scale-free tests of that law on a run's own logged mechanical energy
+//! (methods.md §2, "At the limit"), [`Growth`]: there the critical mode of central difference
+//! has the double eigenvalue `-1` with one eigenvector, its amplitude grows at most linearly in
+//! the step count `n` and its energy at most like `n^2`, whatever the mode's content of the
+//! initial state; an eigenvalue `|lambda| > 1` grows exponentially. Two scale-free tests of that law on a run's own logged mechanical energy
 //! `E = T + U` (full-step kinetic energy) over the energy supplied so far:
 //!
 //! - **the growth exponent over the last doubling**, `p = log2(R)`,
@@ -45,7 +45,8 @@ pub const MIN_SAMPLES: usize = 4;
 /// `A = ((3n + 2k)/(n - 2k))^2` times the early one (tight when `g` changes sign at `n/4`; `A <= 4`
 /// when it does not change sign and `k = 0`). The mode's energy `c + g^2` (`c >= 0` its constant
 /// kinetic part) keeps the factor; the bounded modes, orthogonal to it, may peak late at their
-/// early maximum, which adds at most 1. `None` when `n <= 2k` (no sample in the first half but 0).
+/// early maximum, which adds at most 1 (a load's static share of the critical mode counts with
+/// them). `None` when `n <= 2k` (no sample in the first half but 0).
 pub fn doubling_bound(n: usize, k: usize) -> Option<f64> {
     let (n, k) = (n as f64, k as f64);
     (n > 2.0 * k).then(|| 1.0 + ((3.0 * n + 2.0 * k) / (n - 2.0 * k)).powi(2))
@@ -148,7 +149,9 @@ impl Growth {
         self.end_ratio <= end_bound(self.steps) && self.exponent.is_none_or(|(p, max)| p <= max)
     }
 
-    /// `within the n^2 law (p = 0.01 <= 3.32)`, `beyond the n^2 law (x1.43e6 in 72 steps > 2.13e4)`.
+    /// `within the n^2 law (p = 0.01, law <= 3.32)` when the exponent was measured and the end
+    /// ratio keeps its bound, else the end ratio against its bound:
+    /// `beyond the n^2 law (x1.434e6 in 72 steps, law <= 2.132e4)`.
     pub fn describe(&self) -> String {
         let end = format!(
             "x{:.3e} in {} steps, law <= {:.3e}",
