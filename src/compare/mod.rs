@@ -13,8 +13,9 @@
 //!   [`expect`] gives the [`verdict`]s of its expectations, [`stability_verdicts`] those of a
 //!   stability scene's cases;
 //! - [`convergence`] (observed and fitted orders against the study's band), [`stability`]
-//!   (predicted against observed stability), [`work_precision`] (cost beside error),
-//!   [`contact_closed_forms`] (the closed forms against their asymptotes);
+//!   (predicted against observed stability, [`growth`] the double-root law at the limit),
+//!   [`work_precision`] (cost beside error), [`contact_closed_forms`] (the closed forms against
+//!   their asymptotes);
 //! - [`tables`], [`files`]: the CSV tables of time-stepping cases (each other study's tables
 //!   sit in its own module), the files `courant run` writes and those a report keeps;
 //! - [`score`]: another code's results (exchange files) graded against the scene's references
@@ -34,6 +35,7 @@ pub mod dispersion;
 pub mod exact;
 pub mod expect;
 pub mod files;
+pub mod growth;
 pub mod norms;
 pub mod outcome;
 pub mod scene;

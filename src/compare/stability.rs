@@ -23,33 +23,27 @@
 //! "Stable" promises bounded energy, not only a run that finishes: a completed run whose
 //! `energy_ratio` exceeds [`ENERGY_BAND`] is observed as `energy growth` and, where stability
 //! was predicted, disagrees with the prediction.
+//!
+//! "Marginal" (at the limit) allows growth, but only the double root's: the critical mode's
+//! amplitude grows at most linearly, its energy like `n^2` (methods.md §2). A marginal row
+//! agrees when it completes or is caught with its energy within that law ([`Growth`]: the
+//! growth exponent over the last doubling of its own energy log, and its energy ratio against
+//! `1.5 + 4 (1 + n)^2`), without the critical mode's content of the initial state; faster growth
+//! disagrees, whatever the run's end. Contact switching is not linear, so a contact row at 1.00
+//! of its linear limit may break the law; its scene then states that as a finding.
 
 use super::case::CaseResult;
 use super::contact::ContactResult;
+use super::growth::{ENERGY_BAND, Growth, time_stepping_energy_ratio, time_stepping_growth};
 use super::outcome::SceneOutcome;
 use crate::results::case::Status;
 use crate::results::table::Table;
 use crate::scene::cases::Scene;
 use crate::scene::finding::{Finding, Observed};
-use courant_solver::contact::StepLimit;
-use courant_solver::{EnergyLog, EnergySample};
+use courant_solver::contact::{ContactSample, StepLimit};
 
 /// Width of the "marginal" band of `dt / dt_crit` around 1.
 const MARGINAL: f64 = 1e-9;
-
-/// Largest `energy_ratio` of a run observed as `stable`; above it a completed run shows
-/// `energy growth`. A passive system (contact can only keep or dissipate energy; a loaded bar
-/// holds what the load put in) has ratio 1 up to what the measure itself adds. Contact rows
-/// measure central difference's conserved energy `1/2 v^{n-1/2} M v^{n+1/2} + 1/2 u K u` left in
-/// the bodies at the end (`ContactResult::energy_ratio_conserved`); time-stepping rows the
-/// largest full-step `T + U` over the energy supplied, sampled every `energy_every` steps.
-/// Measured in the report: the runs that cannot gain energy sit at 0.990-1.101
-/// (predictor-corrector contact rows, `kappa <= 1`; 1.101 at 1.5 of its limit, beta_s = 1e8) and
-/// 0.9975-1.001 (stable time-stepping rows, CD and Park), CD with (bi)penalty at beta_s = 1 and
-/// 0.99 of its limit at 1.008-1.014; the runs that gain sit at 2.61 and above (CD with
-/// (bi)penalty at beta_s >= 1e4 from 0.99 of its limit, at beta_s = 1 from 1.00). 1.5 separates
-/// the two with a wide margin on both sides.
-pub const ENERGY_BAND: f64 = 1.5;
 
 /// Largest energy a completed run may create, relative to its energy scale, and still be
 /// observed as `stable`: `-(T + U - W)_end / scale` above it is `energy created`. Central
@@ -91,25 +85,6 @@ pub fn predicted_contact(ratio: f64, ratio_free: f64) -> &'static str {
     }
 }
 
-/// Energy ratio of a time-stepping run: the largest logged mechanical energy `T + U` over the
-/// largest energy supplied, `max(E^0, |W|)` over the logged samples (`W` the external work): 1
-/// up to the full-step kinetic term for a run that only holds what it was given, far above 1 for
-/// a run that gains energy (courant's guard stops a run at 1e6 of the same kind of ratio).
-/// `None` when nothing was supplied.
-pub fn time_stepping_energy_ratio(log: &EnergyLog) -> Option<f64> {
-    let mechanical = |s: &EnergySample| s.kinetic + s.strain;
-    let initial = log.samples.first().map_or(0.0, mechanical);
-    let supplied = log
-        .samples
-        .iter()
-        .map(|s| s.work.abs())
-        .fold(initial, f64::max);
-    let peak = log.samples.iter().map(mechanical).fold(0.0, |m: f64, e| {
-        if e.is_nan() { f64::INFINITY } else { m.max(e) }
-    });
-    (supplied > 0.0).then(|| peak / supplied)
-}
-
 /// One row of the table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StabilityRow {
@@ -138,6 +113,10 @@ pub struct StabilityRow {
     /// Time stepping: energy the scheme created by the end of the run, relative to the energy
     /// scale, `max(0, (T + U - W)_end / scale)` (0 for contact rows).
     pub energy_created: f64,
+    /// The run's energy growth against the double-root law at the limit ([`Growth`],
+    /// methods.md §2); graded on marginal rows. `None` without two energy samples or energy
+    /// supplied.
+    pub growth: Option<Growth>,
     /// The disagreement with theory the scene states for this case (`[[finding]]`), if any.
     pub finding: Option<Finding>,
 }
@@ -146,12 +125,15 @@ impl StabilityRow {
     /// Build a row from a case result; `dt_crit` is the limit of the case's scheme.
     pub fn new(scene: &str, r: &CaseResult) -> Self {
         let ratio = r.run.dt / r.run.limit.dt();
-        let caught = match &r.run.status {
-            Status::Completed => None,
-            Status::Diverged(d) => Some(format!(
-                "step {}, node {}, Co {:.4}",
-                d.step, d.node, d.courant
-            )),
+        let (caught, end) = match &r.run.status {
+            Status::Completed => (None, None),
+            Status::Diverged(d) => (
+                Some(format!(
+                    "step {}, node {}, Co {:.4}",
+                    d.step, d.node, d.courant
+                )),
+                Some((d.step, d.energy_ratio)),
+            ),
         };
         Self {
             scene: scene.to_string(),
@@ -169,6 +151,7 @@ impl StabilityRow {
             energy_balance: Some(r.energy.relative_balance_error()),
             energy_ratio: time_stepping_energy_ratio(&r.energy),
             energy_created: (-r.energy_lost()).max(0.0),
+            growth: time_stepping_growth(&r.energy, end),
             finding: None,
         }
     }
@@ -181,6 +164,20 @@ impl StabilityRow {
             .diverged
             .as_ref()
             .map(|d| format!("step {}, node {}, Co {:.4}", d.step, d.node, d.courant));
+        // Contact runs start from the striker's kinetic energy: the energy supplied is the first
+        // sample's.
+        let energy = |s: &ContactSample| s.kinetic + s.strain;
+        let supplied = r.run.history.first().map_or(0.0, energy);
+        let log: Vec<(usize, f64)> = if supplied > 0.0 {
+            r.run
+                .history
+                .iter()
+                .map(|s| (s.step, energy(s) / supplied))
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let end = r.diverged.as_ref().map(|d| (d.step, d.energy_ratio));
         Self {
             scene: scene.to_string(),
             case: r.case.clone(),
@@ -205,6 +202,7 @@ impl StabilityRow {
             // staggered energy is not positive above the critical step.
             energy_ratio: r.energy_ratio_conserved.or(r.energy_ratio),
             energy_created: 0.0,
+            growth: Growth::of(&log, end),
             finding: None,
         }
     }
@@ -239,7 +237,17 @@ impl StabilityRow {
     /// What the run did: `diverged` (the guard stopped it), `energy growth x<ratio>` (completed,
     /// energy beyond [`ENERGY_BAND`]), `energy created <fraction> of the energy scale` (completed, more than
     /// [`ENERGY_CREATED`] of its energy scale created) or `stable`.
+    /// A marginal row adds its growth against the double-root law
+    /// ([`Growth::describe`]: `within the n^2 law (p = ...)` or `beyond the n^2 law (...)`).
     pub fn observed(&self) -> String {
+        let kind = self.observed_kind_text();
+        match (&self.growth, self.predicted) {
+            (Some(g), "marginal") => format!("{kind}; {}", g.describe()),
+            _ => kind,
+        }
+    }
+
+    fn observed_kind_text(&self) -> String {
         match self.observed_kind() {
             Observed::EnergyGrowth => format!(
                 "energy growth x{:.3}",
@@ -256,17 +264,21 @@ impl StabilityRow {
     /// Theory and run agree: a predicted-stable run completes with bounded energy, a
     /// predicted-unstable run is caught by the guard, a contact-unstable run stays bounded
     /// (completes, whatever energy the contact pumps in). A marginal run (at the limit, where the
-    /// critical mode has a double root and may grow polynomially, methods.md §2) may stay
-    /// bounded, grow or be caught; energy *created* without growth is the scheme's own defect,
-    /// not the double root, and disagrees there as it does below the limit (one rule for both).
-    /// `None` beyond a sufficient bound, where nothing was predicted.
+    /// critical mode has a double root, methods.md §2) may stay bounded, grow or be caught as
+    /// long as its energy grows within the double root's `n^2` law ([`Growth::within_law`]);
+    /// faster growth disagrees, and so does energy *created* without growth, the scheme's own
+    /// defect, not the double root, as it does below the limit (one rule for both). `None`
+    /// beyond a sufficient bound, where nothing was predicted.
     pub fn agrees(&self) -> Option<bool> {
         match self.predicted {
             "stable" => Some(self.observed_kind() == Observed::Stable),
             "contact-unstable" => Some(self.completed),
             "unstable" => Some(self.caught.is_some()),
             "beyond bound" => None,
-            _ => Some(self.observed_kind() != Observed::EnergyCreated),
+            _ => Some(
+                self.observed_kind() != Observed::EnergyCreated
+                    && self.growth.is_none_or(|g| g.within_law()),
+            ),
         }
     }
 }
@@ -417,6 +429,7 @@ mod tests {
             energy_balance: None,
             energy_ratio,
             energy_created: 0.0,
+            growth: None,
             finding: None,
         }
     }
@@ -496,45 +509,43 @@ mod tests {
         assert_eq!(row("unstable", true, Some(1.0)).agrees(), Some(false));
     }
 
-    fn sample(kinetic: f64, strain: f64, work: f64) -> EnergySample {
-        EnergySample {
-            step: 0,
-            time: 0.0,
-            kinetic,
-            kinetic_staggered: kinetic,
-            strain,
-            work,
-            balance_error: 0.0,
-        }
-    }
-
-    /// Source of truth: the definition, largest T + U over the largest of E^0 and |W|.
-    /// Proves: a loaded bar that holds what the load put in reads 1, one that doubles it reads
-    /// 2, an initial-value run uses its initial energy, a run that was never supplied any energy
-    /// has no ratio, and a NaN state counts as unbounded.
+    /// Source of truth: the double-root law at the limit (methods.md §2; [`Growth`]). Proves: a
+    /// marginal row agrees when its energy grows within the law, caught or not, and disagrees
+    /// when it grows beyond it (a catch at step 72 with x1.434e6) or creates energy without
+    /// growth (one rule with the rows below the limit); the observed text of a marginal row says
+    /// which.
     #[test]
-    fn time_stepping_energy_ratio_is_peak_energy_over_energy_supplied() {
-        let log = |samples: Vec<EnergySample>| EnergyLog {
-            samples,
-            ..EnergyLog::default()
-        };
-        let held = log(vec![
-            sample(0.0, 0.0, 0.0),
-            sample(0.5, 0.5, 1.0),
-            sample(1.0, 1.0, 2.0),
-            sample(0.1, 0.1, 0.2),
-        ]);
-        assert_eq!(time_stepping_energy_ratio(&held), Some(1.0));
-        let doubled = log(vec![sample(0.0, 0.0, 0.0), sample(2.0, 2.0, 2.0)]);
-        assert_eq!(time_stepping_energy_ratio(&doubled), Some(2.0));
-        let free = log(vec![sample(0.5, 0.0, 0.0), sample(0.25, 0.5, 0.0)]);
-        assert_eq!(time_stepping_energy_ratio(&free), Some(1.5));
-        assert_eq!(
-            time_stepping_energy_ratio(&log(vec![sample(0.0, 0.0, 0.0)])),
-            None
+    fn marginal_rows_are_graded_against_the_double_root_law() {
+        let law = |log: &[(usize, f64)], end| Growth::of(log, end);
+        let quadratic: Vec<(usize, f64)> = (0..=1000)
+            .step_by(10)
+            .map(|j| (j, (1.0 + 0.1 * j as f64).powi(2)))
+            .collect();
+        let mut caught = row("marginal", false, Some(1e6));
+        caught.growth = law(&quadratic, Some((1000, 1e6)));
+        assert_eq!(caught.agrees(), Some(true), "{caught:?}");
+        assert!(
+            caught
+                .observed()
+                .starts_with("diverged; within the n^2 law (p = 1.9"),
+            "{}",
+            caught.observed()
         );
-        let nan = log(vec![sample(0.0, 0.0, 0.0), sample(f64::NAN, 0.0, 1.0)]);
-        assert_eq!(time_stepping_energy_ratio(&nan), Some(f64::INFINITY));
+        let mut exploding = row("marginal", false, Some(1.434e6));
+        exploding.growth = law(&[(0, 1.0), (71, 3e5)], Some((72, 1.434e6)));
+        assert_eq!(exploding.agrees(), Some(false));
+        assert!(exploding.observed().contains("beyond the n^2 law"));
+        let mut created = row("marginal", true, Some(1.0));
+        created.energy_created = 1.2e-3;
+        created.growth = law(&[(0, 1.0), (10, 1.0)], None);
+        assert_eq!(created.agrees(), Some(false));
+        // Rows away from the limit are not graded by the law, nor does their text show it.
+        let mut stable = row("stable", true, Some(1.0));
+        stable.growth = exploding.growth;
+        assert_eq!(
+            (stable.agrees(), stable.observed()),
+            (Some(true), "stable".into())
+        );
     }
 
     /// Source of truth: methods.md §7 (unilateral contact). Proves: above the contact limit but

@@ -11,8 +11,8 @@ use super::figure_parts::{
 use super::plot::{Axes, PALETTE_SIZE, Series, SeriesStyle, line_chart};
 use crate::compare::case::CaseResult;
 use crate::compare::contact::ContactResult;
+use crate::compare::growth::ENERGY_BAND;
 use crate::compare::outcome::SceneOutcome;
-use crate::compare::stability::ENERGY_BAND;
 use crate::compare::sweep::{SweepResult, SweepRow};
 use crate::results::case::Status;
 use crate::scene::cases::Scene;

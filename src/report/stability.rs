@@ -3,7 +3,8 @@
 
 use super::document::{Block, Page};
 use crate::compare::contact_closed_forms::{CONTACT_CLOSED_FORMS_TEXT, contact_closed_form_table};
-use crate::compare::stability::{ENERGY_BAND, ENERGY_CREATED, StabilityRow, stability_table};
+use crate::compare::growth::ENERGY_BAND;
+use crate::compare::stability::{ENERGY_CREATED, StabilityRow, stability_table};
 
 /// The section, from the rows of every stability scene.
 ///
@@ -32,10 +33,11 @@ pub fn section(stability: &[StabilityRow]) -> Result<Page, String> {
     page.push(Block::Heading(2, "Stability at the extremes".into()));
     page.push(Block::Paragraph(format!(
         "Every case of the stability scenes: its step against the exact limit of its scheme, the \
-         verdict theory predicts and what the run did. Of {} rows: {} agree with theory, {} \
+         verdict theory predicts and what the run did (at the limit: whether its energy keeps \
+         the n^2 law). Of {} rows: {} agree with theory, {} \
          disagree as their scenes state (findings), {} disagree without a stated finding (FAIL), \
-         {} ran beyond a sufficient bound, where nothing is predicted. The rows that need a look \
-         come first; how to read the columns is below the table.",
+         {} ran beyond a sufficient bound, where nothing is predicted. Rows that need a look come \
+         first; the columns are explained below the table.",
         stability.len(),
         agreeing.len(),
         findings.len(),
@@ -48,7 +50,12 @@ pub fn section(stability: &[StabilityRow]) -> Result<Page, String> {
          central difference with any mass; alpha_e = dt/dt_e <= 1 in every element for Park's \
          scheme, whose runs above it use the true alpha; that bound is the limit on a uniform mesh \
          and only sufficient on a graded one, where a step above it is `beyond bound`, not \
-         predicted. `predicted` is marginal within 1e-9 of the limit; `guard` is where courant's \
+         predicted. `predicted` is marginal within 1e-9 of the limit, where the critical mode's double \
+         root lets the energy grow at most like n^2 (methods.md §2): a marginal row's `observed` \
+         adds `within` or `beyond the n^2 law` with the growth exponent p = log2(max energy over \
+         the second half of the run / max over the first half) and its bound (at most 3.32 for a \
+         finely logged run), or, for a run too short to measure p, its energy ratio after n steps \
+         against 1.5 + 4 (1 + n)^2; beyond the law disagrees. `guard` is where courant's \
          divergence guard stopped the run. Rows at 0.99, 1.00 and 1.01 of the closed-form critical \
          Courant number (stability_extremes, layered_1e4: 1.00 is a hair below the finite mesh's \
          exact limit, `dt_over_dt_crit` shows by how much) stand beside rows in units of the exact \
@@ -110,6 +117,7 @@ mod tests {
             energy_balance: Some(0.0),
             energy_ratio: Some(1.0),
             energy_created: 0.0,
+            growth: None,
             finding: None,
         }
     }

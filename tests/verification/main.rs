@@ -29,4 +29,5 @@ mod si_units_normalisation;
 mod stability_at_the_extremes;
 mod stability_extremes_table;
 mod stability_guard;
+mod stability_marginal_growth_law;
 mod work_precision_contact;
