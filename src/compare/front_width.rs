@@ -45,7 +45,10 @@ pub fn front_width(x: &[f64], stress: &[f64], reference: &[f64]) -> Option<f64> 
     }
     let p: Vec<f64> = stress.iter().map(|s| s / jump).collect();
     let peak = (0..p.len()).fold(0, |best, i| if p[i] > p[best] { i } else { best });
-    if peak == 0 || peak + 1 >= p.len() || !(p[peak] > FRONT_LEVEL) {
+    if peak == 0
+        || peak + 1 >= p.len()
+        || p[peak].partial_cmp(&FRONT_LEVEL) != Some(std::cmp::Ordering::Greater)
+    {
         return None;
     }
     let x_peak = vertex(

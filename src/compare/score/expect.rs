@@ -289,20 +289,22 @@ fn measure(
     }
 }
 
-/// The `(mode, omega)` rows of the two mass kinds of a `mass_deviation` or `mode_error_ratio`
-/// row; not supplied when the file has no rows of one of them.
-#[allow(clippy::type_complexity)]
+/// `(mode, omega)` rows of one mass kind of a spectrum file.
+type ModeRows = Vec<(usize, f64)>;
+
+/// The rows of the two mass kinds of a `mass_deviation` or `mode_error_ratio` row; not supplied
+/// when the file has no rows of one of them.
 fn two_masses(
     expectation: &Expectation,
     case: &ScoredCase,
-) -> Result<(Vec<(usize, f64)>, Vec<(usize, f64)>), Unmeasured> {
+) -> Result<(ModeRows, ModeRows), Unmeasured> {
     let Scored::Spectrum(s) = &case.scored else {
         return Err("the file holds no spectrum".into());
     };
     let Some((mass, against)) = expectation.masses else {
         return Err("needs the two mass kinds".into());
     };
-    let of = |label: String| -> Vec<(usize, f64)> {
+    let of = |label: String| -> ModeRows {
         s.rows
             .iter()
             .filter(|r| r.0 == label)
