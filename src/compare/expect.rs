@@ -5,11 +5,12 @@
 //! `relative_to` the value is the ratio `value(case) / value(relative_to)`; for
 //! `force_history_difference` it is the distance between the two force histories.
 
-use super::case::CaseResult;
+use super::case::{CaseResult, ProfileComparison};
 use super::contact::{
     ContactResult, DURATION_UNDEFINED, ENERGY_RATIO_UNDEFINED, ForceErrors, PLATEAU_UNDEFINED,
     SEPARATION_UNDEFINED,
 };
+use super::front_width::{FRONT_WIDTH_UNDEFINED, front_width};
 use super::norms::ErrorNorms;
 use super::outcome::SceneOutcome;
 use super::spectrum::SpectrumResult;
@@ -188,35 +189,49 @@ pub fn ratio(a: Measured, b: Measured, other: &str) -> Measured {
 
 /// A time-stepping metric of one case.
 fn case_value(e: &Expectation, result: &CaseResult, other: Option<&CaseResult>) -> Measured {
-    let norm_of = |pick: fn(&ErrorNorms) -> Option<f64>| -> Measured {
-        let selected: Vec<Option<f64>> = result
-            .profiles
-            .iter()
-            .filter(|p| at_time(e.at, p.time, result.run.dt))
-            .filter_map(|p| p.norms.as_ref().map(pick))
-            .collect();
-        let expected = if e.at.is_some() {
-            1
-        } else {
-            result.run.profiles_requested
+    // The worst over the selected profiles of a value each profile may lack (`None`: no
+    // reference) or leave undefined (`Some(None)`, with `undefined` the reason).
+    let per_profile =
+        |pick: &dyn Fn(&ProfileComparison) -> Option<Option<f64>>, undefined: &str| -> Measured {
+            let selected: Vec<Option<f64>> = result
+                .profiles
+                .iter()
+                .filter(|p| at_time(e.at, p.time, result.run.dt))
+                .filter_map(pick)
+                .collect();
+            let expected = if e.at.is_some() {
+                1
+            } else {
+                result.run.profiles_requested
+            };
+            if selected.len() < expected {
+                return Measured::Missing("the run ended before every profile time".into());
+            }
+            let defined: Vec<f64> = selected.into_iter().flatten().collect();
+            if defined.is_empty() {
+                return Measured::Missing(undefined.into());
+            }
+            Measured::Value(defined.into_iter().fold(f64::NEG_INFINITY, f64::max))
         };
-        if selected.len() < expected {
-            return Measured::Missing("the run ended before every profile time".into());
-        }
-        let defined: Vec<f64> = selected.into_iter().flatten().collect();
-        if defined.is_empty() {
-            return Measured::Missing(
-                "undefined: the exact profile has no variation (one element, or no front yet)"
-                    .into(),
-            );
-        }
-        Measured::Value(defined.into_iter().fold(f64::NEG_INFINITY, f64::max))
+    let norm_of = |pick: fn(&ErrorNorms) -> Option<f64>| -> Measured {
+        per_profile(
+            &|p| p.norms.as_ref().map(pick),
+            "undefined: the exact profile has no variation (one element, or no front yet)",
+        )
     };
     match e.metric {
         Metric::L1 => norm_of(|n| Some(n.l1)),
         Metric::L2 => norm_of(|n| Some(n.l2)),
         Metric::Linf => norm_of(|n| Some(n.linf)),
         Metric::Overshoot => norm_of(|n| Some(n.overshoot)),
+        Metric::FrontWidth => per_profile(
+            &|p| {
+                p.reference
+                    .as_ref()
+                    .map(|r| front_width(&p.x, &p.stress, r))
+            },
+            FRONT_WIDTH_UNDEFINED,
+        ),
         Metric::TvRatio => norm_of(|n| n.tv_ratio),
         Metric::EnergyLost => Measured::Value(result.energy_lost()),
         Metric::EnergyBalance => Measured::Value(result.energy.relative_balance_error()),
@@ -343,6 +358,16 @@ fn spectrum_value(e: &Expectation, r: &SpectrumResult) -> Measured {
                     )
                 }
                 _ => Measured::Missing("the case lacks one of the two masses".into()),
+            }
+        }
+        (Metric::ModeErrorRatio, Some((mass, against))) => {
+            if r.continuum.is_none() {
+                Measured::Missing("no continuum reference for this case".into())
+            } else {
+                r.max_mode_error_ratio(mass, against).map_or(
+                    Measured::Missing("the case lacks one of the two masses".into()),
+                    Measured::Value,
+                )
             }
         }
         _ => Measured::Missing("not a spectrum metric".into()),

@@ -7,7 +7,8 @@
 //! ```
 //!
 //! - [`exact`] evaluates a case's reference (`courant-references`), [`cache`] shares exact
-//!   profiles between the cases of a scene, [`norms`] measures a profile against them;
+//!   profiles between the cases of a scene, [`norms`] measures a profile against them and
+//!   [`front_width`] the width of its dispersed front;
 //! - [`case`], [`contact`], [`spectrum`], [`dispersion`], [`sweep`]: each kind of record beside
 //!   its reference; [`scene`] compares a whole scene into an [`outcome::SceneOutcome`] and
 //!   [`expect`] gives the [`verdict`]s of its expectations, [`stability_verdicts`] those of a
@@ -35,6 +36,7 @@ pub mod dispersion;
 pub mod exact;
 pub mod expect;
 pub mod files;
+pub mod front_width;
 pub mod growth;
 pub mod norms;
 pub mod outcome;

@@ -43,7 +43,7 @@ pub struct Verdict {
     pub at: Option<f64>,
     /// The case the value is relative to, if any.
     pub relative_to: Option<String>,
-    /// `mass_deviation`: the mass kind compared and the one it is compared against.
+    /// `mass_deviation`, `mode_error_ratio`: the mass kind compared and the one it is compared against.
     pub masses: Option<(MassKind, MassKind)>,
     /// Contact force metrics: the force measured, when not the scene's.
     pub force: Option<ForceMeasure>,

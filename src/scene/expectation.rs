@@ -26,7 +26,8 @@ pub struct Expectation {
     /// A case the measured value is relative to: the ratio `value(case) / value(relative_to)`,
     /// or for `force_history_difference` the distance between the two histories.
     pub relative_to: Option<String>,
-    /// `mass_deviation`: the mass kind compared and the one it is compared against.
+    /// `mass_deviation`, `mode_error_ratio`: the mass kind compared and the one it is compared
+    /// against.
     pub masses: Option<(MassKind, MassKind)>,
     /// Contact force metrics: the force measured, when not the scene's.
     pub force: Option<ForceMeasure>,
@@ -207,7 +208,7 @@ pub(super) fn expectation(
         (_, min, max, None) => Bound::Range { min, max },
     };
     let relative_to = match (&raw.relative_to, metric) {
-        (Some(_), Metric::Diverged | Metric::MassDeviation) => {
+        (Some(_), Metric::Diverged | Metric::MassDeviation | Metric::ModeErrorRatio) => {
             return Err(fail(format!(
                 "`relative_to` does not apply to metric \"{}\"",
                 metric.name()
@@ -228,7 +229,7 @@ pub(super) fn expectation(
         (other, _) => other.clone(),
     };
     let masses = match (metric, &raw.mass, &raw.against) {
-        (Metric::MassDeviation, Some(mass), Some(against)) => {
+        (m, Some(mass), Some(against)) if m.compares_masses() => {
             let kind = |label: &str| -> Result<MassKind, SceneError> {
                 let kind = parse_mass(label).map_err(&fail)?;
                 if masses.contains(&kind) {
@@ -243,15 +244,16 @@ pub(super) fn expectation(
             };
             Some((kind(mass)?, kind(against)?))
         }
-        (Metric::MassDeviation, _, _) => {
-            return Err(fail(
-                "metric \"mass_deviation\" needs `mass` and `against` (two of the scene's mass kinds)".into(),
-            ));
+        (m, _, _) if m.compares_masses() => {
+            return Err(fail(format!(
+                "metric \"{}\" needs `mass` and `against` (two of the scene's mass kinds)",
+                m.name()
+            )));
         }
         (_, None, None) => None,
         (_, _, _) => {
             return Err(fail(
-                "`mass` and `against` apply only to metric \"mass_deviation\"".into(),
+                "`mass` and `against` apply only to metrics \"mass_deviation\" and \"mode_error_ratio\"".into(),
             ));
         }
     };

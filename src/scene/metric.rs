@@ -12,6 +12,10 @@ pub enum Metric {
     Linf,
     /// Overshoot beyond the exact solution's envelope, as a fraction of the jump |sigma0|.
     Overshoot,
+    /// Width of a dispersed step front: the distance from the first peak behind the front to
+    /// where the profile crosses a third of the jump, in the bar's length unit
+    /// ([`crate::compare::front_width`]; `|a1| w = 2.3381 w` for the Airy front, methods.md §3).
+    FrontWidth,
     /// Largest |energy balance error| relative to the energy scale of the run.
     EnergyBalance,
     /// Whether the run diverged.
@@ -71,6 +75,10 @@ pub enum Metric {
     /// Spectrum: `max_n |omega_n(mass) / omega_n(against) - 1|` over the elastic modes, between
     /// two of the case's mass kinds.
     MassDeviation,
+    /// Spectrum: `max_n |omega_n(mass)/omega_n - 1| / |omega_n(against)/omega_n - 1|` over the
+    /// elastic modes, `omega_n` the continuum (below 1: `mass` closer to the continuum than
+    /// `against` on every mode; methods.md §5).
+    ModeErrorRatio,
     /// The automatic stability verdict of every case of a stability scene: what the run did
     /// against what theory predicts for its step (not an `[[expect]]` metric; a disagreement is
     /// declared with `[[finding]]`).
@@ -88,6 +96,7 @@ pub(super) const METRICS: &[(Metric, &str, Study)] = &[
     (Metric::L2, "l2", Study::TimeStepping),
     (Metric::Linf, "linf", Study::TimeStepping),
     (Metric::Overshoot, "overshoot", Study::TimeStepping),
+    (Metric::FrontWidth, "front_width", Study::TimeStepping),
     (Metric::TvRatio, "tv_ratio", Study::TimeStepping),
     (Metric::EnergyLost, "energy_lost", Study::TimeStepping),
     (Metric::EnergyBalance, "energy_balance", Study::TimeStepping),
@@ -113,6 +122,7 @@ pub(super) const METRICS: &[(Metric, &str, Study)] = &[
         Study::Spectrum,
     ),
     (Metric::MassDeviation, "mass_deviation", Study::Spectrum),
+    (Metric::ModeErrorRatio, "mode_error_ratio", Study::Spectrum),
     (
         Metric::DispersionDeviation,
         "dispersion_deviation",
@@ -250,11 +260,16 @@ impl Metric {
         )
     }
 
+    /// True for metrics that compare two of a spectrum case's mass kinds (`mass`, `against`).
+    pub fn compares_masses(self) -> bool {
+        matches!(self, Metric::MassDeviation | Metric::ModeErrorRatio)
+    }
+
     /// True for metrics measured on profiles (they need a reference).
     pub fn needs_reference(self) -> bool {
         matches!(
             self,
-            Metric::L1 | Metric::L2 | Metric::Linf | Metric::Overshoot
+            Metric::L1 | Metric::L2 | Metric::Linf | Metric::Overshoot | Metric::FrontWidth
         )
     }
 }

@@ -398,9 +398,9 @@ pub struct RawExpect {
     /// A case the value is relative to (`value / value(relative_to)`; for
     /// `force_history_difference` the case whose history is the comparison).
     pub relative_to: Option<String>,
-    /// `mass_deviation`: the mass kind compared.
+    /// `mass_deviation`, `mode_error_ratio`: the mass kind compared.
     pub mass: Option<String>,
-    /// `mass_deviation`: the mass kind it is compared against.
+    /// `mass_deviation`, `mode_error_ratio`: the mass kind it is compared against.
     pub against: Option<String>,
     /// Contact force metrics: `penalty` or `transferred`, instead of the scene's `force`.
     pub force: Option<String>,

@@ -10,3 +10,4 @@ mod dalembert_self_tests;
 mod graded_bar_two_routes;
 mod graded_layered_waves;
 mod spectra_closed_forms;
+mod spectra_error_ratios;

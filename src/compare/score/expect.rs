@@ -11,10 +11,11 @@
 
 use super::applies::Applies;
 use super::bind::profile_times;
-use super::outcome::{Scored, ScoredCase, ScoredForce, SkipKind, Skipped};
+use super::outcome::{Scored, ScoredCase, ScoredForce, ScoredProfile, SkipKind, Skipped};
 use crate::compare::contact::ForceErrors;
 use crate::compare::contact::{DURATION_UNDEFINED, PLATEAU_UNDEFINED, SEPARATION_UNDEFINED};
 use crate::compare::expect::{at_time, judge, ratio};
+use crate::compare::front_width::{FRONT_WIDTH_UNDEFINED, front_width};
 use crate::compare::norms::ErrorNorms;
 use crate::compare::stress_difference::{ProfileView, stress_difference};
 use crate::compare::verdict::{Measured, Verdict};
@@ -182,7 +183,11 @@ fn measure(
     expectation: &Expectation,
     case: &ScoredCase,
 ) -> Result<Measured, Unmeasured> {
-    let norm = |pick: fn(&ErrorNorms) -> Option<f64>| -> Result<Measured, Unmeasured> {
+    // The worst over the profiles at the expectation's times of a value a profile may leave
+    // undefined (`None`, with `undefined` the reason).
+    let per_profile = |pick: &dyn Fn(&ScoredProfile) -> Option<f64>,
+                       undefined: &str|
+     -> Result<Measured, Unmeasured> {
         let Scored::Profiles { profiles, .. } = &case.scored else {
             return Err("the file holds no stress profiles".into());
         };
@@ -198,7 +203,7 @@ fn measure(
             let at: Vec<Option<f64>> = profiles
                 .iter()
                 .filter(|p| at_time(Some(t), p.time, dt))
-                .map(|p| pick(&p.norms))
+                .map(pick)
                 .collect();
             if at.is_empty() {
                 return Err(Unmeasured::NotSupplied(format!(
@@ -208,12 +213,15 @@ fn measure(
             worst = at.into_iter().flatten().fold(worst, f64::max);
         }
         if worst == f64::NEG_INFINITY {
-            return Ok(Measured::Missing(
-                "undefined: the exact profile has no variation (one element, or no front yet)"
-                    .into(),
-            ));
+            return Ok(Measured::Missing(undefined.into()));
         }
         Ok(Measured::Value(worst))
+    };
+    let norm = |pick: fn(&ErrorNorms) -> Option<f64>| -> Result<Measured, Unmeasured> {
+        per_profile(
+            &|p| pick(&p.norms),
+            "undefined: the exact profile has no variation (one element, or no front yet)",
+        )
     };
     let force = |pick: fn(&ScoredForce) -> Option<f64>, why: &str| match &case.scored {
         Scored::Force(f) => Ok(pick(f).map_or(Measured::Missing(why.into()), Measured::Value)),
@@ -225,6 +233,10 @@ fn measure(
         Metric::L2 => norm(|n| Some(n.l2)),
         Metric::Linf => norm(|n| Some(n.linf)),
         Metric::Overshoot => norm(|n| Some(n.overshoot)),
+        Metric::FrontWidth => per_profile(
+            &|p| front_width(&p.x, &p.stress, &p.reference),
+            FRONT_WIDTH_UNDEFINED,
+        ),
         Metric::TvRatio => norm(|n| n.tv_ratio),
         Metric::PlateauDeviation => force(|f| f.errors.plateau_deviation, PLATEAU_UNDEFINED),
         Metric::ImpulseError => force(
@@ -253,6 +265,7 @@ fn measure(
             _ => Err("the file holds no spectrum".into()),
         },
         Metric::MassDeviation => mass_deviation(expectation, case),
+        Metric::ModeErrorRatio => mode_error_ratio(scene, expectation, case),
         Metric::EnergyBalance | Metric::EnergyLost | Metric::EnergyRatio => {
             Err("not measurable from files: format 1 carries no energies".into())
         }
@@ -276,17 +289,22 @@ fn measure(
     }
 }
 
-/// `max |omega_a / omega_b - 1|` over the elastic modes both mass kinds of the file give (the
-/// rigid mode, 0 up to round-off, left out), as `courant run` measures it; not supplied when the
-/// file has no rows of one of the two masses.
-fn mass_deviation(expectation: &Expectation, case: &ScoredCase) -> Result<Measured, Unmeasured> {
+/// `(mode, omega)` rows of one mass kind of a spectrum file.
+type ModeRows = Vec<(usize, f64)>;
+
+/// The rows of the two mass kinds of a `mass_deviation` or `mode_error_ratio` row; not supplied
+/// when the file has no rows of one of them.
+fn two_masses(
+    expectation: &Expectation,
+    case: &ScoredCase,
+) -> Result<(ModeRows, ModeRows), Unmeasured> {
     let Scored::Spectrum(s) = &case.scored else {
         return Err("the file holds no spectrum".into());
     };
     let Some((mass, against)) = expectation.masses else {
         return Err("needs the two mass kinds".into());
     };
-    let of = |label: String| -> Vec<(usize, f64)> {
+    let of = |label: String| -> ModeRows {
         s.rows
             .iter()
             .filter(|r| r.0 == label)
@@ -301,6 +319,14 @@ fn mass_deviation(expectation: &Expectation, case: &ScoredCase) -> Result<Measur
             missing.label()
         )));
     }
+    Ok((a, b))
+}
+
+/// `max |omega_a / omega_b - 1|` over the elastic modes both mass kinds of the file give (the
+/// rigid mode, 0 up to round-off, left out), as `courant run` measures it; not supplied when the
+/// file has no rows of one of the two masses.
+fn mass_deviation(expectation: &Expectation, case: &ScoredCase) -> Result<Measured, Unmeasured> {
+    let (a, b) = two_masses(expectation, case)?;
     let top = b.iter().map(|r| r.1).fold(0.0, f64::max);
     Ok(Measured::Value(
         a.iter()
@@ -309,4 +335,34 @@ fn mass_deviation(expectation: &Expectation, case: &ScoredCase) -> Result<Measur
             .map(|(v, w)| (v / w - 1.0).abs())
             .fold(0.0, f64::max),
     ))
+}
+
+/// The largest [`mode_error_ratio`] over the elastic modes both mass kinds of the file give,
+/// against the continuum frequency of each mode number (the rigid mode left out), as
+/// `courant run` measures it; not measurable without a continuum reference for the case.
+fn mode_error_ratio(
+    scene: &Scene,
+    expectation: &Expectation,
+    case: &ScoredCase,
+) -> Result<Measured, Unmeasured> {
+    let (a, b) = two_masses(expectation, case)?;
+    let Some(bar) = scene
+        .spectra
+        .iter()
+        .find(|c| c.name == case.case)
+        .and_then(|c| c.closed_form.as_ref())
+    else {
+        return Err("no continuum reference for this case".into());
+    };
+    Ok(a.iter()
+        .filter(|(mode, _)| bar.modes().contains(mode))
+        .filter_map(|(mode, v)| {
+            let w = b.iter().find(|r| r.0 == *mode)?.1;
+            crate::compare::spectrum::mode_error_ratio(*v, w, bar.continuum_frequency(*mode))
+        })
+        .reduce(f64::max)
+        .map_or(
+            Measured::Missing("no elastic mode in both masses".into()),
+            Measured::Value,
+        ))
 }
