@@ -381,7 +381,17 @@ impl HaloTiles {
     pub fn solve_in_place(&self, x: &mut [f64]) {
         assert_eq!(x.len(), self.n, "right-hand side of the wrong length");
         let r = x.to_vec();
-        self.for_each_tile(&r, &mut self.buffers(), |rows, solution| {
+        self.solve_into(&r, x, &mut self.buffers());
+    }
+
+    /// `x = M^-1 r` (`+0` at the fixed rows) with the work arrays `buffers` (from
+    /// [`Self::buffers`]): [`Self::solve_in_place`]'s arithmetic without allocating.
+    pub(crate) fn solve_into(&self, r: &[f64], x: &mut [f64], buffers: &mut GroupBuffers) {
+        assert!(
+            r.len() == self.n && x.len() == self.n,
+            "vectors of the wrong length"
+        );
+        self.for_each_tile(r, buffers, |rows, solution| {
             x[rows].copy_from_slice(solution)
         });
     }
