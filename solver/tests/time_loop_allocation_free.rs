@@ -9,7 +9,8 @@
 //! Proves: one step of lumped CD (and a block of its steps on one thread; on two threads a
 //! block allocates a fixed few buffers and its thread, never per step), of CD with each
 //! non-diagonal mass (CMM, AMM: partitioned tridiagonal solve, and windows on a long bar; RMM:
-//! product with M^-1; with a node's acceleration and T* recomputed from the mass), of
+//! product with M^-1; with a node's acceleration and T* recomputed from the mass; on a bar of two
+//! chunks, none on one thread and only its thread per step on two), of
 //! Park's scheme (global and local stepping,
 //! both variants), and of the Noh-Bathe stepper with every mass (the lumped one in its one-sweep
 //! step over chunks of the bar, several chunks here; stepped through the public `Integrator`
@@ -23,7 +24,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use courant_solver::bench::LumpedStep;
 use courant_solver::bench::ParkStep;
 use courant_solver::bench::graded_seed_bar;
-use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock, TILE};
+use courant_solver::bench::{MAX_BLOCK_STEPS, PARALLEL_FROM_NODES, StepBlock, TILE};
 use courant_solver::bench::{MatrixMassStep, StartState};
 use courant_solver::integrator::{InitialState, Integrator};
 use courant_solver::schemes::noh_bathe::NohBatheStepper;
@@ -50,7 +51,8 @@ unsafe impl GlobalAlloc for Counting {
 }
 
 /// Most allocations a block of steps on two threads may make: the pipeline's three vectors and
-/// what `std::thread::scope` and one spawned thread allocate.
+/// what `std::thread::scope` and one spawned thread allocate (a matrix-mass step in two chunks:
+/// the thread alone).
 const PIPELINE_ALLOCATIONS: usize = 16;
 
 #[global_allocator]
@@ -169,6 +171,41 @@ fn every_time_stepping_kernel_steps_without_allocating() {
         assert!(kernel.displacement().iter().all(|u| u.is_finite()));
     }
 
+    // A bar long enough for the matrix-mass step to run in two fixed chunks: none on one thread;
+    // on two, only the scoped thread each step spawns, never per node.
+    let chunked = graded_seed_bar(PARALLEL_FROM_NODES).unwrap();
+    let element_dt = chunked.bar().stiffest_element().1;
+    for kind in [MassKind::Consistent, MassKind::Reciprocal { beta: 0.5 }] {
+        let zeros = vec![0.0; PARALLEL_FROM_NODES + 1];
+        let start = StartState {
+            displacement: &zeros,
+            half_step_velocity: &zeros,
+            acceleration: &zeros,
+            residual: &zeros,
+            kinetic_staggered: 0.0,
+        };
+        let operator = MassOperator::new(&chunked, kind).unwrap();
+        let dt = 0.5 * kind.critical_courant() * element_dt;
+        let mut kernel = MatrixMassStep::new(dt, chunked.stiffness(), operator, &start);
+        assert_eq!(
+            allocations_during(20, || {
+                std::hint::black_box(kernel.step_with_energy(&forces));
+            }),
+            0,
+            "{}, two chunks on one thread",
+            kind.label()
+        );
+        kernel.set_threads(2);
+        let per_step = allocations_during(20, || {
+            std::hint::black_box(kernel.step_with_energy(&forces));
+        }) / 20;
+        assert!(
+            (1..=PIPELINE_ALLOCATIONS).contains(&per_step),
+            "{}: {per_step} allocations per step on two threads",
+            kind.label()
+        );
+    }
+
     for local_stepping in [false, true] {
         for variant in [ParkVariant::Free, ParkVariant::Incremental] {
             let options = ParkOptions {
@@ -218,7 +255,7 @@ fn every_time_stepping_kernel_steps_without_allocating() {
             kinetic: 0.0,
             start: Start::HalfStep,
             allow_unstable: false,
-            mass: MassOperator::new(&model, kind).unwrap(),
+            mass: MassOperator::new(model, kind).unwrap(),
             threads: 1,
         };
         let mut stepper = NohBatheStepper::start(&0.54, state).unwrap();
