@@ -46,7 +46,6 @@ fn cd_with_each_matrix_mass_gives_the_same_bits_on_one_thread_and_on_two() {
         history_nodes: vec![0, n / 2 - 600, n / 2 - 1, n / 2, n / 2 + 1, n / 2 + 700, n],
         history_every: 1,
         energy_every: 1,
-        ..OutputRequest::default()
     };
     for kind in [
         MassKind::Consistent,
