@@ -24,7 +24,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use courant_solver::bench::LumpedStep;
 use courant_solver::bench::ParkStep;
 use courant_solver::bench::graded_seed_bar;
-use courant_solver::bench::{MAX_BLOCK_STEPS, PARALLEL_FROM_NODES, StepBlock, TILE};
+use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock, TILE, TWO_THREADS_FROM_NODES};
 use courant_solver::bench::{MatrixMassStep, StartState};
 use courant_solver::integrator::{InitialState, Integrator};
 use courant_solver::schemes::noh_bathe::NohBatheStepper;
@@ -171,12 +171,12 @@ fn every_time_stepping_kernel_steps_without_allocating() {
         assert!(kernel.displacement().iter().all(|u| u.is_finite()));
     }
 
-    // A bar long enough for the matrix-mass step to run in two fixed chunks: none on one thread;
-    // on two, only the scoped thread each step spawns, never per node.
-    let chunked = graded_seed_bar(PARALLEL_FROM_NODES).unwrap();
+    // A bar long enough for the matrix-mass step to run in two fixed chunks on two threads: none
+    // on one thread; on two, only the scoped thread each step spawns, never per node.
+    let chunked = graded_seed_bar(TWO_THREADS_FROM_NODES).unwrap();
     let element_dt = chunked.bar().stiffest_element().1;
     for kind in [MassKind::Consistent, MassKind::Reciprocal { beta: 0.5 }] {
-        let zeros = vec![0.0; PARALLEL_FROM_NODES + 1];
+        let zeros = vec![0.0; TWO_THREADS_FROM_NODES + 1];
         let start = StartState {
             displacement: &zeros,
             half_step_velocity: &zeros,

@@ -15,4 +15,4 @@ pub(crate) mod kernel;
 mod passes;
 mod placed_arrays;
 
-pub use kernel::{MatrixMassStep, StartState};
+pub use kernel::{MatrixMassStep, StartState, TWO_THREADS_FROM_NODES};

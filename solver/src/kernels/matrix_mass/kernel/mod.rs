@@ -103,7 +103,17 @@ pub struct MatrixMassStep {
     seam: Option<Chunks>,
     /// Threads the chunks run on (1 or 2: the same bits).
     threads: usize,
+    /// Nodes from which the chunks take a second thread when `threads` allows
+    /// ([`TWO_THREADS_FROM_NODES`]; below, both on the calling thread: the same bits).
+    threads_from: usize,
 }
+
+/// Nodes from which a matrix-mass step in two chunks runs them on two threads (when its run
+/// has two): a step spawns its second thread, so a step must be long against a spawn and the
+/// wait for a core. At 1e5 nodes (a step of about 0.1-0.2 ms) two threads took twice as long as
+/// one on a busy machine, at 1e6 0.8-1.3 times as long (benches/RESULTS.md, heading
+/// "2026-11-28: CD with CMM, AMM and RMM in two chunks").
+pub const TWO_THREADS_FROM_NODES: usize = 500_000;
 
 impl MatrixMassStep {
     /// Set up with element stiffnesses, the mass operator, `u^0`, `v^{1/2}`, `a^0`, the residual
@@ -155,6 +165,7 @@ impl MatrixMassStep {
             avx2: has_avx2(),
             seam: None,
             threads: 1,
+            threads_from: TWO_THREADS_FROM_NODES,
         }
         .with_chunks_from(PARALLEL_FROM_NODES)
     }
@@ -323,12 +334,14 @@ impl MatrixMassStep {
             constant,
             seam: Some((seam, group1, local)),
             threads,
+            threads_from,
             ..
         } = self
         else {
             return;
         };
-        let at = (*seam, *threads);
+        let n = state.get(U).len();
+        let at = (*seam, if n >= *threads_from { *threads } else { 1 });
         match mass {
             MassOperator::Reciprocal { inverse, .. } => {
                 let matrix = (*dt, &inverse.diag[..], &inverse.off[..], &constant[..]);

@@ -178,6 +178,7 @@ fn chunked_step_gives_the_same_bits_on_one_thread_and_on_two() {
         let mut chunked = single.clone().with_chunks_from(0);
         let mut threaded = single.clone().with_chunks_from(0);
         threaded.set_threads(2);
+        threaded.threads_from = 0;
         let seam = chunked.seam.as_ref().expect("a seam").0.node;
         assert!(seam > n / 4 && seam < 3 * n / 4, "{kind:?}: seam {seam}");
         let forces = [
