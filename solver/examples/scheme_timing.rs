@@ -7,7 +7,8 @@
 //! per node-step and the median of the per-repetition ratios.
 //!
 //! With THREADS `1v2` each repetition runs the scheme on one thread, then on two (no lumped
-//! run), and prints both medians and the median of the per-repetition ratios one / two.
+//! run), and prints both medians and the medians of the per-repetition ratios one / two, of
+//! wall and of main-thread CPU times.
 //!
 //! ```text
 //! cargo run --release -p courant-solver --example scheme_timing -- N STEPS MASS SCHEME [REPS] [THREADS]
@@ -102,20 +103,27 @@ fn main() {
     if one_against_two {
         let mut two = other.clone();
         (other.threads, two.threads) = (Some(1), Some(2));
-        let (mut ones, mut twos, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
+        let (mut ones, mut twos, mut ratios, mut cpu_ratios) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
         for _ in 0..reps.max(1) {
-            let (a, _) = time_run(&model, &other, steps, &request);
-            let (b, _) = time_run(&model, &two, steps, &request);
+            let (a, a_cpu) = time_run(&model, &other, steps, &request);
+            let (b, b_cpu) = time_run(&model, &two, steps, &request);
             ones.push(a);
             twos.push(b);
             ratios.push(a / b);
+            cpu_ratios.push(a_cpu / b_cpu);
         }
         let per = |s: f64| s * 1e9 / ((n + 1) * steps) as f64;
+        // The main thread's CPU time on two threads is its chunk, what follows the join and the
+        // spawns (it waits for the other chunk without CPU): with two free cores and balanced
+        // chunks, about the run's time, so the CPU ratio estimates the speed-up a busy machine
+        // hides (an upper estimate: the threads' shared memory bandwidth is not in it).
         println!(
-            "N = {n}, {steps} steps: {scheme} {kind:?} {:.3} ns on one thread, {:.3} ns on two per node-step (wall), one / two {:.2} (medians of {} alternating)",
+            "N = {n}, {steps} steps: {scheme} {kind:?} {:.3} ns on one thread, {:.3} ns on two per node-step (wall), one / two {:.2} wall, {:.2} main-thread CPU (medians of {} alternating)",
             per(median(ones)),
             per(median(twos)),
             median(ratios),
+            median(cpu_ratios),
             reps.max(1)
         );
         return;

@@ -141,33 +141,39 @@ pub(crate) fn windowed<const AVX2: bool>(
         let (r0, r1) = r.split_at_mut(s);
         let (k0, k1) = (&k[..=s], &k[s..]);
         let buffers0 = &mut *buffers0;
+        // Each chunk sums into lanes of its own stack, stored once at its end (no cache line
+        // shared between the threads while they run).
         let chunk0 = move || {
-            let mut front = ResidualFront::default();
+            let (mut front, mut mine) = (ResidualFront::default(), EnergyLanes::default());
+            let l = &mut mine;
             for g in (0..seam.split).filter(|&g| first_phase(g)) {
-                front.advance::<AVX2>(tiles.rows_read(g), (dt, k0), (u0, v0), r0, loads0, l0);
+                front.advance::<AVX2>(tiles.rows_read(g), (dt, k0), (u0, v0), r0, loads0, l);
                 tiles.solve_group(g, r0, buffers0);
                 for (c, rows) in tiles.group_tiles(g) {
                     let solution = tiles.tile_solution(g, c, &rows, buffers0);
                     let (v, r) = (&mut v0[rows.clone()], &r0[rows]);
-                    velocity_lanes::<AVX2>(v, solution, r, dt, &mut l0.impulse);
+                    velocity_lanes::<AVX2>(v, solution, r, dt, &mut l.impulse);
                 }
             }
-            front.advance::<AVX2>(s - 1, (dt, k0), (u0, v0), r0, loads0, l0);
+            front.advance::<AVX2>(s - 1, (dt, k0), (u0, v0), r0, loads0, l);
+            *l0 = mine;
         };
         let chunk1 = move || {
-            let mut front = ResidualFront::from_row(1);
+            let (mut front, mut mine) = (ResidualFront::from_row(1), EnergyLanes::default());
+            let l = &mut mine;
             for g in (seam.split..groups).filter(|&g| first_phase(g)) {
                 let to = tiles.rows_read(g) - s;
-                front.advance::<AVX2>(to, (dt, k1), (u1, v1), r1, loads1, l1);
+                front.advance::<AVX2>(to, (dt, k1), (u1, v1), r1, loads1, l);
                 tiles.solve_group_at(g, r1, s, buffers1);
                 for (c, rows) in tiles.group_tiles(g) {
                     let solution = tiles.tile_solution(g, c, &rows, buffers1);
                     let local = rows.start - s..rows.end - s;
                     let (v, r) = (&mut v1[local.clone()], &r1[local]);
-                    velocity_lanes::<AVX2>(v, solution, r, dt, &mut l1.impulse);
+                    velocity_lanes::<AVX2>(v, solution, r, dt, &mut l.impulse);
                 }
             }
-            front.advance::<AVX2>(n - s, (dt, k1), (u1, v1), r1, loads1, l1);
+            front.advance::<AVX2>(n - s, (dt, k1), (u1, v1), r1, loads1, l);
+            *l1 = mine;
         };
         both(threads, chunk0, chunk1);
     }
@@ -210,26 +216,32 @@ pub(crate) fn reciprocal<const AVX2: bool>(
         // row ahead.
         let chunk0 = move || {
             let (mut front, mut v_done) = (ResidualFront::default(), 0);
+            let mut mine = EnergyLanes::default();
+            let l = &mut mine;
             while v_done < s - 2 {
                 let v_to = (v_done + BLOCK).min(s - 2);
-                front.advance::<AVX2>(v_to + 1, (dt, k0), (u0, v0), r0, loads0, l0);
+                front.advance::<AVX2>(v_to + 1, (dt, k0), (u0, v0), r0, loads0, l);
                 let coefficients = (diag0, off0, constant[v_done / BLOCK]);
                 let rows = (dt, (v_done, v_to));
-                reciprocal_velocity::<AVX2>(coefficients, r0, v0, rows, &mut l0.impulse);
+                reciprocal_velocity::<AVX2>(coefficients, r0, v0, rows, &mut l.impulse);
                 v_done = v_to;
             }
+            *l0 = mine;
         };
         // From row s + 2 (row s + 1 reads the seam row s), in the global blocks.
         let chunk1 = move || {
             let (mut front, mut v_done) = (ResidualFront::from_row(1), 2);
+            let mut mine = EnergyLanes::default();
+            let l = &mut mine;
             while v_done < n - s {
                 let v_to = ((v_done / BLOCK + 1) * BLOCK).min(n - s);
-                front.advance::<AVX2>(v_to + 1, (dt, k1), (u1, v1), r1, loads1, l1);
+                front.advance::<AVX2>(v_to + 1, (dt, k1), (u1, v1), r1, loads1, l);
                 let coefficients = (diag1, off1, constant[(s + v_done) / BLOCK]);
                 let rows = (dt, (v_done, v_to));
-                reciprocal_velocity::<AVX2>(coefficients, r1, v1, rows, &mut l1.impulse);
+                reciprocal_velocity::<AVX2>(coefficients, r1, v1, rows, &mut l.impulse);
                 v_done = v_to;
             }
+            *l1 = mine;
         };
         both(threads, chunk0, chunk1);
     }
