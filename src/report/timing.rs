@@ -64,12 +64,14 @@ pub fn timing_files(scenes: &[Scene], runs: &ReportRuns) -> Vec<(String, String)
             lumped CD kernel, one sweep per step, on the graded bar of 10^4 elements for 1000 steps, median \
             of 5): 1 would be a run that costs no more than its force evaluations at CD's rate; what a \
             scheme takes beyond is its other work per step (updates, solves) and the run's own (output, \
-            checks), so the comparison of schemes is one of methods, not of how fast each is written. \
-            The studies' runs share the machine's threads, the floor runs alone.\n\n";
+            checks), so the comparison of schemes is one of methods, not of how fast each is written \
+            (a lumped CD run, which takes blocks of steps, can go below 1). The studies' runs share the \
+            machine's threads and last 0.03-20 ms, so a preempted run reads several times too slow; the \
+            floor runs alone.\n\n";
     tmd += &match floor {
         Some(t_f) => format!(
-            "t_f = {:.3} ns per element force evaluation. Per study and method, the median over its runs \
-             on the two finest meshes:\n\n",
+            "t_f = {:.3} ns per element force evaluation. Per study and method, the median and the least \
+             over its runs (the least: the run the machine disturbed least):\n\n",
             t_f * 1e9
         ),
         None => "No floor measured (scenes only).\n\n".into(),

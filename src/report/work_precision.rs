@@ -71,8 +71,8 @@ pub fn section(work: &[Vec<WorkPoint>]) -> Page {
          of CPU times is one of methods, `timing.md` states each run's time over its force-evaluation \
          floor (`time_over_floor`): its wall time over K u per step x elements x steps x t_f, t_f the time \
          of one lumped element force evaluation measured in the same report run (the lumped CD kernel on a \
-         graded bar of 10^4 elements, median of 5); per scheme, the median on each study's two finest \
-         meshes."
+         graded bar of 10^4 elements, median of 5); per scheme, the median and the least over its \
+         runs."
             .into(),
     ));
     page

@@ -1,7 +1,7 @@
 //! The force-evaluation floor of the work-precision runs: the measured time of one lumped
 //! element force evaluation, so that each run's wall time can be stated as a multiple of what its
 //! element force evaluations cost at the fastest kernel's rate (the timing page's
-//! `time_over_floor`; docs/guide/report.md, "Work and precision").
+//! `time_over_floor`; docs/guide/report.md, the timing files).
 //!
 //! ```text
 //!   t_f   = median over 5 repeats of  T(S steps of the lumped CD kernel) / (N S)
