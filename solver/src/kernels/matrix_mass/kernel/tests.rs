@@ -3,12 +3,41 @@
 use super::*;
 use crate::mass::MassKind;
 use crate::mass::windows::{MAX_TILE, WINDOWS_PER_GROUP, tile_rows};
-use crate::{Support, Supports};
+use crate::model::{Bar, Field, Mesh, Model, Support, Supports};
 
-/// The graded seed bar of `n` elements with the given supports.
+/// The step of `fixtures::matrix_step` (built here from the layers below the kernels): the graded
+/// seed bar of `n` elements (modulus 16 to 1) with the given supports, at half the mass's
+/// critical Courant number, at rest in `u` and `r` with `v^{1/2} = 1e-3 cos(pi x / 2)` (0 at the
+/// last node, `fixtures::smooth_half_velocity`).
 fn matrix_kernel(n: usize, kind: MassKind, supports: Supports) -> MatrixMassStep {
-    let bar = crate::fixtures::graded_bar(n).unwrap();
-    crate::fixtures::matrix_step(&crate::Model::unloaded(bar, supports), kind).unwrap()
+    let modulus = Field::Linear {
+        left: 16.0,
+        right: 1.0,
+    };
+    let one = Field::Constant(1.0);
+    let bar = Bar::new(Mesh::uniform(1.0, n).unwrap(), &modulus, &one, &one).unwrap();
+    let model = Model::unloaded(bar, supports);
+    let dt = 0.5 * kind.critical_courant() * model.bar().stiffest_element().1;
+    let mass = MassOperator::new(&model, kind).unwrap();
+    let v_half: Vec<f64> = (0..=n)
+        .map(|i| {
+            let x = i as f64 / n as f64;
+            if i == n {
+                0.0
+            } else {
+                1e-3 * (std::f64::consts::FRAC_PI_2 * x).cos()
+            }
+        })
+        .collect();
+    let zeros = vec![0.0; n + 1];
+    let start = StartState {
+        displacement: &zeros,
+        half_step_velocity: &v_half,
+        acceleration: &zeros,
+        residual: &zeros,
+        kinetic_staggered: 0.0,
+    };
+    MatrixMassStep::new(dt, model.stiffness(), mass, &start)
 }
 
 #[test]
