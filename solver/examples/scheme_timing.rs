@@ -6,10 +6,14 @@
 //! repetition runs lumped CD, then the scheme; prints both medians over REPS repetitions in ns
 //! per node-step and the median of the per-repetition ratios.
 //!
+//! With THREADS `1v2` each repetition runs the scheme on one thread, then on two (no lumped
+//! run), and prints both medians and the medians of the per-repetition ratios one / two, of
+//! wall and of main-thread CPU times.
+//!
 //! ```text
 //! cargo run --release -p courant-solver --example scheme_timing -- N STEPS MASS SCHEME [REPS] [THREADS]
 //!   MASS: cmm | amm | rmm | lmm; SCHEME: cd | noh-bathe | park-lts | park-global; REPS: 5;
-//!   THREADS: 1 (both runs)
+//!   THREADS: 1 (both runs), or 1v2
 //! ```
 
 use courant_solver::integrator::OutputRequest;
@@ -66,8 +70,10 @@ fn main() {
     let (n, steps, kind, scheme) = harness::arguments(100_000, 400);
     let args: Vec<String> = std::env::args().collect();
     let reps = args.get(5).map_or(5, |s| harness::whole_number("REPS", s));
+    let one_against_two = args.get(6).is_some_and(|s| s == "1v2");
     let threads = args
         .get(6)
+        .filter(|_| !one_against_two)
         .map_or(1, |s| harness::whole_number("THREADS", s));
     let scheme = scheme.unwrap_or_else(|| "noh-bathe".into());
     let model = courant_solver::bench::graded_seed_bar(n).expect("bar");
@@ -94,6 +100,34 @@ fn main() {
         }
     };
     let mut lumped = lumped;
+    if one_against_two {
+        let mut two = other.clone();
+        (other.threads, two.threads) = (Some(1), Some(2));
+        let (mut ones, mut twos, mut ratios, mut cpu_ratios) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        for _ in 0..reps.max(1) {
+            let (a, a_cpu) = time_run(&model, &other, steps, &request);
+            let (b, b_cpu) = time_run(&model, &two, steps, &request);
+            ones.push(a);
+            twos.push(b);
+            ratios.push(a / b);
+            cpu_ratios.push(a_cpu / b_cpu);
+        }
+        let per = |s: f64| s * 1e9 / ((n + 1) * steps) as f64;
+        // The main thread's CPU time on two threads is its chunk, what follows the join and the
+        // spawns (it waits for the other chunk without CPU): with two free cores and balanced
+        // chunks, about the run's time, so the CPU ratio estimates the speed-up a busy machine
+        // hides (an upper estimate: the threads' shared memory bandwidth is not in it).
+        println!(
+            "N = {n}, {steps} steps: {scheme} {kind:?} {:.3} ns on one thread, {:.3} ns on two per node-step (wall), one / two {:.2} wall, {:.2} main-thread CPU (medians of {} alternating)",
+            per(median(ones)),
+            per(median(twos)),
+            median(ratios),
+            median(cpu_ratios),
+            reps.max(1)
+        );
+        return;
+    }
     lumped.threads = Some(threads);
     other.threads = Some(threads);
     let (mut base, mut times, mut ratios, mut cpu_ratios) =

@@ -17,5 +17,5 @@ pub use crate::fixtures::{
 pub use crate::kernels::lumped::{
     DEPTH, LumpedStep, MAX_BLOCK_STEPS, PARALLEL_FROM_NODES, StepBlock, TILE,
 };
-pub use crate::kernels::matrix_mass::{MatrixMassStep, StartState};
+pub use crate::kernels::matrix_mass::{MatrixMassStep, StartState, TWO_THREADS_FROM_NODES};
 pub use crate::kernels::park::ParkStep;

@@ -54,7 +54,7 @@ pub use integrator::{
     Integration, LimitKind, OutputRequest, Scheme, SchemeEntry, SchemeLimit, StabilityPolicy, Start,
 };
 pub use kernels::park::{ParkOptions, ParkVariant};
-pub use mass::{MassKind, MassOperator};
+pub use mass::{MassKind, MassOperator, MassWork};
 pub use model::{
     Bar, End, Field, InitialConditions, Load, Mesh, Model, NodalLoad, Support, Supports,
     TimeFunction,

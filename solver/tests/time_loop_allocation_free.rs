@@ -9,11 +9,13 @@
 //! Proves: one step of lumped CD (and a block of its steps on one thread; on two threads a
 //! block allocates a fixed few buffers and its thread, never per step), of CD with each
 //! non-diagonal mass (CMM, AMM: partitioned tridiagonal solve, and windows on a long bar; RMM:
-//! product with M^-1; with a node's acceleration and T* recomputed from the mass), of
+//! product with M^-1; with a node's acceleration and T* recomputed from the mass; on a bar of two
+//! chunks, none on one thread and only its thread per step on two), of
 //! Park's scheme (global and local stepping,
 //! both variants), and of the Noh-Bathe stepper with every mass (the lumped one in its one-sweep
 //! step over chunks of the bar, several chunks here; stepped through the public `Integrator`
-//! interface, as the shared time loop steps it) performs exactly zero heap allocations, counted
+//! interface, as the shared time loop steps it; the matrix masses also on a bar long enough for
+//! their windowed solves) performs exactly zero heap allocations, counted
 //! by a global allocator wrapper.
 
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -22,7 +24,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use courant_solver::bench::LumpedStep;
 use courant_solver::bench::ParkStep;
 use courant_solver::bench::graded_seed_bar;
-use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock, TILE};
+use courant_solver::bench::{MAX_BLOCK_STEPS, StepBlock, TILE, TWO_THREADS_FROM_NODES};
 use courant_solver::bench::{MatrixMassStep, StartState};
 use courant_solver::integrator::{InitialState, Integrator};
 use courant_solver::schemes::noh_bathe::NohBatheStepper;
@@ -49,7 +51,8 @@ unsafe impl GlobalAlloc for Counting {
 }
 
 /// Most allocations a block of steps on two threads may make: the pipeline's three vectors and
-/// what `std::thread::scope` and one spawned thread allocate.
+/// what `std::thread::scope` and one spawned thread allocate (a matrix-mass step in two chunks:
+/// the thread alone).
 const PIPELINE_ALLOCATIONS: usize = 16;
 
 #[global_allocator]
@@ -168,6 +171,41 @@ fn every_time_stepping_kernel_steps_without_allocating() {
         assert!(kernel.displacement().iter().all(|u| u.is_finite()));
     }
 
+    // A bar long enough for the matrix-mass step to run in two fixed chunks on two threads: none
+    // on one thread; on two, only the scoped thread each step spawns, never per node.
+    let chunked = graded_seed_bar(TWO_THREADS_FROM_NODES).unwrap();
+    let element_dt = chunked.bar().stiffest_element().1;
+    for kind in [MassKind::Consistent, MassKind::Reciprocal { beta: 0.5 }] {
+        let zeros = vec![0.0; TWO_THREADS_FROM_NODES + 1];
+        let start = StartState {
+            displacement: &zeros,
+            half_step_velocity: &zeros,
+            acceleration: &zeros,
+            residual: &zeros,
+            kinetic_staggered: 0.0,
+        };
+        let operator = MassOperator::new(&chunked, kind).unwrap();
+        let dt = 0.5 * kind.critical_courant() * element_dt;
+        let mut kernel = MatrixMassStep::new(dt, chunked.stiffness(), operator, &start);
+        assert_eq!(
+            allocations_during(20, || {
+                std::hint::black_box(kernel.step_with_energy(&forces));
+            }),
+            0,
+            "{}, two chunks on one thread",
+            kind.label()
+        );
+        kernel.set_threads(2);
+        let per_step = allocations_during(20, || {
+            std::hint::black_box(kernel.step_with_energy(&forces));
+        }) / 20;
+        assert!(
+            (1..=PIPELINE_ALLOCATIONS).contains(&per_step),
+            "{}: {per_step} allocations per step on two threads",
+            kind.label()
+        );
+    }
+
     for local_stepping in [false, true] {
         for variant in [ParkVariant::Free, ParkVariant::Incremental] {
             let options = ParkOptions {
@@ -192,16 +230,23 @@ fn every_time_stepping_kernel_steps_without_allocating() {
         }
     }
 
-    for kind in [
-        MassKind::Lumped,
-        MassKind::Consistent,
-        MassKind::Averaged { beta: 0.5 },
-        MassKind::Reciprocal { beta: 0.5 },
+    // Every mass on the 1000-element bar, and the matrix masses on the long bar too, where
+    // their solves run in windows.
+    for (model, kind) in [
+        (&model, MassKind::Lumped),
+        (&model, MassKind::Consistent),
+        (&model, MassKind::Averaged { beta: 0.5 }),
+        (&model, MassKind::Reciprocal { beta: 0.5 }),
+        (&long, MassKind::Consistent),
+        (&long, MassKind::Averaged { beta: 0.5 }),
+        (&long, MassKind::Reciprocal { beta: 0.5 }),
     ] {
+        let n = model.bar().element_count();
+        let element_dt = model.bar().stiffest_element().1;
         let zeros = vec![0.0; n + 1];
         let dt = 0.5 * kind.critical_courant() * element_dt;
         let state = InitialState {
-            model: &model,
+            model,
             dt,
             displacement: &zeros,
             velocity: &zeros,
@@ -210,18 +255,18 @@ fn every_time_stepping_kernel_steps_without_allocating() {
             kinetic: 0.0,
             start: Start::HalfStep,
             allow_unstable: false,
-            mass: MassOperator::new(&model, kind).unwrap(),
+            mass: MassOperator::new(model, kind).unwrap(),
             threads: 1,
         };
         let mut stepper = NohBatheStepper::start(&0.54, state).unwrap();
         let mut t = 0.0;
         assert_eq!(
             allocations_during(200, || {
-                std::hint::black_box(stepper.step(&model, t, &forces));
+                std::hint::black_box(stepper.step(model, t, &forces));
                 t += dt;
             }),
             0,
-            "noh-bathe {}",
+            "noh-bathe {}, {n} elements",
             kind.label()
         );
         assert!(stepper.displacement().iter().all(|u| u.is_finite()));

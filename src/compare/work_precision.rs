@@ -77,9 +77,32 @@ pub fn table(points: &[WorkPoint]) -> Table {
     t
 }
 
-/// `study, method, Co, N, steps, l1, wall_time_s` of every study's runs (machine-dependent).
-pub fn cpu_table(studies: &[WorkPrecisionStudy], work: &[Vec<WorkPoint>]) -> Table {
-    let mut t = Table::new(&["study", "method", "Co", "N", "steps", "l1", "wall_time_s"]);
+/// The run's wall time over its force-evaluation floor, `wall_time / (element force evaluations
+/// x t_f)` with `t_f` the measured seconds of one lumped element force evaluation
+/// (`crate::run::force_floor`): how many times the cost of its `K u` products at the fastest
+/// kernel's rate the run took. `None` without a floor or a time.
+pub fn time_over_floor(p: &WorkPoint, element_force_seconds: Option<f64>) -> Option<f64> {
+    let floor = element_force_seconds? * p.element_force_evaluations() as f64;
+    (floor > 0.0 && p.wall_time > 0.0).then(|| p.wall_time / floor)
+}
+
+/// `study, method, Co, N, steps, l1, wall_time_s, time_over_floor` of every study's runs
+/// (machine-dependent; [`time_over_floor`], empty without a floor).
+pub fn cpu_table(
+    studies: &[WorkPrecisionStudy],
+    work: &[Vec<WorkPoint>],
+    element_force_seconds: Option<f64>,
+) -> Table {
+    let mut t = Table::new(&[
+        "study",
+        "method",
+        "Co",
+        "N",
+        "steps",
+        "l1",
+        "wall_time_s",
+        "time_over_floor",
+    ]);
     for (study, points) in studies.iter().zip(work) {
         for p in points {
             t.push(vec![
@@ -90,6 +113,53 @@ pub fn cpu_table(studies: &[WorkPrecisionStudy], work: &[Vec<WorkPoint>]) -> Tab
                 p.steps.into(),
                 p.l1.into(),
                 p.wall_time.into(),
+                time_over_floor(p, element_force_seconds).map_or_else(|| "".into(), Into::into),
+            ]);
+        }
+    }
+    t
+}
+
+/// Per study and method, the median and the least [`time_over_floor`] over its runs (every
+/// mesh; the least is the run a busy machine disturbed least, since preemption only adds time):
+/// `study, method, runs, median_time_over_floor, least_time_over_floor`.
+pub fn floor_table(
+    studies: &[WorkPrecisionStudy],
+    work: &[Vec<WorkPoint>],
+    element_force_seconds: Option<f64>,
+) -> Table {
+    let mut t = Table::new(&[
+        "study",
+        "method",
+        "runs",
+        "median_time_over_floor",
+        "least_time_over_floor",
+    ]);
+    for (study, points) in studies.iter().zip(work) {
+        let mut labels: Vec<String> = Vec::new();
+        for p in points {
+            if !labels.contains(&p.label()) {
+                labels.push(p.label());
+            }
+        }
+        for label in labels {
+            let mut ratios: Vec<f64> = points
+                .iter()
+                .filter(|p| p.label() == label)
+                .filter_map(|p| time_over_floor(p, element_force_seconds))
+                .collect();
+            if ratios.is_empty() {
+                continue;
+            }
+            ratios.sort_by(f64::total_cmp);
+            let m = ratios.len();
+            let median = 0.5 * (ratios[(m - 1) / 2] + ratios[m / 2]);
+            t.push(vec![
+                study.name.into(),
+                label.into(),
+                m.into(),
+                median.into(),
+                ratios[0].into(),
             ]);
         }
     }

@@ -67,7 +67,12 @@ pub fn section(work: &[Vec<WorkPoint>]) -> Page {
          benchmark table in `timing.md` gives ns per node-step of each integrator (`cargo bench`), and the CPU \
          times of these runs are there too. The third figure of each study counts element force \
          evaluations (elements x steps x K u per step: one for CD and the contact schemes, two for Park \
-         and Noh-Bathe), the work that does not depend on how fast a kernel is written."
+         and Noh-Bathe), the work that does not depend on how fast a kernel is written. So that a comparison \
+         of CPU times is one of methods, `timing.md` states each run's time over its force-evaluation \
+         floor (`time_over_floor`): its wall time over K u per step x elements x steps x t_f, t_f the time \
+         of one lumped element force evaluation measured in the same report run (the lumped CD kernel on a \
+         graded bar of 10^4 elements, median of 5); per scheme, the median and the least over its \
+         runs."
             .into(),
     ));
     page

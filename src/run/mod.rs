@@ -9,13 +9,16 @@
 //! - [`contact`], [`spectrum`], [`dispersion`], [`sweep`]: contact impacts, dense spectra,
 //!   single-mode phase measurements, critical Courant numbers of contact-active systems;
 //! - [`scene`]: every case of a scene, in parallel, records in case order;
-//! - [`threads`]: the thread setting (`COURANT_THREADS`) every run takes.
+//! - [`threads`]: the thread setting (`COURANT_THREADS`) every run takes;
+//! - [`force_floor`]: the measured time of one lumped element force evaluation, the floor the
+//!   timing page states each work-precision run's time against.
 //!
 //! Enters: validated cases (`scene`). Leaves: records (`results`), with what each run cost.
 //! Must not know: references, norms, expectations, verdicts, tables, reports.
 
 pub mod contact;
 pub mod dispersion;
+pub mod force_floor;
 pub mod scene;
 pub mod spectrum;
 pub mod stepping;

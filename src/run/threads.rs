@@ -41,7 +41,7 @@ pub fn from_environment() -> Result<Option<usize>, String> {
         Ok(text) => match text.trim().parse::<usize>() {
             Ok(threads) if threads > 0 => Ok(Some(threads)),
             _ => Err(format!(
-                "COURANT_THREADS: {text:?} must be a positive integer (the threads of a lumped run of 1e5 nodes or more; unset: every core)"
+                "COURANT_THREADS: {text:?} must be a positive integer (the threads of a central-difference run of 1e5 nodes or more; unset: every core)"
             )),
         },
         Err(std::env::VarError::NotUnicode(_)) => {

@@ -114,7 +114,24 @@ fn report_has_sections_tables_and_deterministic_content() {
         .find(|f| f.0 == "timing.work_precision.csv")
         .unwrap()
         .1;
-    assert!(cpu.starts_with("study,method,Co,N,steps,l1,wall_time_s\n"));
+    assert!(cpu.starts_with("study,method,Co,N,steps,l1,wall_time_s,time_over_floor\n"));
+    // The force-evaluation floor (docs/guide/report.md): measured in this run, so every timed
+    // run states its time over it, a positive number.
+    for line in cpu.lines().skip(1) {
+        let ratio: f64 = line.rsplit(',').next().unwrap().parse().unwrap();
+        assert!(
+            ratio > 0.0 && ratio.is_finite(),
+            "time_over_floor of {line}"
+        );
+    }
+    let timing = &a.files.iter().find(|f| f.0 == "timing.md").unwrap().1;
+    assert!(
+        timing.contains("## Time over the force-evaluation floor") && timing.contains("t_f = ")
+    );
+    assert!(
+        index.contains("force-evaluation floor"),
+        "index.md defines the floor"
+    );
     assert!(
         cpu.contains("fig5_contact,lagrange-multiplier,")
             && cpu.contains("fig5_contact,cd-penalty-bs2500,"),

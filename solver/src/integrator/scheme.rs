@@ -30,7 +30,8 @@ pub struct RunSetup<'a> {
     pub steps: usize,
     /// What to record.
     pub request: &'a OutputRequest,
-    /// The threads a stepper's blocks of steps may use ([`Integration::threads`]).
+    /// The threads a stepper may use ([`Integration::threads`]: blocks of steps, chunks of a
+    /// long bar).
     pub threads: usize,
 }
 
@@ -65,10 +66,17 @@ pub trait Scheme: std::fmt::Debug + Send + Sync {
 
     /// Whether a run of this scheme with `mass` takes blocks of steps
     /// ([`super::time_loop::run_in_blocks`]: lumped central difference, when the run must stay
-    /// stable), the only runs that use several threads ([`Integration::threads`]).
+    /// stable), which may use several threads ([`Integration::threads`]).
     fn takes_blocks(&self, mass: MassKind, allow_unstable: bool) -> bool {
         let _ = (mass, allow_unstable);
         false
+    }
+
+    /// Whether a run of this scheme with `mass` may use several threads on a long bar
+    /// ([`Integration::threads`]): the runs that take blocks of steps, and any other whose steps
+    /// split a long bar into fixed chunks (central difference with a matrix mass).
+    fn uses_threads(&self, mass: MassKind, allow_unstable: bool) -> bool {
+        self.takes_blocks(mass, allow_unstable)
     }
 }
 
@@ -86,7 +94,7 @@ pub struct Integration {
     pub stability: StabilityPolicy,
     /// The scheme.
     pub scheme: Arc<dyn Scheme>,
-    /// The threads a run that takes blocks of steps ([`Scheme::takes_blocks`]) uses on a bar of
+    /// The threads a run that may use several ([`Scheme::uses_threads`]) uses on a bar of
     /// [`PARALLEL_FROM_NODES`] nodes or more: `None` for every core the process may use
     /// (`std::thread::available_parallelism`). A setting of the run, not of the process: the
     /// `courant` binary resolves `COURANT_THREADS` once and sets it here. The results do not
@@ -107,15 +115,15 @@ impl Integration {
         }
     }
 
-    /// Threads a run with these settings uses on `model`: 1 unless it takes blocks of steps
-    /// ([`Scheme::takes_blocks`]) on a bar of [`PARALLEL_FROM_NODES`] nodes or more, then
+    /// Threads a run with these settings uses on `model`: 1 unless it may use several
+    /// ([`Scheme::uses_threads`]) on a bar of [`PARALLEL_FROM_NODES`] nodes or more, then
     /// [`Integration::threads`] (every core the process may use if unset). A caller running
     /// several cases at once runs the multi-threaded ones one at a time.
     pub fn threads(&self, model: &Model) -> usize {
-        let blocks = self
+        let parallel = self
             .scheme
-            .takes_blocks(self.mass, self.stability.allow_unstable);
-        if !blocks || model.bar().node_count() < PARALLEL_FROM_NODES {
+            .uses_threads(self.mass, self.stability.allow_unstable);
+        if !parallel || model.bar().node_count() < PARALLEL_FROM_NODES {
             return 1;
         }
         self.threads

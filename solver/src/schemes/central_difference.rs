@@ -66,6 +66,12 @@ impl Scheme for CentralDifferenceScheme {
         time_loop::takes_blocks(mass == MassKind::Lumped, allow_unstable)
     }
 
+    /// Lumped: in blocks of steps; a matrix mass: the step of a long bar in two fixed chunks
+    /// (`kernels::matrix_mass::chunks`, CMM/AMM with windows and RMM).
+    fn uses_threads(&self, mass: MassKind, allow_unstable: bool) -> bool {
+        mass != MassKind::Lumped || self.takes_blocks(mass, allow_unstable)
+    }
+
     fn run(&self, setup: RunSetup<'_>) -> Result<RunOutput, RunError> {
         match setup.mass {
             MassOperator::Diagonal { .. } => time_loop::run_in_blocks::<LumpedStepper>(&(), setup),
@@ -179,7 +185,9 @@ impl CentralDifferenceKernel for MatrixMassStep {
             residual: state.residual,
             kinetic_staggered: staggered0,
         };
-        Self::new(state.dt, state.model.stiffness(), state.mass, &start)
+        let mut kernel = Self::new(state.dt, state.model.stiffness(), state.mass, &start);
+        kernel.set_threads(state.threads);
+        kernel
     }
     fn dt(&self) -> f64 {
         self.dt()

@@ -60,7 +60,7 @@ use crate::integrator::{
 };
 use crate::kernels::energy::StepEnergy;
 use crate::kernels::noh_bathe::{LumpedNohBathe, NohBatheArrays};
-use crate::mass::{MassKind, MassOperator};
+use crate::mass::{MassKind, MassOperator, MassWork};
 use crate::model::Model;
 use crate::output::RunOutput;
 use std::sync::Arc;
@@ -170,6 +170,8 @@ pub struct NohBatheStepper {
     /// `a0..a7` of the update (module docs): `h1, h1^2/2, h1/2, h2, h2^2/2, h2 w0, h2 w1, h2 w2`.
     c: [f64; 8],
     mass: MassOperator,
+    /// The work arrays of its windowed solves, if it has them (a step allocates nothing).
+    work: MassWork,
     /// The one-sweep step of the lumped mass (`None` for the matrix masses, which step pass
     /// by pass through the arrays below, empty for the lumped mass).
     lumped: Option<LumpedNohBathe>,
@@ -249,6 +251,7 @@ impl Integrator for NohBatheStepper {
             dt,
             h1,
             c,
+            work: state.mass.work(),
             mass: state.mass,
             lumped: lumped.then(|| LumpedNohBathe::new(c)),
             stiffness,
@@ -311,7 +314,8 @@ impl Integrator for NohBatheStepper {
         }
         self.residual_of_displacement(&mid);
         self.mid_forces = mid;
-        self.mass.apply_inverse(&self.residual, &mut self.a_mid);
+        self.mass
+            .apply_inverse_with(&self.residual, &mut self.a_mid, &mut self.work);
         // v <- v_p; sub-step 2: u <- u_n, a_n = M^-1 (F(t + dt) - K u_n).
         for (((u, v), a), am) in self
             .u
@@ -324,7 +328,8 @@ impl Integrator for NohBatheStepper {
             *u += c3 * *v + c4 * am;
         }
         let strain = self.residual_of_displacement(forces);
-        self.mass.apply_inverse(&self.residual, &mut self.a_next);
+        self.mass
+            .apply_inverse_with(&self.residual, &mut self.a_next, &mut self.work);
         for (((v, a), am), an) in self
             .v
             .iter_mut()
@@ -340,7 +345,7 @@ impl Integrator for NohBatheStepper {
         let twice_kinetic = match &self.mass {
             MassOperator::Diagonal { mass, .. } => dot(&self.v, mass, Some(&self.v)),
             operator => {
-                operator.apply(&self.v, &mut self.scratch);
+                operator.apply_with(&self.v, &mut self.scratch, &mut self.work);
                 dot(&self.v, &self.scratch, None)
             }
         };

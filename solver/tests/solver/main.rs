@@ -14,6 +14,7 @@ mod contact_momentum_and_outputs;
 mod contact_schemes_match_dense_reference;
 mod critical_step_against_dense_eigen;
 mod integrator_interface_external_scheme;
+mod matrix_mass_thread_bit_identity;
 mod noh_bathe_amplification;
 mod noh_bathe_convergence_and_stability;
 mod noh_bathe_step_loaded_bar;

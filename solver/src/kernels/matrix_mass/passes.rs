@@ -272,6 +272,16 @@ pub(crate) struct ResidualFront {
 }
 
 impl ResidualFront {
+    /// A front whose residual starts at row `row` (`u` at node 0): a chunk of the bar whose
+    /// rows before `row` are formed elsewhere ([`crate::kernels::matrix_mass::chunks`]).
+    pub(crate) fn from_row(row: usize) -> Self {
+        Self {
+            u_done: 0,
+            r_done: row,
+            next_load: 0,
+        }
+    }
+
     /// Advance the residual to row `to` (or the end) in blocks of at most [`BLOCK`] rows, `u`
     /// one node ahead of it (its element forces are formed in registers). Where the blocks
     /// end changes no bit: every row is formed alike and adds to its own lanes in row order.

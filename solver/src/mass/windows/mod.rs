@@ -334,14 +334,34 @@ impl HaloTiles {
     /// the portable loops otherwise: the same bits. Afterwards [`Self::tile_solution`] gives
     /// each tile's rows.
     pub(crate) fn solve_group(&self, g: usize, r: &[f64], buffers: &mut GroupBuffers) {
+        self.solve_group_at(g, r, 0, buffers);
+    }
+
+    /// The first row of the right-hand side that group `g` reads.
+    pub(crate) fn first_row_read(&self, g: usize) -> usize {
+        let starts = &self.starts[g * WINDOWS_PER_GROUP..(g + 1) * WINDOWS_PER_GROUP];
+        starts.iter().copied().min().unwrap_or(0)
+    }
+
+    /// [`Self::solve_group`] with `r` holding the rows from `offset` on (`offset` at most
+    /// [`Self::first_row_read`]): the same values enter the same operations, the same bits.
+    pub(crate) fn solve_group_at(
+        &self,
+        g: usize,
+        r: &[f64],
+        offset: usize,
+        buffers: &mut GroupBuffers,
+    ) {
         let window = self.window;
-        let starts: &[usize; WINDOWS_PER_GROUP] = self.starts
-            [g * WINDOWS_PER_GROUP..(g + 1) * WINDOWS_PER_GROUP]
-            .try_into()
-            .expect("WINDOWS_PER_GROUP starts per group");
+        let starts: [usize; WINDOWS_PER_GROUP] =
+            std::array::from_fn(|c| self.starts[g * WINDOWS_PER_GROUP + c] - offset);
+        let starts = &starts;
         let factors = self.factors(g);
         let lowest = self.lowest[g];
-        assert!(r.len() >= self.rows_read(g) && buffers.rows.len() == window * WINDOWS_PER_GROUP);
+        assert!(
+            r.len() + offset >= self.rows_read(g)
+                && buffers.rows.len() == window * WINDOWS_PER_GROUP
+        );
         assert!(buffers.solution.len() == WINDOWS_PER_GROUP * window && window.is_multiple_of(4));
         let (input, extent) = ((factors, starts, r), (window, lowest));
         let output = [&mut buffers.rows[..], &mut buffers.solution[..]];
@@ -381,7 +401,17 @@ impl HaloTiles {
     pub fn solve_in_place(&self, x: &mut [f64]) {
         assert_eq!(x.len(), self.n, "right-hand side of the wrong length");
         let r = x.to_vec();
-        self.for_each_tile(&r, &mut self.buffers(), |rows, solution| {
+        self.solve_into(&r, x, &mut self.buffers());
+    }
+
+    /// `x = M^-1 r` (`+0` at the fixed rows) with the work arrays `buffers` (from
+    /// [`Self::buffers`]): [`Self::solve_in_place`]'s arithmetic without allocating.
+    pub(crate) fn solve_into(&self, r: &[f64], x: &mut [f64], buffers: &mut GroupBuffers) {
+        assert!(
+            r.len() == self.n && x.len() == self.n,
+            "vectors of the wrong length"
+        );
+        self.for_each_tile(r, buffers, |rows, solution| {
             x[rows].copy_from_slice(solution)
         });
     }

@@ -33,6 +33,8 @@
 //! against the lumped step".
 
 use crate::kernels::energy::StepEnergy;
+use crate::kernels::lumped::kernel::PARALLEL_FROM_NODES;
+use crate::kernels::matrix_mass::chunks::{self, Chunks, seam_of};
 #[cfg(test)]
 use crate::kernels::matrix_mass::passes::lane_sums;
 use crate::kernels::matrix_mass::passes::{
@@ -96,7 +98,22 @@ pub struct MatrixMassStep {
     staggered: f64,
     /// Whether the CPU has AVX2 (the blocked step then runs its AVX2-compiled copy).
     avx2: bool,
+    /// Where a long bar is cut into two chunks of nodes ([`chunks`]; fixed by the bar and the
+    /// mass, not by the thread count), with the second chunk's group buffers and its loads.
+    seam: Option<Chunks>,
+    /// Threads the chunks run on (1 or 2: the same bits).
+    threads: usize,
+    /// Nodes from which the chunks take a second thread when `threads` allows
+    /// ([`TWO_THREADS_FROM_NODES`]; below, both on the calling thread: the same bits).
+    threads_from: usize,
 }
+
+/// Nodes from which a matrix-mass step in two chunks runs them on two threads (when its run
+/// has two): a step spawns its second thread, so a step must be long against a spawn and the
+/// wait for a core. At 1e5 nodes (a step of about 0.1-0.2 ms) two threads took twice as long as
+/// one on a busy machine, at 1e6 0.8-1.3 times as long (benches/RESULTS.md, heading
+/// "2026-11-28: CD with CMM, AMM and RMM in two chunks").
+pub const TWO_THREADS_FROM_NODES: usize = 500_000;
 
 impl MatrixMassStep {
     /// Set up with element stiffnesses, the mass operator, `u^0`, `v^{1/2}`, `a^0`, the residual
@@ -146,7 +163,31 @@ impl MatrixMassStep {
             scratch: vec![0.0; n],
             staggered: staggered0,
             avx2: has_avx2(),
+            seam: None,
+            threads: 1,
+            threads_from: TWO_THREADS_FROM_NODES,
         }
+        .with_chunks_from(PARALLEL_FROM_NODES)
+    }
+
+    /// Cut the bar into two chunks ([`chunks`]) if it has `from_nodes` nodes or more and its mass
+    /// has a seam (CMM/AMM with windows, RMM); one chunk otherwise.
+    pub(crate) fn with_chunks_from(mut self, from_nodes: usize) -> Self {
+        let n = self.state.get(U).len();
+        self.seam = seam_of(&self.mass, n, from_nodes).map(|seam| {
+            let buffers = self
+                .mass
+                .windows()
+                .map_or_else(GroupBuffers::default, |t| t.buffers());
+            (seam, buffers, Vec::with_capacity(16))
+        });
+        self
+    }
+
+    /// Run the chunks of a long bar on `threads` threads (at most 2 are used; the same bits
+    /// whatever the count).
+    pub fn set_threads(&mut self, threads: usize) {
+        self.threads = threads.max(1);
     }
 
     /// Time step.
@@ -265,7 +306,9 @@ impl MatrixMassStep {
     #[inline(always)]
     fn blocked_step<const AVX2: bool>(&mut self, forces: &[(usize, f64)]) -> StepEnergy {
         let mut lanes = EnergyLanes::default();
-        if matches!(self.mass, MassOperator::Reciprocal { .. }) {
+        if self.seam.is_some() {
+            self.chunked_step::<AVX2>(forces, &mut lanes);
+        } else if matches!(self.mass, MassOperator::Reciprocal { .. }) {
             self.reciprocal_blocks::<AVX2>(forces, &mut lanes);
         } else {
             self.solved_step::<AVX2>(forces, &mut lanes);
@@ -277,6 +320,41 @@ impl MatrixMassStep {
             kinetic_staggered: self.staggered,
             kinetic: self.staggered + 0.125 * dt * dt * total(lanes.impulse),
             strain: 0.5 * total(lanes.strain),
+        }
+    }
+
+    /// The step of a bar in two chunks ([`chunks`]).
+    #[inline(always)]
+    fn chunked_step<const AVX2: bool>(&mut self, forces: &[(usize, f64)], lanes: &mut EnergyLanes) {
+        let Self {
+            dt,
+            state,
+            mass,
+            group,
+            constant,
+            seam: Some((seam, group1, local)),
+            threads,
+            threads_from,
+            ..
+        } = self
+        else {
+            return;
+        };
+        let n = state.get(U).len();
+        let at = (*seam, if n >= *threads_from { *threads } else { 1 });
+        match mass {
+            MassOperator::Reciprocal { inverse, .. } => {
+                let matrix = (*dt, &inverse.diag[..], &inverse.off[..], &constant[..]);
+                chunks::reciprocal::<AVX2>(at, matrix, state.split_mut(), forces, local, lanes);
+            }
+            mass => {
+                let Some(tiles) = mass.windows() else {
+                    return;
+                };
+                let buffers = [group, group1];
+                let arrays = state.split_mut();
+                chunks::windowed::<AVX2>(at, (*dt, tiles), arrays, forces, local, buffers, lanes);
+            }
         }
     }
 
@@ -409,151 +487,4 @@ impl MatrixMassStep {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::mass::MassKind;
-    use crate::mass::windows::{MAX_TILE, WINDOWS_PER_GROUP, tile_rows};
-    use crate::{Support, Supports};
-
-    /// The graded seed bar of `n` elements with the given supports.
-    fn matrix_kernel(n: usize, kind: MassKind, supports: Supports) -> MatrixMassStep {
-        let bar = crate::fixtures::graded_bar(n).unwrap();
-        crate::fixtures::matrix_step(&crate::Model::unloaded(bar, supports), kind).unwrap()
-    }
-
-    #[test]
-    fn blocked_step_is_bit_identical_to_whole_passes_for_every_matrix_mass() {
-        // Several blocks, loads inside a block, at a block edge and at the last node; and a
-        // mesh shorter than a block. The lumped (diagonal) operator too: the kernel accepts any
-        // mass (a step with it once did nothing at all).
-        let windowed = 2 * WINDOWS_PER_GROUP * MAX_TILE + 333;
-        // Its tiles: three groups of 696 rows.
-        let tile = tile_rows(windowed + 1);
-        assert_eq!(tile, 696);
-        for (n, forces) in [
-            (
-                3 * BLOCK + 37,
-                vec![
-                    (0, 1.0),
-                    (1, 0.125),
-                    (7, 0.5),
-                    (8, -0.5),
-                    (BLOCK - 1, 0.25),
-                    (700, -0.25),
-                    (2 * BLOCK, 0.5),
-                    (3 * BLOCK + 36, 1.5),
-                    (3 * BLOCK + 37, 2.0), // the last node
-                ],
-            ),
-            (5, vec![(0, 1.0)]),
-            // One and two elements: no interior row, one.
-            (1, vec![(0, 1.0), (1, 0.5)]),
-            (2, vec![(0, 1.0), (1, 0.5), (2, -1.0)]),
-            // n elements, n + 1 nodes: the last node alone in the last block.
-            (2 * BLOCK, vec![(0, 1.0)]),
-            // CMM and AMM solve in windows ([`crate::mass::windows`]): two groups and a shorter
-            // one, loads on a tile edge, a group edge, inside the last group and at the last
-            // two nodes (in its short last tile).
-            (
-                windowed,
-                vec![
-                    (0, 1.0),
-                    (tile - 1, -0.5),
-                    (tile, 0.5),
-                    (WINDOWS_PER_GROUP * tile, -1.0),
-                    (2 * WINDOWS_PER_GROUP * tile + 300, 2.0),
-                    (windowed - 1, 0.25),
-                    (windowed, 1.0), // the last node
-                ],
-            ),
-        ] {
-            let steps = if n == windowed { 40 } else { 200 };
-            let both_fixed = Supports {
-                left: Support::Fixed,
-                right: Support::Fixed,
-            };
-            let supports = [Supports::FREE_FIXED, Supports::default(), both_fixed];
-            for (kind, avx2, supports) in [
-                MassKind::Reciprocal { beta: 0.5 },
-                MassKind::Consistent,
-                MassKind::Averaged { beta: 0.5 },
-                MassKind::Lumped,
-            ]
-            .into_iter()
-            .flat_map(|kind| [(kind, false), (kind, has_avx2())])
-            .flat_map(|(kind, avx2)| supports.map(|s| (kind, avx2, s)))
-            {
-                let mut blocked = matrix_kernel(n, kind, supports);
-                blocked.avx2 = avx2;
-                let mut whole = matrix_kernel(n, kind, supports);
-                for _ in 0..steps {
-                    let a = blocked.step_with_energy(&forces);
-                    let b = whole.whole_pass_step(&forces);
-                    assert_eq!(a, b, "{kind:?}, n = {n}, {supports:?}");
-                }
-                for a in [U, V, R] {
-                    assert_eq!(blocked.state.get(a), whole.state.get(a), "u, v and r^n");
-                }
-                assert!(
-                    blocked.displacement().iter().any(|&u| u != 0.0),
-                    "{kind:?}: the bar moved"
-                );
-                // Every node; with windows (each node's own solve) every 7th and the tile edges.
-                let check = |i: usize| n != windowed || i.is_multiple_of(7) || i % tile < 2;
-                for i in (0..=n).filter(|&i| check(i)) {
-                    assert_eq!(blocked.acceleration_at(i), whole.a[i], "node {i}");
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn reciprocal_mass_check_is_the_operator_product_and_matches_t_star() {
-        // RMM's `M v = A C^-1 A v` solves `C` in windows on a bar long enough for them: the
-        // check consumes each tile as it comes and equals, bit for bit, the sum over the
-        // operator's own product (the same windows); and it agrees with the running `T*`.
-        // A short bar too: `C` solved by the global factor, the same sum.
-        let both_fixed = Supports {
-            left: Support::Fixed,
-            right: Support::Fixed,
-        };
-        let (long, short) = (2 * WINDOWS_PER_GROUP * MAX_TILE + 333, 50);
-        for (n, supports) in [long, short]
-            .into_iter()
-            .flat_map(|n| [(n, Supports::FREE_FIXED), (n, both_fixed)])
-        {
-            let kind = MassKind::Reciprocal { beta: 0.5 };
-            let mut kernel = matrix_kernel(n, kind, supports);
-            assert_eq!(kernel.mass.reciprocal_windows().is_some(), n == long);
-            // A consistent start: at rest at the fixed nodes, `T* = 1/2 v M v` (`a^0 = 0`, the
-            // fixture's `r^0` is 0).
-            let [_, v, ..] = kernel.state.split_mut();
-            v[n] = 0.0;
-            if supports.left == Support::Fixed {
-                v[0] = 0.0;
-            }
-            kernel.staggered = kernel.staggered_kinetic_from_mass();
-            for _ in 0..20 {
-                kernel.step_with_energy(&[(1, 1.0), (n / 2, -0.5)]);
-            }
-            let mut my = vec![0.0; n + 1];
-            kernel.mass.apply(kernel.half_step_velocity(), &mut my);
-            let MassOperator::Reciprocal { inverse, .. } = &kernel.mass else {
-                unreachable!()
-            };
-            let (dt, v, r) = (kernel.dt, kernel.state.get(V), kernel.state.get(R));
-            let expected = 0.5
-                * (0..=n).fold(0.0, |sum, i| {
-                    let a = inverse_row(&inverse.diag, &inverse.off, r, i);
-                    sum + (v[i] - dt * a) * my[i]
-                });
-            let checked = kernel.staggered_kinetic_from_mass();
-            assert_eq!(checked.to_bits(), expected.to_bits(), "{supports:?}");
-            let running = kernel.staggered;
-            assert!(
-                (checked - running).abs() <= 1e-12 * running.abs(),
-                "{supports:?}: {checked} vs {running}"
-            );
-        }
-    }
-}
+mod tests;
