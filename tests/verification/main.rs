@@ -20,6 +20,7 @@ mod energy_balance_invariant;
 mod equal_transit_layered_and_graded;
 mod fig1_profile_snapshots;
 mod fig2_graded_bar_contrast;
+mod impact_graded_reference;
 mod impact_layered_combined_convergence;
 mod impact_layered_convergence;
 mod mass_matrix_spectra_and_limits;
