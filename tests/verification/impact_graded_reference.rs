@@ -17,8 +17,9 @@
 //!    most `g` (the impedance changes by g/2 along the bar) and falls by 10 (within [5, 20])
 //!    when g does (measured 5.6e-3 and 5.6e-4); a contact bar with `linear = [1, 1]` gets the
 //!    homogeneous reference itself;
-//! 3. the runs converge to it: the L1 force error of CD-LMM + Lagrange multiplier and Park-LTS
-//!    + predictor-corrector (beta_s = 1e4) over h = 1/16, 1/32, 1/64 falls at an observed order
+//! 3. the runs converge to it: the L1 force error of CD-LMM with the Lagrange multiplier and
+//!    Park-LTS with the predictor-corrector (beta_s = 1e4) over h = 1/16, 1/32, 1/64 falls at an
+//!    observed order
 //!    in [0.4, 1.1]. Theory: a force history with jumps, the fronts behind them dispersed by a
 //!    second-order scheme: between the Airy tail's h^(1/2) (methods.md §3) and a jump displaced
 //!    by O(h) (first order), with a margin of 0.1 either side. Measured: 0.057, 0.057, 0.026

@@ -30,4 +30,5 @@ mod si_units_normalisation;
 mod stability_at_the_extremes;
 mod stability_extremes_table;
 mod stability_guard;
+mod work_precision_combination;
 mod work_precision_contact;
