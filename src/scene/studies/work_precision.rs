@@ -155,7 +155,7 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
     },
     WorkPrecisionStudy {
         name: COMBINATION_STUDY,
-        title: "Layered impact: Park local stepping + bipenalty against the global step (CD-LMM) + penalty, each at 0.9 of its limit",
+        title: "Layered impact: Park-LTS + bipenalty vs CD + penalty",
         scene: "impact_layered_combined",
         replacements: &[
             (
