@@ -165,3 +165,97 @@ pub fn floor_table(
     }
     t
 }
+
+/// Two methods of a study compared at equal error ([`equal_error_saving`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Saving<'a> {
+    /// The error both reach: the larger of the two methods' smallest errors.
+    pub error: f64,
+    /// The fast method's cheapest run (fewest element force evaluations) within `error`.
+    pub fast: &'a WorkPoint,
+    /// The slow method's cheapest run within `error`.
+    pub slow: &'a WorkPoint,
+}
+
+impl Saving<'_> {
+    /// Steps of the slow run over the fast run's.
+    pub fn step_ratio(&self) -> f64 {
+        self.slow.steps as f64 / self.fast.steps as f64
+    }
+
+    /// Element force evaluations of the slow run over the fast run's.
+    pub fn evaluation_ratio(&self) -> f64 {
+        self.slow.element_force_evaluations() as f64 / self.fast.element_force_evaluations() as f64
+    }
+
+    /// Wall time of the slow run over the fast run's (machine-dependent).
+    pub fn time_ratio(&self) -> f64 {
+        self.slow.wall_time / self.fast.wall_time
+    }
+}
+
+/// The methods `fast` and `slow` (their [`WorkPoint::method`]) at equal error: the smallest
+/// error both reach on the study's meshes, `max(min l1 of fast, min l1 of slow)`, and each
+/// method's cheapest run within it. `None` when either method has no point.
+pub fn equal_error_saving<'a>(
+    points: &'a [WorkPoint],
+    fast: &str,
+    slow: &str,
+) -> Option<Saving<'a>> {
+    let of = |method: &str| -> Vec<&'a WorkPoint> {
+        points.iter().filter(|p| p.method == method).collect()
+    };
+    let (fast, slow) = (of(fast), of(slow));
+    let best = |runs: &[&WorkPoint]| runs.iter().map(|p| p.l1).reduce(f64::min);
+    let error = best(&fast)?.max(best(&slow)?);
+    let cheapest = |runs: &[&'a WorkPoint]| {
+        runs.iter()
+            .copied()
+            .filter(|p| p.l1 <= error)
+            .min_by_key(|p| p.element_force_evaluations())
+    };
+    Some(Saving {
+        error,
+        fast: cheapest(&fast)?,
+        slow: cheapest(&slow)?,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{WorkPoint, equal_error_saving};
+
+    fn point(method: &str, elements: usize, steps: usize, evals: usize, l1: f64) -> WorkPoint {
+        WorkPoint {
+            method: method.into(),
+            setting: None,
+            courant: 0.9,
+            critical_courant: 1.0,
+            elements,
+            steps,
+            force_evaluations: evals,
+            l1,
+            wall_time: steps as f64,
+        }
+    }
+
+    /// Source of truth: the definition of equal error (`equal_error_saving`). Proves: the error
+    /// both reach is the larger of the two best errors, each side takes its cheapest run within
+    /// it (not its finest), and the ratios are the slow run's work over the fast run's.
+    #[test]
+    fn equal_error_takes_the_cheapest_run_of_each_within_the_common_error() {
+        let points = [
+            point("fast", 10, 100, 2, 0.5),
+            point("fast", 20, 200, 2, 0.2),
+            point("slow", 10, 1000, 1, 0.9),
+            point("slow", 20, 2000, 1, 0.4),
+            point("slow", 40, 4000, 1, 0.3),
+        ];
+        let s = equal_error_saving(&points, "fast", "slow").unwrap();
+        assert_eq!(s.error, 0.3);
+        assert_eq!((s.fast.elements, s.slow.elements), (20, 40));
+        assert_eq!(s.step_ratio(), 20.0);
+        assert_eq!(s.evaluation_ratio(), (40.0 * 4000.0) / (20.0 * 200.0 * 2.0));
+        assert!(equal_error_saving(&points, "fast", "none").is_none());
+    }
+}

@@ -5,12 +5,14 @@
 
 use super::bench_table::{bench_table, empty_bench_table};
 use super::work_precision::cpu_chart;
-use crate::compare::work_precision::{cpu_table, floor_table};
+use crate::compare::work_precision::{cpu_table, equal_error_saving, floor_table};
 use crate::io::clock::date;
 use crate::pipeline::report_runs::ReportRuns;
 use crate::results::table::{Precision, Table};
 use crate::scene::cases::Scene;
-use crate::scene::studies::work_precision::WORK_PRECISION_STUDIES;
+use crate::scene::studies::work_precision::{
+    COMBINATION_FAST, COMBINATION_SLOW, COMBINATION_STUDY, WORK_PRECISION_STUDIES,
+};
 
 /// The timing files: `timing.md` and what it links (`timing.csv`, `timing.work_precision.csv`,
 /// its SVGs, `timing.benchmarks.csv`, with its header only when there are no criterion results).
@@ -55,6 +57,21 @@ pub fn timing_files(scenes: &[Scene], runs: &ReportRuns) -> Vec<(String, String)
             let file = format!("timing.work_precision_{}.svg", study.name);
             tmd += &format!("![{}: error against CPU time]({file})\n\n", study.title);
             files.push((file, svg));
+        }
+        if study.name == COMBINATION_STUDY {
+            for slow in COMBINATION_SLOW {
+                if let Some(s) = equal_error_saving(points, COMBINATION_FAST, slow) {
+                    tmd += &format!(
+                        "{}: at equal error ({:.3}, the runs of `index.md`'s sentence) {slow} takes \
+                         {:.3e} s and {COMBINATION_FAST} {:.3e} s: {:.0} times the wall time.\n\n",
+                        study.name,
+                        s.error,
+                        s.slow.wall_time,
+                        s.fast.wall_time,
+                        s.time_ratio()
+                    );
+                }
+            }
         }
     }
     let floor = runs.element_force_seconds;

@@ -4,8 +4,11 @@
 
 use super::document::{Block, Page};
 use super::plot::{Axes, Series, SeriesStyle, line_chart};
-use crate::compare::work_precision::{WorkPoint, table};
-use crate::scene::studies::work_precision::{WORK_PRECISION_STUDIES, WorkPrecisionStudy};
+use crate::compare::work_precision::{WorkPoint, equal_error_saving, table};
+use crate::scene::studies::work_precision::{
+    COMBINATION_FAST, COMBINATION_SLOW, COMBINATION_STUDY, WORK_PRECISION_STUDIES,
+    WorkPrecisionStudy,
+};
 
 /// One series per label ([`WorkPoint::label`]), in order of first appearance, of the points
 /// `(x(p), l1)` kept by `keep` (labels with no point kept are left out).
@@ -193,7 +196,66 @@ pub fn study_page(study: &WorkPrecisionStudy, points: &[WorkPoint]) -> Page {
         }
     }
     page.table(table(points), format!("work_precision/{}.csv", study.name));
+    if study.name == COMBINATION_STUDY {
+        page.push(Block::Paragraph(combination_saving(points)));
+    }
     page
+}
+
+/// What Park's local stepping with the bipenalty saves against the global step with the
+/// penalty at equal error, computed from the study's points (machine-independent work only;
+/// the CPU times are on the timing page).
+fn combination_saving(points: &[WorkPoint]) -> String {
+    let mut text = String::from(
+        "At equal error, from the rows above (the error both reach: the larger of the two \
+         methods' smallest L1 force errors over these meshes; each method's cheapest run within it):",
+    );
+    for slow in COMBINATION_SLOW {
+        let Some(s) = equal_error_saving(points, COMBINATION_FAST, slow) else {
+            continue;
+        };
+        text.push_str(&format!(
+            " Against {slow}, both within {:.3}: {} (N = {}, error {:.3}) takes {} steps and {} \
+             element force evaluations, {slow} (N = {}, error {:.3}) {} and {}, {:.0} times the \
+             steps and {:.0} times the element force evaluations.",
+            s.error,
+            s.fast.method,
+            s.fast.elements,
+            s.fast.l1,
+            s.fast.steps,
+            s.fast.element_force_evaluations(),
+            s.slow.elements,
+            s.slow.l1,
+            s.slow.steps,
+            s.slow.element_force_evaluations(),
+            s.step_ratio(),
+            s.evaluation_ratio()
+        ));
+    }
+    let best = |method: &str| {
+        points
+            .iter()
+            .filter(|p| p.method == method)
+            .min_by(|a, b| a.l1.total_cmp(&b.l1))
+    };
+    if let Some(fast) = best(COMBINATION_FAST) {
+        text.push_str(&format!(
+            " {}'s smallest error is {:.3} (N = {});",
+            fast.method, fast.l1, fast.elements
+        ));
+    }
+    for slow in COMBINATION_SLOW {
+        if let Some(p) = best(slow) {
+            text.push_str(&format!(" {slow}'s {:.3} (N = {});", p.l1, p.elements));
+        }
+    }
+    text.pop();
+    text.push_str(
+        ": the penalty's transferred force rings at the contact spring's period and does not \
+         converge in L1 on this impact, so the saving grows without bound as the error asked for \
+         falls.",
+    );
+    text
 }
 
 /// Machine-dependent companion of [`study_page`]: the error against the CPU time of each run (wall

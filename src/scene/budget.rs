@@ -58,6 +58,13 @@ pub const MAX_OUTPUT_VALUES: f64 = Limits::DEFAULT.output_values;
 /// Fig. 2 bar with modulus ratios 256 and 1000 it was 6.5 and 3 times the work done (15 s and
 /// 214 s measured here), so a scene within the limit needs at most about 2.5 minutes.
 pub const MAX_REFERENCE_WORK: f64 = 2e10;
+
+/// Boundary events the exact layered impact of a contact scene may track at validation
+/// (`LayeredImpact::with_cap`; one event is one boundary's arrivals at one instant): layers
+/// whose travel times share no small common step multiply the instants (its module
+/// documentation), and validation must stay under a second (an unoptimised build tracks about
+/// 1e6 events a second). The built-in scenes need at most 79 469 (impact_layered_stability).
+pub const MAX_LAYERED_IMPACT_EVENTS: usize = 100_000;
 /// Work of one tracked wave of the layered reference in lattice-node equivalents (defined with
 /// the reference, whose contract counts its work).
 pub use courant_references::exact::LAYERED_WAVE_WORK;

@@ -53,6 +53,18 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
         "impact_layered_park_free",
         include_str!("../../scenes/impact_layered_park_free.toml"),
     ),
+    (
+        "impact_graded",
+        include_str!("../../scenes/impact_graded.toml"),
+    ),
+    (
+        "impact_graded_penalty",
+        include_str!("../../scenes/impact_graded_penalty.toml"),
+    ),
+    (
+        "impact_graded_stability",
+        include_str!("../../scenes/impact_graded_stability.toml"),
+    ),
     ("dispersion", include_str!("../../scenes/dispersion.toml")),
     (
         "courant_sweep",

@@ -4,7 +4,7 @@
 
 use super::budget;
 pub use super::contact_bar::ContactReference;
-use super::contact_bar::{bar, homogeneous, transit};
+use super::contact_bar::{bar, homogeneous, reference_layers, transit};
 pub use super::contact_bulk::CombinedBulk;
 use super::error::{SceneError, Source, positive};
 use super::magnitude;
@@ -137,10 +137,11 @@ pub(super) fn cases(
             ));
         }
     };
-    let (striker, striker_impact) = bar(src, &study.striker, "contact.striker", area)?;
+    let layers = reference_layers(src, study)?;
+    let (striker, striker_impact) = bar(src, &study.striker, "contact.striker", area, layers)?;
     let (problem, reference) = match (study.problem.get_ref().as_str(), &study.target) {
         ("two-bars", Some(target)) => {
-            let (target, target_impact) = bar(src, target, "contact.target", area)?;
+            let (target, target_impact) = bar(src, target, "contact.target", area, layers)?;
             let problem = ContactProblem::bar_impact(striker, target, velocity, gap)
                 .map_err(|e| src.error(Some(study.problem.span()), "contact", e.to_string()))?;
             let end =
@@ -149,8 +150,14 @@ pub(super) fn cases(
                 (Some(s), Some(t)) => {
                     ImpactForce::new(s, t, velocity).map(ContactReference::Homogeneous)
                 }
-                _ => LayeredImpact::new(&striker_impact, &target_impact, velocity, 1.05 * end)
-                    .map(ContactReference::Layered),
+                _ => LayeredImpact::with_cap(
+                    &striker_impact,
+                    &target_impact,
+                    velocity,
+                    1.05 * end,
+                    budget::MAX_LAYERED_IMPACT_EVENTS,
+                )
+                .map(ContactReference::Layered),
             };
             (problem, reference)
         }

@@ -226,7 +226,13 @@ impl<'r> Geometry<'r> {
 }
 
 pub(super) fn field(f: &Spanned<RawField>) -> Field {
-    match f.get_ref() {
+    raw_field(f.get_ref())
+}
+
+/// A property as the solver's field: a constant, or linear between the bar's ends (sampled at
+/// element midpoints by `Bar::new`, methods.md §1).
+pub(super) fn raw_field(f: &RawField) -> Field {
+    match f {
         RawField::Constant(c) => Field::Constant(*c),
         RawField::Linear(RawLinear {
             linear: [left, right],

@@ -445,10 +445,11 @@ pub struct RawDispersion {
 pub struct RawContactBar {
     pub length: f64,
     pub elements: i64,
-    /// Default 1.
-    pub modulus: Option<f64>,
-    /// Default 1.
-    pub density: Option<f64>,
+    /// Default 1; `{ linear = [left, right] }` grades the bar (as `material.modulus`): each
+    /// element takes the value at its midpoint (`scene::contact_bar`).
+    pub modulus: Option<RawField>,
+    /// Default 1; constant on a graded bar.
+    pub density: Option<RawField>,
     /// Piecewise-constant layers from the bar's left end, instead of `modulus`/`density`; their
     /// thicknesses sum to `length` and every interface falls on a node of the uniform mesh.
     pub layers: Option<Vec<RawLayer>>,
@@ -505,6 +506,9 @@ pub struct RawContact {
     pub rmm_beta: Option<Spanned<f64>>,
     /// Park's element acceleration for a `park-*` bulk: `incremental` (default) or `free`.
     pub park_variant: Option<Spanned<String>>,
+    /// Layers of the equal-travel-time layering a graded bar's reference is computed on
+    /// (default 64, `scene::contact_bar`).
+    pub reference_layers: Option<Spanned<i64>>,
 }
 
 /// The unit of a contact scene's Courant numbers.

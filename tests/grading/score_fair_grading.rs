@@ -78,6 +78,9 @@ fn the_exact_answers_meet_every_bound_and_no_signature_applies(
         "impact_layered_stability",
         "impact_layered_below_limits",
         "impact_layered_park_free",
+        "impact_graded",
+        "impact_graded_penalty",
+        "impact_graded_stability",
         "dispersion",
         "courant_sweep",
         "courant_sweep_schemes",
@@ -145,7 +148,7 @@ fn the_exact_answers_meet_every_bound_and_no_signature_applies(
 
 #[test]
 fn the_builtin_list_above_is_complete() {
-    let listed = 36;
+    let listed = 39;
     assert_eq!(
         BUILTIN_SCENES.len(),
         listed,

@@ -153,7 +153,84 @@ pub const WORK_PRECISION_STUDIES: &[WorkPrecisionStudy] = &[
         ],
         error: "L1 force error / impulse",
     },
+    WorkPrecisionStudy {
+        name: COMBINATION_STUDY,
+        title: "Layered impact: Park-LTS + bipenalty vs CD + penalty",
+        scene: "impact_layered_combined",
+        replacements: &[
+            (
+                "striker = { length = 1.0, elements = 32,",
+                "striker = { length = 1.0, elements = {n},",
+            ),
+            (
+                "target = { length = 2.0, elements = 64,",
+                "target = { length = 2.0, elements = {2n},",
+            ),
+        ],
+        contact_meshes: &[8, 16, 32, 64, 128, 256],
+        variants: &[
+            // Park's rule alpha_e <= 1 is its limit at this unit: 0.9 of the stiffest element's
+            // transit time. beta_s = 1: the stiffer bipenalty chatters in this impact
+            // (impact_layered_combined).
+            CourantVariant {
+                courant: "Co = 0.9",
+                replacements: &[
+                    (COMBINED_BULKS, "bulk = \"park-lts\""),
+                    (COMBINED_SCHEMES, "schemes = \"cd-bipenalty\""),
+                    (COMBINED_BETA_S, "beta_s = 1.0"),
+                    ("courant = 0.45", "courant = 0.9"),
+                ],
+            },
+            // The penalty at 0.9 of its exact contact-active limit (about 0.79 at beta_s = 1
+            // and 0.014 at 1e4 for two bars, methods.md §7).
+            CourantVariant {
+                courant: "Co = 0.9 Co_crit",
+                replacements: &[
+                    (COMBINED_BULKS, "bulk = \"cd-lmm\""),
+                    (COMBINED_SCHEMES, "schemes = \"cd-penalty\""),
+                    (COMBINED_BETA_S, "beta_s = [1.0, 1e4]"),
+                    (
+                        "courant = 0.45",
+                        "courant = 0.9\ncourant_unit = \"critical\"",
+                    ),
+                ],
+            },
+            // Context: the global step with the bipenalty and with the Lagrange multiplier.
+            CourantVariant {
+                courant: "Co = 0.9",
+                replacements: &[
+                    (COMBINED_BULKS, "bulk = \"cd-lmm\""),
+                    (
+                        COMBINED_SCHEMES,
+                        "schemes = [\"cd-bipenalty\", \"lagrange-multiplier\"]",
+                    ),
+                    (COMBINED_BETA_S, "beta_s = 1.0"),
+                    ("courant = 0.45", "courant = 0.9"),
+                ],
+            },
+        ],
+        error: "L1 force error / impulse",
+    },
 ];
+
+/// The study of the combination on the layered impact: Park-LTS + bipenalty against CD-LMM +
+/// penalty, graded against the exact `LayeredImpact` force (the report states the saving at
+/// equal error from its points, `compare::work_precision::equal_error_saving`).
+pub const COMBINATION_STUDY: &str = "impact_combined";
+
+/// The two methods the combination study compares at equal error: the fast one and the ones it
+/// is set against.
+pub const COMBINATION_FAST: &str = "park-lts-cd-bipenalty-bs1";
+/// The global-step penalty runs of the combination study.
+pub const COMBINATION_SLOW: [&str; 2] = ["cd-penalty-bs1", "cd-penalty-bs10000"];
+
+/// The bulk list of the built-in impact_layered_combined scene.
+const COMBINED_BULKS: &str = "bulk = [\"park-lts\", \"cd-rmm\"]";
+/// Its scheme list.
+const COMBINED_SCHEMES: &str =
+    "schemes = [\"cd-bipenalty\", \"predictor-corrector\", \"lagrange-multiplier\"]";
+/// Its beta_s list.
+const COMBINED_BETA_S: &str = "beta_s = [1.0, 1e4, 1e8]";
 
 /// The scheme list of the built-in fig5 scene.
 const FIG5_SCHEMES: &str = "schemes = [\"cd-penalty\", \"cd-bipenalty\", \"predictor-corrector\", \"lagrange-multiplier\"]";
