@@ -61,6 +61,29 @@ fn time_run(
     (clock.elapsed().as_secs_f64(), thread_cpu_seconds() - cpu)
 }
 
+/// `reps` repetitions (at least one) of `a` then `b`, each returning `(wall, thread CPU)`
+/// seconds: `[a's walls, b's walls, a's CPU times, b's CPU times]`, one entry per repetition.
+fn alternate(
+    reps: usize,
+    mut a: impl FnMut() -> (f64, f64),
+    mut b: impl FnMut() -> (f64, f64),
+) -> [Vec<f64>; 4] {
+    let mut out: [Vec<f64>; 4] = Default::default();
+    for _ in 0..reps.max(1) {
+        let ((a_wall, a_cpu), (b_wall, b_cpu)) = (a(), b());
+        out[0].push(a_wall);
+        out[1].push(b_wall);
+        out[2].push(a_cpu);
+        out[3].push(b_cpu);
+    }
+    out
+}
+
+/// Per-repetition ratios `top / bottom`.
+fn ratios_of(top: &[f64], bottom: &[f64]) -> Vec<f64> {
+    top.iter().zip(bottom).map(|(t, b)| t / b).collect()
+}
+
 fn median(mut xs: Vec<f64>) -> f64 {
     xs.sort_by(f64::total_cmp);
     xs[xs.len() / 2]
@@ -103,16 +126,12 @@ fn main() {
     if one_against_two {
         let mut two = other.clone();
         (other.threads, two.threads) = (Some(1), Some(2));
-        let (mut ones, mut twos, mut ratios, mut cpu_ratios) =
-            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-        for _ in 0..reps.max(1) {
-            let (a, a_cpu) = time_run(&model, &other, steps, &request);
-            let (b, b_cpu) = time_run(&model, &two, steps, &request);
-            ones.push(a);
-            twos.push(b);
-            ratios.push(a / b);
-            cpu_ratios.push(a_cpu / b_cpu);
-        }
+        let [ones, twos, one_cpu, two_cpu] = alternate(
+            reps,
+            || time_run(&model, &other, steps, &request),
+            || time_run(&model, &two, steps, &request),
+        );
+        let (ratios, cpu_ratios) = (ratios_of(&ones, &twos), ratios_of(&one_cpu, &two_cpu));
         let per = |s: f64| s * 1e9 / ((n + 1) * steps) as f64;
         // The main thread's CPU time on two threads is its chunk, what follows the join and the
         // spawns (it waits for the other chunk without CPU): with two free cores and balanced
@@ -130,16 +149,12 @@ fn main() {
     }
     lumped.threads = Some(threads);
     other.threads = Some(threads);
-    let (mut base, mut times, mut ratios, mut cpu_ratios) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    for _ in 0..reps.max(1) {
-        let (b, b_cpu) = time_run(&model, &lumped, steps, &request);
-        let (t, t_cpu) = time_run(&model, &other, steps, &request);
-        base.push(b);
-        times.push(t);
-        ratios.push(t / b);
-        cpu_ratios.push(t_cpu / b_cpu);
-    }
+    let [base, times, base_cpu, cpu] = alternate(
+        reps,
+        || time_run(&model, &lumped, steps, &request),
+        || time_run(&model, &other, steps, &request),
+    );
+    let (ratios, cpu_ratios) = (ratios_of(&times, &base), ratios_of(&cpu, &base_cpu));
     let per = |s: f64| s * 1e9 / ((n + 1) * steps) as f64;
     // On one thread the CPU-time ratio is the robust one on a shared machine.
     println!(
