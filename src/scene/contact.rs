@@ -4,17 +4,16 @@
 
 use super::budget;
 pub use super::contact_bar::ContactReference;
-use super::contact_bar::{bar, homogeneous, reference_layers, transit};
 pub use super::contact_bulk::CombinedBulk;
+use super::contact_problem::{Bodies, bodies};
 use super::error::{SceneError, Source, positive};
 use super::magnitude;
 use super::schema::{RawContact, RawContactCourantUnit, RawContactScene, RawContactStability};
-use courant_references::contact::{ImpactForce, LayeredImpact};
+use courant_solver::StabilityPolicy;
 use courant_solver::contact::{
     ContactCriticalStep, ContactIntegrator, ContactProblem, ContactSample, ContactScheme,
     MassPenalty,
 };
-use courant_solver::{End, StabilityPolicy};
 
 /// A case name, its scheme and its dimensionless penalties.
 type Variant = (String, ContactScheme, Option<(f64, f64)>);
@@ -110,111 +109,11 @@ pub(super) fn cases(
     raw: &RawContactScene,
     study: &RawContact,
 ) -> Result<Vec<ContactCase>, SceneError> {
-    let area = match &raw.bar.area {
-        Some(a) => {
-            let area = positive(src, a, "bar.area")?;
-            magnitude::input(src, Some(a.span()), "bar.area", "area", area)?;
-            area
-        }
-        None => 1.0,
-    };
-    let velocity = positive(src, &study.velocity, "contact.velocity")?;
-    magnitude::input(
-        src,
-        Some(study.velocity.span()),
-        "contact.velocity",
-        "velocity",
-        velocity,
-    )?;
-    let gap = match &study.gap {
-        None => 0.0,
-        Some(g) if g.get_ref().is_finite() && *g.get_ref() >= 0.0 => *g.get_ref(),
-        Some(g) => {
-            return Err(src.error(
-                Some(g.span()),
-                "contact.gap",
-                format!("{} must be finite and not negative", g.get_ref()),
-            ));
-        }
-    };
-    let layers = reference_layers(src, study)?;
-    let (striker, striker_impact) = bar(src, &study.striker, "contact.striker", area, layers)?;
-    let (problem, reference) = match (study.problem.get_ref().as_str(), &study.target) {
-        ("two-bars", Some(target)) => {
-            let (target, target_impact) = bar(src, target, "contact.target", area, layers)?;
-            let problem = ContactProblem::bar_impact(striker, target, velocity, gap)
-                .map_err(|e| src.error(Some(study.problem.span()), "contact", e.to_string()))?;
-            let end =
-                positive(src, &study.end_time, "contact.end_time")? * transit(&striker_impact);
-            let reference = match (homogeneous(&striker_impact), homogeneous(&target_impact)) {
-                (Some(s), Some(t)) => {
-                    ImpactForce::new(s, t, velocity).map(ContactReference::Homogeneous)
-                }
-                _ => LayeredImpact::with_cap(
-                    &striker_impact,
-                    &target_impact,
-                    velocity,
-                    1.05 * end,
-                    budget::MAX_LAYERED_IMPACT_EVENTS,
-                )
-                .map(ContactReference::Layered),
-            };
-            (problem, reference)
-        }
-        ("two-bars", None) => {
-            return Err(src.error(
-                Some(study.problem.span()),
-                "contact.target",
-                "problem = \"two-bars\" needs a `target`",
-            ));
-        }
-        ("wall", None) => {
-            let problem = ContactProblem::wall_impact(striker, End::Right, velocity, gap)
-                .map_err(|e| src.error(Some(study.problem.span()), "contact", e.to_string()))?;
-            let reference = match homogeneous(&striker_impact) {
-                Some(s) => ImpactForce::rigid_wall(s, velocity).map(ContactReference::Homogeneous),
-                None => {
-                    return Err(src.error(
-                        Some(study.striker.span()),
-                        "contact.striker.layers",
-                        "a wall problem takes a homogeneous striker (its exact force is for one layer)",
-                    ));
-                }
-            };
-            (problem, reference)
-        }
-        ("wall", Some(t)) => {
-            return Err(src.error(
-                Some(t.span()),
-                "contact.target",
-                "a wall problem has no target",
-            ));
-        }
-        (other, _) => {
-            return Err(src.error(
-                Some(study.problem.span()),
-                "contact.problem",
-                format!("\"{other}\" is not one of two-bars, wall"),
-            ));
-        }
-    };
-    let reference =
-        reference.map_err(|e| src.error(Some(study.problem.span()), "contact", e.to_string()))?;
-    if let Some(g) = &study.gap {
-        magnitude::input(src, Some(g.span()), "contact.gap", "gap", gap)?;
-    }
-    for (body, key) in problem
-        .bodies()
-        .iter()
-        .zip(["contact.striker", "contact.target"])
-    {
-        let span = if key == "contact.striker" {
-            Some(study.striker.span())
-        } else {
-            study.target.as_ref().map(|t| t.span())
-        };
-        magnitude::model(src, |_| (span.clone(), key), body)?;
-    }
+    let Bodies {
+        problem,
+        reference,
+        striker_transit,
+    } = bodies(src, raw, study)?;
     let courants = study.courant.get_ref().values();
     if courants.is_empty() {
         return Err(src.error(
@@ -231,7 +130,7 @@ pub(super) fn cases(
         ));
     }
     let end = positive(src, &study.end_time, "contact.end_time")?;
-    let end_time = end * transit(&striker_impact);
+    let end_time = end * striker_transit;
     let history_every = match &study.history_every {
         None => 1,
         Some(h) if *h.get_ref() >= 1 => *h.get_ref() as usize,
@@ -511,7 +410,7 @@ pub(super) fn cases(
                     penalty,
                     reference: reference.clone(),
                     force: ForceMeasure::for_scheme(force, &scheme),
-                    striker_transit: transit(&striker_impact),
+                    striker_transit,
                     bulk: combined,
                 });
             }

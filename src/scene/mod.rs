@@ -35,6 +35,7 @@ pub mod cases;
 pub mod contact;
 pub mod contact_bar;
 pub mod contact_bulk;
+mod contact_problem;
 pub mod dispersion;
 pub mod error;
 pub mod expectation;
