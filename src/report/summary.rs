@@ -167,21 +167,27 @@ pub fn head(
         Inline::text("-")
     };
     rows.push(row(Inline::text("all"), total, stability));
-    let findings: Vec<String> = outcomes
+    // courant's findings, one list item per scene: `scene (k): case (measure); ...`.
+    let findings: Vec<(String, Vec<String>)> = outcomes
         .iter()
         .zip(scenes)
-        .flat_map(|((o, _), s)| {
-            o.verdicts
+        .map(|((o, _), s)| {
+            let cases = o
+                .verdicts
                 .iter()
                 .filter(|v| v.finding)
-                .map(move |v| match v.metric {
+                .map(|v| match v.metric {
                     // A stability finding's measure names itself ("energy growth x5.3"); a
                     // stated row's is a number, shown with its metric.
-                    Metric::Stability => format!("{}/{} ({})", s.name, v.case, v.measured),
-                    metric => format!("{}/{} ({} {})", s.name, v.case, metric.name(), v.measured),
+                    Metric::Stability => format!("{} ({})", v.case, v.measured),
+                    metric => format!("{} ({} {})", v.case, metric.name(), v.measured),
                 })
+                .collect();
+            (s.name.clone(), cases)
         })
+        .filter(|(_, cases): &(String, Vec<String>)| !cases.is_empty())
         .collect();
+    let finding_count: usize = findings.iter().map(|(_, cases)| cases.len()).sum();
     // Findings of other codes, one line per code and variant: how many, on which scenes, of
     // which checks (each finding's words are in its set's section).
     let mut other_findings: Vec<OtherFindings> = Vec::new();
@@ -229,7 +235,7 @@ pub fn head(
         total.total(),
         total.passed,
         total.findings,
-        findings.len(),
+        finding_count,
         other_count,
         total.failed
     )));
@@ -239,9 +245,14 @@ pub fn head(
     }
     if !findings.is_empty() {
         page.push(Block::Paragraph(format!(
-            "Findings: {}.",
-            findings.join("; ")
+            "courant's findings, by scene ({finding_count}):"
         )));
+        page.push(Block::List(
+            findings
+                .iter()
+                .map(|(scene, cases)| format!("{scene} ({}): {}", cases.len(), cases.join("; ")))
+                .collect(),
+        ));
     }
     if !other_findings.is_empty() {
         page.push(Block::Paragraph(format!(
