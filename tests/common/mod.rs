@@ -2,12 +2,26 @@
 #![allow(dead_code)]
 
 use courant_references::DalembertBar;
-use courant_solver::{CentralDifference, Model, OutputRequest, RunOutput, Start, TimeFunction};
+use courant_solver::{
+    CentralDifference, Model, OutputRequest, RunOutput, StabilityPolicy, Start, TimeFunction,
+};
 
 /// The homogeneous unit bar of the seed's Fig. 1 (L = A = rho = E = 1, sigma0 = -1), N elements,
 /// loaded by `time` at the free left end, fixed at the right end.
 pub fn fig1_model(n: usize, time: TimeFunction) -> Model {
     courant_solver::bench::seed_bar(n, courant_solver::Field::Constant(1.0), time).unwrap()
+}
+
+/// Lumped central difference at `dt` with unstable steps allowed (the guard still stops a
+/// blow-up): for runs at or above the critical step.
+pub fn cd_allowing_unstable(dt: f64) -> CentralDifference {
+    CentralDifference {
+        stability: StabilityPolicy {
+            allow_unstable: true,
+            ..Default::default()
+        },
+        ..CentralDifference::new(dt)
+    }
 }
 
 /// d'Alembert's solution of that bar.

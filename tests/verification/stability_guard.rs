@@ -10,9 +10,7 @@
 use crate::common;
 
 use common::fig1_model;
-use courant_solver::{
-    CentralDifference, CriticalStep, OutputRequest, RunError, StabilityPolicy, TimeFunction,
-};
+use courant_solver::{CentralDifference, CriticalStep, OutputRequest, RunError, TimeFunction};
 
 const N: usize = 100;
 
@@ -57,13 +55,7 @@ fn a_step_above_the_critical_step_is_refused_with_its_context() {
 fn an_allowed_unstable_run_is_stopped_at_the_blow_up_with_step_node_and_energy_ratio() {
     let model = fig1_model(N, TimeFunction::HEAVISIDE);
     let dt = 1.01 * critical().exact;
-    let integrator = CentralDifference {
-        stability: StabilityPolicy {
-            allow_unstable: true,
-            ..Default::default()
-        },
-        ..CentralDifference::new(dt)
-    };
+    let integrator = common::cd_allowing_unstable(dt);
     let request = OutputRequest {
         profile_steps: vec![10, 100_000],
         history_nodes: vec![0],

@@ -13,9 +13,7 @@ use crate::common;
 
 use common::fig1_model;
 use courant::compare::growth::{doubling_bound, time_stepping_growth};
-use courant_solver::{
-    CentralDifference, CriticalStep, OutputRequest, RunError, StabilityPolicy, TimeFunction,
-};
+use courant_solver::{CriticalStep, OutputRequest, RunError, TimeFunction};
 
 const N: usize = 100;
 const STEPS: usize = 20_000;
@@ -23,13 +21,7 @@ const STEPS: usize = 20_000;
 fn run(ratio: f64) -> Result<courant_solver::RunOutput, RunError> {
     let model = fig1_model(N, TimeFunction::HEAVISIDE);
     let dt = ratio * CriticalStep::lumped(&model).unwrap().exact;
-    let integrator = CentralDifference {
-        stability: StabilityPolicy {
-            allow_unstable: true,
-            ..Default::default()
-        },
-        ..CentralDifference::new(dt)
-    };
+    let integrator = common::cd_allowing_unstable(dt);
     let request = OutputRequest {
         energy_every: 1,
         ..Default::default()
