@@ -16,8 +16,8 @@ as the nodal force F0 = -sigma0 A on node 0. The element stress is ``axialForce 
 The case geometry (node positions, output times, the time step) is courant's own: the driver
 reads it from the exact answers ``courant reference <scene>`` writes (their element ends, times
 and ``dt`` in results.toml), so OpenSees runs the very mesh and step courant runs. The material
-per element is the scene's, evaluated at the element midpoint as courant does (``MATERIALS``
-below): E = 16 -> 1 linear (fig2), 1 -> 16 (fig2_reversed), two layers E = 64, rho = 4 then
+per element is the scene's, evaluated at the element midpoint as courant does (``MATERIALS`` in
+external/driver_common.py): E = 16 -> 1 linear (fig2), 1 -> 16 (fig2_reversed), two layers E = 64, rho = 4 then
 E = rho = 1 (layered), E = rho = 1 otherwise.
 
 Integrators and starts
@@ -68,49 +68,19 @@ import openseespy.opensees as ops
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
-SIGMA0 = -1.0  # traction at x = 0 in every scene here (compressive)
-AREA = 1.0
+sys.dont_write_bytecode = True  # no __pycache__ beside the committed files
+sys.path.insert(0, os.path.dirname(HERE))
+from driver_common import (  # noqa: E402  (external/driver_common.py, shared by the drivers)
+    AREA, SCENES, SIGMA0, compare_dirs, courant_cases, courant_walls,
+    element_properties, write_courant_times,
+)
+
 
 INTEGRATORS = {
     'central-difference': 'CentralDifference',
     'explicit-difference': 'ExplicitDifference',
 }
 STARTS = ('as-it-comes', 'corrected')
-
-
-def linear(left, right):
-    return lambda x, length: left + (right - left) * x / length
-
-
-def constant(value):
-    return lambda x, length: value
-
-
-def layers(spec):
-    """(thickness, E, rho) from the loaded end; an interface belongs to the layer on its right."""
-    def at(x):
-        end = 0.0
-        for thickness, e, rho in spec:
-            end += thickness
-            if x < end:
-                return e, rho
-        return spec[-1][1], spec[-1][2]
-    return (lambda x, length: at(x)[0]), (lambda x, length: at(x)[1])
-
-
-_LAYERED = layers([(0.5, 64.0, 4.0), (0.5, 1.0, 1.0)])
-
-# Per scene: (modulus(x, L), density(x, L)) and the cases run (central difference only; the
-# mass from the case name: cmm-* consistent, lumped otherwise).
-MATERIALS = {
-    'fig1': (constant(1.0), constant(1.0)),
-    'fig1_masses': (constant(1.0), constant(1.0)),
-    'fig1_schemes': (constant(1.0), constant(1.0)),
-    'fig2': (linear(16.0, 1.0), constant(1.0)),
-    'fig2_reversed': (linear(1.0, 16.0), constant(1.0)),
-    'layered': _LAYERED,
-}
-SCENES = tuple(MATERIALS)
 
 
 def scene_cases(scene, names):
@@ -129,89 +99,6 @@ def scene_cases(scene, names):
         elif name.startswith('cd-'):
             out.append((name, 'lumped'))
     return out
-
-
-# ----------------------------------------------------------------------------
-# The geometry of courant's cases, from its exact answers.
-# ----------------------------------------------------------------------------
-def courant_cases(courant, scene):
-    """{case: (nodes, [(t, step)], dt)} from `courant reference <scene>`."""
-    tmp = tempfile.mkdtemp(prefix='opensees-geometry-')
-    try:
-        subprocess.run(courant + ['reference', scene, '--out', tmp], check=True,
-                       stdout=subprocess.DEVNULL)
-        base = os.path.join(tmp, scene)
-        dts = read_dts(os.path.join(base, 'results.toml'))
-        cases = {}
-        for f in sorted(os.listdir(base)):
-            if not f.endswith('.csv'):
-                continue
-            name = f[:-4]
-            rows = np.genfromtxt(os.path.join(base, f), delimiter=',', names=True,
-                                 dtype=None, encoding='utf-8')
-            t0 = rows['t'][0]
-            first = rows[rows['t'] == t0]
-            nodes = np.r_[first['x_left'], first['x_right'][-1]]
-            dt = dts[name]
-            times = []
-            for t in sorted(set(rows['t'].tolist())):
-                step = round(t / dt)
-                assert abs(step * dt - t) <= 1e-9 * max(t, dt), (scene, name, t, dt)
-                times.append((t, step))
-            cases[name] = (nodes, times, dt)
-        return cases
-    finally:
-        shutil.rmtree(tmp, ignore_errors=True)
-
-
-def courant_walls(courant, scene, repeat):
-    """{case: (median wall time s, steps)} of `courant run <scene>` on one thread (cases one at a
-    time: COURANT_THREADS=1, RAYON_NUM_THREADS=1), median of `repeat` runs: the `wall_time_s`
-    and `steps` of its summary.csv."""
-    env = dict(os.environ, COURANT_THREADS='1', RAYON_NUM_THREADS='1')
-    walls = {}
-    steps = {}
-    for _ in range(max(1, repeat)):
-        tmp = tempfile.mkdtemp(prefix='opensees-courant-')
-        try:
-            subprocess.run(courant + ['run', scene, '--out', tmp], check=True, env=env,
-                           stdout=subprocess.DEVNULL)
-            rows = np.genfromtxt(os.path.join(tmp, scene, 'summary.csv'), delimiter=',',
-                                 names=True, dtype=None, encoding='utf-8')
-            for row in np.atleast_1d(rows):
-                walls.setdefault(str(row['case']), []).append(float(row['wall_time_s']))
-                steps[str(row['case'])] = int(row['steps'])
-        finally:
-            shutil.rmtree(tmp, ignore_errors=True)
-    return {case: (statistics.median(w), steps[case]) for case, w in walls.items()}
-
-
-def cpu_name():
-    """The CPU model, from /proc/cpuinfo."""
-    try:
-        for line in open('/proc/cpuinfo'):
-            if line.startswith('model name'):
-                return line.split(':', 1)[1].strip()
-    except OSError:
-        pass
-    return 'unknown CPU'
-
-
-def read_dts(path):
-    """`dt` of every `[cases."name"]` table of a results.toml (tomllib: Python >= 3.11)."""
-    import tomllib
-    with open(path, 'rb') as fd:
-        meta = tomllib.load(fd)
-    return {name: table['dt'] for name, table in meta['cases'].items()}
-
-
-def element_properties(scene, nodes):
-    """(E, rho) of each element at its midpoint, as courant evaluates the scene's material."""
-    modulus, density = MATERIALS[scene]
-    length = nodes[-1] - nodes[0]
-    mid = 0.5 * (nodes[:-1] + nodes[1:]) - nodes[0]
-    return (np.array([modulus(x, length) for x in mid]),
-            np.array([density(x, length) for x in mid]))
 
 
 # ----------------------------------------------------------------------------
@@ -439,64 +326,6 @@ def write_set(directory, scene, rows, integrator, start):
             # OpenSees' own time: the median wall time of its time loop (the analyze calls).
             fd.write(f'wall_s = {wall:.6g}\n')
             fd.write(f'steps = {steps}\n')
-
-
-def write_courant_times(path, rows, repeat):
-    """courant's times on the cases OpenSees ran, measured right after OpenSees' on this machine
-    (one thread, median of `repeat` runs): the yardstick of the cost ratios."""
-    measured = time.strftime('%Y-%m-%d')
-    cpu = cpu_name().replace(',', ' ')
-    with open(path, 'w') as fd:
-        fd.write('scene,case,steps,courant_wall_s,repeat,measured,cpu\n')
-        for scene, case, steps, wall in rows:
-            fd.write(f'{scene},{case},{steps},{wall:.6g},{repeat},{measured},{cpu}\n')
-
-
-def without_wall(text):
-    """results.toml without its `wall_s` lines (machine-specific; not compared)."""
-    return [line for line in text.splitlines() if not line.startswith('wall_s =')]
-
-
-def compare_dirs(fresh, committed, tolerance):
-    """Every file the driver writes in `committed` is in `fresh` with the same text but for the
-    stresses, which agree within `tolerance` (|sigma0| = 1), and results.toml's `wall_s` (the
-    machine's, not compared); `stated.toml` is courant's, not the driver's, and is left out."""
-    bad = []
-    for root, _, files in os.walk(committed):
-        rel = os.path.relpath(root, committed)
-        for f in files:
-            if f == 'stated.toml':
-                continue
-            a, b = os.path.join(root, f), os.path.join(fresh, rel, f)
-            if not os.path.exists(b):
-                bad.append(f'{b}: missing')
-                continue
-            if f.endswith('.toml'):
-                if without_wall(open(a).read()) != without_wall(open(b).read()):
-                    bad.append(f'{b}: differs from {a} (wall_s aside)')
-                continue
-            la, lb = open(a).read().splitlines(), open(b).read().splitlines()
-            if len(la) != len(lb):
-                bad.append(f'{b}: {len(lb)} lines, {a} {len(la)}')
-                continue
-            spectrum = la[0] == 'mode,omega,mass'
-            for i, (x, y) in enumerate(zip(la, lb)):
-                if i == 0:
-                    if x != y:
-                        bad.append(f'{b}: header differs')
-                    continue
-                x, y = x.split(','), y.split(',')
-                if spectrum:
-                    # mode and mass as written, omega within `tolerance` relative.
-                    w = max(abs(float(x[1])), 1.0)
-                    same = (x[0], x[2]) == (y[0], y[2]) and \
-                        abs(float(x[1]) - float(y[1])) <= tolerance * w
-                else:
-                    same = x[:3] == y[:3] and abs(float(x[3]) - float(y[3])) <= tolerance
-                if not same:
-                    bad.append(f'{b}:{i + 1}: {y} against {x}')
-                    break
-    return bad
 
 
 def main():
