@@ -86,3 +86,22 @@ pub fn error_norms(stress: &[f64], exact: &[f64]) -> (f64, f64, f64) {
         .sqrt();
     (l1, l2, max_abs_diff(stress, exact))
 }
+
+/// The contact results of a built-in contact scene, refined: `text` with each `(from, to)` of
+/// `replacements` applied (each must occur, so a changed scene fails here instead of silently
+/// running unrefined), cut before its first `[[expect]]` (bands hold at the scene's own mesh
+/// only), then run and compared.
+pub fn refined_contact_results(
+    name: &str,
+    text: &str,
+    replacements: &[(&str, String)],
+) -> Vec<courant::compare::contact::ContactResult> {
+    let mut text = text.to_string();
+    for (from, to) in replacements {
+        assert!(text.contains(from), "{name}: `{from}` not in the scene");
+        text = text.replace(from, to);
+    }
+    let text = &text[..text.find("[[expect]]").unwrap_or(text.len())];
+    let scene = courant::scene::Scene::parse(name, &format!("{name}.toml"), text).unwrap();
+    courant::pipeline::evaluate_scene(&scene).unwrap().contact
+}

@@ -25,7 +25,6 @@
 //!    by O(h) (first order), with a margin of 0.1 either side. Measured: 0.057, 0.057, 0.026
 //!    (LM, order 0.57) and 0.034, 0.016, 0.014 (Park-LTS + PC, order 0.62).
 
-use courant::pipeline::evaluate_scene;
 use courant::scene::Scene;
 use courant::scene::contact::ContactReference;
 use courant::scene::contact_bar::graded_layers;
@@ -104,27 +103,27 @@ fn a_vanishing_gradation_gives_the_homogeneous_impact() {
 }
 
 fn force_errors(scale: usize) -> Vec<(String, f64)> {
-    let text = include_str!("../../scenes/impact_graded.toml")
-        .replace("elements = 16,", &format!("elements = {},", 16 * scale))
-        .replace("elements = 32,", &format!("elements = {},", 32 * scale))
-        .replace(
-            r#"bulk = ["cd-lmm", "cd-rmm", "park-lts"]"#,
-            r#"bulk = ["cd-lmm", "park-lts"]"#,
-        )
-        .replace(
-            r#"schemes = ["cd-bipenalty", "predictor-corrector", "lagrange-multiplier"]"#,
-            r#"schemes = ["predictor-corrector", "lagrange-multiplier"]"#,
-        )
-        .replace("beta_s = [1.0, 100.0, 1e4]", "beta_s = 1e4");
-    let text = text[..text.find("[[expect]]").unwrap()].to_string();
-    let scene = Scene::parse("impact_graded", "impact_graded.toml", &text).unwrap();
-    let outcome = evaluate_scene(&scene).unwrap();
-    outcome
-        .contact
-        .iter()
-        .filter(|r| r.case == "lagrange-multiplier" || r.case.starts_with("park-lts-predictor"))
-        .map(|r| (r.case.clone(), r.errors.force_l1_error))
-        .collect()
+    crate::common::refined_contact_results(
+        "impact_graded",
+        include_str!("../../scenes/impact_graded.toml"),
+        &[
+            ("elements = 16,", format!("elements = {},", 16 * scale)),
+            ("elements = 32,", format!("elements = {},", 32 * scale)),
+            (
+                r#"bulk = ["cd-lmm", "cd-rmm", "park-lts"]"#,
+                r#"bulk = ["cd-lmm", "park-lts"]"#.into(),
+            ),
+            (
+                r#"schemes = ["cd-bipenalty", "predictor-corrector", "lagrange-multiplier"]"#,
+                r#"schemes = ["predictor-corrector", "lagrange-multiplier"]"#.into(),
+            ),
+            ("beta_s = [1.0, 100.0, 1e4]", "beta_s = 1e4".into()),
+        ],
+    )
+    .iter()
+    .filter(|r| r.case == "lagrange-multiplier" || r.case.starts_with("park-lts-predictor"))
+    .map(|r| (r.case.clone(), r.errors.force_l1_error))
+    .collect()
 }
 
 #[test]

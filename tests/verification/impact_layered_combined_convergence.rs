@@ -12,33 +12,31 @@
 //! and the separation time stays within 0.5 % of the exact 0.25 on every mesh (measured 0.0020,
 //! 0.0016, 0.0016: no order, it stalls at the detection's resolution).
 
-use courant::pipeline::evaluate_scene;
-use courant::scene::Scene;
+use crate::common::refined_contact_results;
 
 fn errors(scale: usize) -> Vec<(String, f64, f64)> {
-    let text = include_str!("../../scenes/impact_layered_combined.toml")
-        .replace("elements = 32,", &format!("elements = {},", 32 * scale))
-        .replace(
-            "length = 2.0, elements = 64,",
-            &format!("length = 2.0, elements = {},", 64 * scale),
-        )
-        .replace(r#"bulk = ["park-lts", "cd-rmm"]"#, r#"bulk = "park-lts""#)
-        .replace(
-            r#"schemes = ["cd-bipenalty", "predictor-corrector", "lagrange-multiplier"]"#,
-            r#"schemes = ["predictor-corrector", "lagrange-multiplier"]"#,
-        )
-        .replace("beta_s = [1.0, 1e4, 1e8]", "beta_s = [1e4]");
-    let text = text[..text.find("[[expect]]").unwrap()].to_string();
-    let scene = Scene::parse(
+    let results = refined_contact_results(
         "impact_layered_combined",
-        "impact_layered_combined.toml",
-        &text,
-    )
-    .unwrap();
-    assert_eq!(scene.contact.len(), 2);
-    let outcome = evaluate_scene(&scene).unwrap();
-    outcome
-        .contact
+        include_str!("../../scenes/impact_layered_combined.toml"),
+        &[
+            ("elements = 32,", format!("elements = {},", 32 * scale)),
+            (
+                "length = 2.0, elements = 64,",
+                format!("length = 2.0, elements = {},", 64 * scale),
+            ),
+            (
+                r#"bulk = ["park-lts", "cd-rmm"]"#,
+                r#"bulk = "park-lts""#.into(),
+            ),
+            (
+                r#"schemes = ["cd-bipenalty", "predictor-corrector", "lagrange-multiplier"]"#,
+                r#"schemes = ["predictor-corrector", "lagrange-multiplier"]"#.into(),
+            ),
+            ("beta_s = [1.0, 1e4, 1e8]", "beta_s = [1e4]".into()),
+        ],
+    );
+    assert_eq!(results.len(), 2);
+    results
         .iter()
         .map(|r| {
             (

@@ -14,35 +14,34 @@
 //! [0.1, 0.67), every front crosses the soft layers at Co 1/16 of their limit and the three
 //! contacts' timing errors add up).
 
-use courant::pipeline::evaluate_scene;
-use courant::scene::Scene;
+use crate::common::refined_contact_results;
 
 fn errors(scale: usize) -> Vec<(String, f64, f64)> {
-    let text = include_str!("../../scenes/impact_layered.toml")
-        .replace("elements = 32,", &format!("elements = {},", 32 * scale))
-        .replace(
-            "length = 2.0, elements = 64,",
-            &format!("length = 2.0, elements = {},", 64 * scale),
-        )
-        .replace(
-            r#"schemes = ["cd-bipenalty", "predictor-corrector", "lagrange-multiplier"]"#,
-            r#"schemes = ["predictor-corrector", "lagrange-multiplier"]"#,
-        )
-        .replace("beta_s = [1.0, 100.0, 1e4, 1e8]", "beta_s = [1e4]");
-    let text = text[..text.find("[[expect]]").unwrap()].to_string();
-    let scene = Scene::parse("impact_layered", "impact_layered.toml", &text).unwrap();
-    let outcome = evaluate_scene(&scene).unwrap();
-    outcome
-        .contact
-        .iter()
-        .map(|r| {
+    refined_contact_results(
+        "impact_layered",
+        include_str!("../../scenes/impact_layered.toml"),
+        &[
+            ("elements = 32,", format!("elements = {},", 32 * scale)),
             (
-                r.case.clone(),
-                r.errors.force_l1_off_jumps,
-                r.errors.separation_error.unwrap(),
-            )
-        })
-        .collect()
+                "length = 2.0, elements = 64,",
+                format!("length = 2.0, elements = {},", 64 * scale),
+            ),
+            (
+                r#"schemes = ["cd-bipenalty", "predictor-corrector", "lagrange-multiplier"]"#,
+                r#"schemes = ["predictor-corrector", "lagrange-multiplier"]"#.into(),
+            ),
+            ("beta_s = [1.0, 100.0, 1e4, 1e8]", "beta_s = [1e4]".into()),
+        ],
+    )
+    .iter()
+    .map(|r| {
+        (
+            r.case.clone(),
+            r.errors.force_l1_off_jumps,
+            r.errors.separation_error.unwrap(),
+        )
+    })
+    .collect()
 }
 
 #[test]
