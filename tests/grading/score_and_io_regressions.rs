@@ -23,20 +23,26 @@ fn data(file: &str) -> PathBuf {
         .join(file)
 }
 
-/// `courant score SCENE --results SET --out DIR`: refused with status 2, promptly, naming every
-/// one of `expected`, writing nothing.
-fn score_refused(scene: &str, set: &str, expected: &[&str]) {
-    let dir = scratch(set);
+/// `courant ARGS --out DIR` (DIR in a fresh scratch directory named `label`): refused with
+/// status 2, promptly, naming every one of `expected`, writing nothing.
+fn refused(label: &str, args: &[&str], expected: &[&str]) {
+    let dir = scratch(label);
     let out = dir.join("o");
-    let (code, _, stderr, took) =
-        courant(&["score", scene, "--results", s(&data(set)), "--out", s(&out)]);
-    assert_eq!(code, Some(2), "{set}: {stderr}");
-    assert!(took < PROMPT, "{set}: took {took:?}");
-    assert!(!out.exists(), "{set}: exit 2 wrote {}", out.display());
+    let mut args = args.to_vec();
+    args.extend(["--out", s(&out)]);
+    let (code, _, stderr, took) = courant(&args);
+    assert_eq!(code, Some(2), "{label}: {stderr}");
+    assert!(took < PROMPT, "{label}: took {took:?}");
+    assert!(!out.exists(), "{label}: exit 2 wrote {}", out.display());
     for e in expected {
-        assert!(stderr.contains(e), "{set}: message lacks {e:?}: {stderr}");
+        assert!(stderr.contains(e), "{label}: message lacks {e:?}: {stderr}");
     }
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `courant score SCENE --results SET --out DIR`: [`refused`].
+fn score_refused(scene: &str, set: &str, expected: &[&str]) {
+    refused(set, &["score", scene, "--results", s(&data(set))], expected);
 }
 
 /// `courant ARGS` with stdout sent to `stdout`: exit code, stdout, stderr, wall time.
@@ -285,17 +291,11 @@ fn score_nan_fig2_t1000_is_refused_at_t_with_the_reference_limit() {
 
 /// `courant reference SCENE --at FILE --out DIR`: refused with status 2 naming `expected`.
 fn reference_refused(scene: &str, file: &str, expected: &[&str]) {
-    let dir = scratch(file);
-    let out = dir.join("o");
-    let (code, _, stderr, took) =
-        courant(&["reference", scene, "--at", s(&data(file)), "--out", s(&out)]);
-    assert_eq!(code, Some(2), "{file}: {stderr}");
-    assert!(took < PROMPT, "{file}: took {took:?}");
-    assert!(!out.exists(), "{file}: exit 2 wrote {}", out.display());
-    for e in expected {
-        assert!(stderr.contains(e), "{file}: message lacks {e:?}: {stderr}");
-    }
-    std::fs::remove_dir_all(&dir).unwrap();
+    refused(
+        file,
+        &["reference", scene, "--at", s(&data(file))],
+        expected,
+    );
 }
 
 #[test]
@@ -393,16 +393,11 @@ fn reference_replaces_run_output_no_more_without_force() {
 /// Run `courant run FILE` (a scene reproducer): status 2 within [`PROMPT`], nothing written,
 /// the message holding every one of `expected`.
 fn scene_refused(file: &str, expected: &[&str]) {
-    let dir = scratch(file.trim_end_matches(".toml"));
-    let out = dir.join("o");
-    let (code, _, stderr, took) = courant(&["run", s(&data(file)), "--out", s(&out)]);
-    assert_eq!(code, Some(2), "{file}: {stderr}");
-    assert!(took < PROMPT, "{file}: took {took:?}");
-    assert!(!out.exists(), "{file}: exit 2 wrote {}", out.display());
-    for e in expected {
-        assert!(stderr.contains(e), "{file}: message lacks {e:?}: {stderr}");
-    }
-    std::fs::remove_dir_all(&dir).unwrap();
+    refused(
+        file.trim_end_matches(".toml"),
+        &["run", s(&data(file))],
+        expected,
+    );
 }
 
 #[test]
