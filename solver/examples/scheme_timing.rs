@@ -133,10 +133,11 @@ fn main() {
         );
         let (ratios, cpu_ratios) = (ratios_of(&ones, &twos), ratios_of(&one_cpu, &two_cpu));
         let per = |s: f64| s * 1e9 / ((n + 1) * steps) as f64;
-        // The main thread's CPU time on two threads is its chunk, what follows the join and the
-        // spawns (it waits for the other chunk without CPU): with two free cores and balanced
-        // chunks, about the run's time, so the CPU ratio estimates the speed-up a busy machine
-        // hides (an upper estimate: the threads' shared memory bandwidth is not in it).
+        // The main thread's CPU time on two threads leaves out its waits without CPU: for lumped
+        // CD the join of each block's threads; with a matrix mass none (it spins, then yields,
+        // while the worker of `kernels::matrix_mass::pair` runs the other chunk), so there the
+        // CPU ratio is about the wall ratio on idle cores and above it when the thread waited
+        // for a core (a busy machine).
         println!(
             "N = {n}, {steps} steps: {scheme} {kind:?} {:.3} ns on one thread, {:.3} ns on two per node-step (wall), one / two {:.2} wall, {:.2} main-thread CPU (medians of {} alternating)",
             per(median(ones)),

@@ -21,7 +21,14 @@
 //! so a run's energies are the same bits on one thread and on two; they differ from the
 //! one-chunk sums by round-off. The seam is a multiple of [`BLOCK`] (RMM) or a group edge
 //! (windows, a multiple of the tile), so each chunk's lanes are the global ones (`i % LANES`).
+//!
+//! On two threads chunk 1 runs on the kernel's worker ([`Pair`]: one thread started at the
+//! first such step and kept for the kernel's life, handed each step's chunk and waited for
+//! before phase 2, two handshakes on atomics per step instead of a thread start), chunk 0 on the
+//! calling thread; on one, both on the calling thread, chunk 0 first. A panic in a chunk is
+//! resumed on the calling thread once both chunks are done.
 
+use crate::kernels::matrix_mass::pair::Pair;
 use crate::kernels::matrix_mass::passes::{
     BLOCK, EnergyLanes, ResidualFront, reciprocal_velocity, residual_rows, velocity_lanes,
 };
@@ -89,19 +96,6 @@ fn split_loads<'f>(
     (&forces[..below], &forces[below..at], &local[..])
 }
 
-/// Run `first` here and `second` on another thread when `threads > 1`, else one after the other.
-fn both(threads: usize, first: impl FnOnce() + Send, second: impl FnOnce() + Send) {
-    if threads > 1 {
-        std::thread::scope(|s| {
-            s.spawn(second);
-            first();
-        });
-    } else {
-        first();
-        second();
-    }
-}
-
 /// Lane `l` of `into` becomes `(a_l + b_l) + c_l`, for each of the three sums.
 fn combine(into: &mut EnergyLanes, [a, b, c]: [&EnergyLanes; 3]) {
     for l in 0..LANES {
@@ -115,7 +109,7 @@ fn combine(into: &mut EnergyLanes, [a, b, c]: [&EnergyLanes; 3]) {
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 pub(crate) fn windowed<const AVX2: bool>(
-    (seam, threads): (Seam, usize),
+    (seam, pair, two): (Seam, &mut Pair, bool),
     (dt, tiles): (f64, &HaloTiles),
     [u, v, r, k]: Arrays<'_>,
     forces: &[(usize, f64)],
@@ -175,7 +169,7 @@ pub(crate) fn windowed<const AVX2: bool>(
             front.advance::<AVX2>(n - s, (dt, k1), (u1, v1), r1, loads1, l);
             *l1 = mine;
         };
-        both(threads, chunk0, chunk1);
+        pair.run(two, chunk0, chunk1);
     }
     residual_rows::<AVX2>((&*k, &*u, &*v), r, (s - 1, s + 1), seam_loads, &mut lanes2);
     for g in (0..groups).filter(|&g| !first_phase(g)) {
@@ -194,7 +188,7 @@ pub(crate) fn windowed<const AVX2: bool>(
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 pub(crate) fn reciprocal<const AVX2: bool>(
-    (seam, threads): (Seam, usize),
+    (seam, pair, two): (Seam, &mut Pair, bool),
     (dt, diag, off, constant): InverseMass<'_>,
     [u, v, r, k]: Arrays<'_>,
     forces: &[(usize, f64)],
@@ -243,7 +237,7 @@ pub(crate) fn reciprocal<const AVX2: bool>(
             }
             *l1 = mine;
         };
-        both(threads, chunk0, chunk1);
+        pair.run(two, chunk0, chunk1);
     }
     residual_rows::<AVX2>((&*k, &*u, &*v), r, (s - 1, s + 1), seam_loads, &mut lanes2);
     for (from, to) in [(s - 2, s), (s, s + 2)] {

@@ -35,6 +35,7 @@
 use crate::kernels::energy::StepEnergy;
 use crate::kernels::lumped::kernel::PARALLEL_FROM_NODES;
 use crate::kernels::matrix_mass::chunks::{self, Chunks, seam_of};
+use crate::kernels::matrix_mass::pair::Pair;
 #[cfg(test)]
 use crate::kernels::matrix_mass::passes::lane_sums;
 use crate::kernels::matrix_mass::passes::{
@@ -103,17 +104,23 @@ pub struct MatrixMassStep {
     seam: Option<Chunks>,
     /// Threads the chunks run on (1 or 2: the same bits).
     threads: usize,
+    /// The calling thread and the worker that runs chunk 1 on two threads, started at the
+    /// first such step and kept for the kernel's life ([`Pair`]).
+    pair: Pair,
     /// Nodes from which the chunks take a second thread when `threads` allows
     /// ([`TWO_THREADS_FROM_NODES`]; below, both on the calling thread: the same bits).
     threads_from: usize,
 }
 
 /// Nodes from which a matrix-mass step in two chunks runs them on two threads (when its run
-/// has two): a step spawns its second thread, so a step must be long against a spawn and the
-/// wait for a core. At 1e5 nodes (a step of about 0.1-0.2 ms) two threads took twice as long as
-/// one on a busy machine, at 1e6 0.8-1.3 times as long (benches/RESULTS.md, heading
-/// "2026-11-28: CD with CMM, AMM and RMM in two chunks").
-pub const TWO_THREADS_FROM_NODES: usize = 500_000;
+/// has two): every bar with a seam (from [`PARALLEL_FROM_NODES`], 1e5). The second chunk runs on
+/// a worker kept for the kernel's life (two handshakes per step, no thread start), so a step of
+/// 0.1 ms is long enough: on idle cores, one thread / two = 1.55-1.86 at 1e5 nodes, 1.40-1.76 at
+/// 3e5, 1.62-1.78 at 1e6, against 0.57-0.77, 0.95-1.22 and 1.51-1.56 when each step spawned its
+/// thread (benches/RESULTS.md, heading "2026-11-28 17:52 UTC, AMD, idle cores: the matrix
+/// masses' second chunk on a worker kept for the kernel's life"). On a machine whose other core
+/// is busy two threads are slower than one (0.83-0.85 at 1e6), as for lumped CD's pipeline.
+pub const TWO_THREADS_FROM_NODES: usize = PARALLEL_FROM_NODES;
 
 impl MatrixMassStep {
     /// Set up with element stiffnesses, the mass operator, `u^0`, `v^{1/2}`, `a^0`, the residual
@@ -165,6 +172,7 @@ impl MatrixMassStep {
             avx2: has_avx2(),
             seam: None,
             threads: 1,
+            pair: Pair::default(),
             threads_from: TWO_THREADS_FROM_NODES,
         }
         .with_chunks_from(PARALLEL_FROM_NODES)
@@ -334,6 +342,7 @@ impl MatrixMassStep {
             constant,
             seam: Some((seam, group1, local)),
             threads,
+            pair,
             threads_from,
             ..
         } = self
@@ -341,7 +350,7 @@ impl MatrixMassStep {
             return;
         };
         let n = state.get(U).len();
-        let at = (*seam, if n >= *threads_from { *threads } else { 1 });
+        let at = (*seam, pair, n >= *threads_from && *threads > 1);
         match mass {
             MassOperator::Reciprocal { inverse, .. } => {
                 let matrix = (*dt, &inverse.diag[..], &inverse.off[..], &constant[..]);
