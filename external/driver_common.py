@@ -190,3 +190,37 @@ def compare_dirs(fresh, committed, tolerance):
             if worst > tolerance:
                 bad.append(f'{b}: differs by {worst:.2e} > {tolerance:g}')
     return bad
+
+
+def write_spectrum_set(directory, courant, code, masses, computed, reference, check):
+    """fig6's cases (`<ends>-n<N>`, from courant's exact answers) into `directory`: every mode of
+    each mass, numbered as courant's closed forms (free-free from 0, the rigid mode).
+    `masses`: [(label, key)]; `computed(n, ends, key)` the code's frequencies, `reference(n, ends,
+    key)` an independent numpy model's. With `check`, returns the largest difference of omega^2
+    from the model's over the largest omega^2 (so that the rigid mode's round-off, omega ~ 1e-7,
+    the square root of ~1e-14, counts as what it is); else 0. The caller writes results.toml."""
+    tmp, base = courant_reference(courant, 'fig6')
+    try:
+        names = sorted(f[:-4] for f in os.listdir(base) if f.endswith('.csv'))
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    os.makedirs(directory, exist_ok=True)
+    worst = 0.0
+    for name in names:
+        ends, n = name.rsplit('-n', 1)
+        first = 0 if ends == 'free-free' else 1
+        with open(os.path.join(directory, f'{name}.csv'), 'w') as fd:
+            fd.write('mode,omega,mass\n')
+            for label, key in masses:
+                omegas = computed(int(n), ends, key)
+                for i, omega in enumerate(omegas):
+                    fd.write(f'{first + i},{omega!r},{label}\n')
+                if check:
+                    ref = reference(int(n), ends, key)
+                    top = max(ref) ** 2
+                    d = max(abs(a * a - b * b) / top for a, b in zip(omegas, ref))
+                    worst = max(worst, d)
+                    print(f'check eigen fig6 {name:16s} {label}: max |omega_{code}^2 - '
+                          f'omega_numpy^2| / omega_max^2 = {d:.2e}')
+    print(f'eigen/fig6: {len(names)} case(s), masses {", ".join(m[0] for m in masses)}')
+    return worst

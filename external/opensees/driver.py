@@ -54,11 +54,8 @@ Dependencies: numpy and openseespy only; the ``courant`` binary for the geometry
 import argparse
 import math
 import os
-import shutil
 import statistics
-import subprocess
 import sys
-import tempfile
 import time
 
 import numpy as np
@@ -72,7 +69,7 @@ sys.dont_write_bytecode = True  # no __pycache__ beside the committed files
 sys.path.insert(0, os.path.dirname(HERE))
 from driver_common import (  # noqa: E402  (external/driver_common.py, shared by the drivers)
     AREA, SCENES, SIGMA0, compare_dirs, courant_cases, courant_walls,
-    element_properties, write_courant_times,
+    element_properties, write_courant_times, write_spectrum_set,
 )
 
 
@@ -200,40 +197,12 @@ def spectrum(n, ends, consistent):
 
 
 def write_spectra(directory, courant, check=False):
-    """fig6's cases (`<ends>-n<N>`, from courant's exact answers): every mode of the lumped
-    and the consistent mass, modes numbered as courant's closed forms (free-free from 0, the
-    rigid mode). With `check`, returns the largest difference of omega^2 from the numpy
-    model's over the largest omega^2 (so that the rigid mode's round-off, omega ~ 1e-7, counts
-    as what it is)."""
-    tmp = tempfile.mkdtemp(prefix='opensees-fig6-')
-    try:
-        subprocess.run(courant + ['reference', 'fig6', '--out', tmp], check=True,
-                       stdout=subprocess.DEVNULL)
-        names = sorted(f[:-4] for f in os.listdir(os.path.join(tmp, 'fig6'))
-                       if f.endswith('.csv'))
-    finally:
-        shutil.rmtree(tmp, ignore_errors=True)
-    os.makedirs(directory, exist_ok=True)
-    worst = 0.0
-    for name in names:
-        ends, n = name.rsplit('-n', 1)
-        first = 0 if ends == 'free-free' else 1
-        with open(os.path.join(directory, f'{name}.csv'), 'w') as fd:
-            fd.write('mode,omega,mass\n')
-            for label, consistent in SPECTRUM_MASSES:
-                omegas = spectrum(int(n), ends, consistent)
-                for i, omega in enumerate(omegas):
-                    fd.write(f'{first + i},{omega!r},{label}\n')
-                if check:
-                    ref = numpy_spectrum(int(n), ends, consistent)
-                    top = max(ref) ** 2
-                    d = max(abs(a * a - b * b) / top for a, b in zip(omegas, ref))
-                    worst = max(worst, d)
-                    print(f'check eigen fig6 {name:16s} {label}: max |omega_opensees^2 - '
-                          f'omega_numpy^2| / omega_max^2 = {d:.2e}')
+    """fig6's spectra of the lumped and the consistent mass (`write_spectrum_set`) and their
+    results.toml. Returns the largest difference from the numpy model's when `check`."""
+    worst = write_spectrum_set(directory, courant, 'opensees', SPECTRUM_MASSES, spectrum,
+                               numpy_spectrum, check)
     with open(os.path.join(directory, 'results.toml'), 'w') as fd:
         fd.write(f'format = 1\ncode = "opensees"\nversion = "{ops.version()}"\n')
-    print(f'eigen/fig6: {len(names)} case(s), masses lmm and cmm')
     return worst
 
 

@@ -56,7 +56,6 @@ import contextlib
 import io
 import math
 import os
-import shutil
 import statistics
 import sys
 import time
@@ -82,8 +81,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.dont_write_bytecode = True  # no __pycache__ beside the committed files
 sys.path.insert(0, os.path.dirname(HERE))
 from driver_common import (  # noqa: E402  (external/driver_common.py, shared by the drivers)
-    AREA, SCENES, SIGMA0, compare_dirs, courant_cases, courant_reference, courant_walls,
-    element_properties, write_courant_times,
+    AREA, SCENES, SIGMA0, compare_dirs, courant_cases, courant_walls,
+    element_properties, write_courant_times, write_spectrum_set,
 )
 
 F0 = -SIGMA0 * AREA  # nodal force at node 0: outward normal is -x -> +1 along +x
@@ -323,37 +322,13 @@ def numpy_spectrum(n, ends, kind):
 
 
 def write_spectra(directory, courant, check):
-    """fig6's cases (`<ends>-n<N>`, from courant's exact answers): every mode of each mass, modes
-    numbered as courant's closed forms (free-free from 0, the rigid mode). Returns the largest
-    difference of omega^2 from the numpy model's, over the largest omega^2, when `check`."""
-    tmp, base = courant_reference(courant, 'fig6')
-    try:
-        names = sorted(f[:-4] for f in os.listdir(base) if f.endswith('.csv'))
-    finally:
-        shutil.rmtree(tmp, ignore_errors=True)
-    os.makedirs(directory, exist_ok=True)
-    worst = 0.0
-    for name in names:
-        ends, n = name.rsplit('-n', 1)
-        first = 0 if ends == 'free-free' else 1
-        with open(os.path.join(directory, f'{name}.csv'), 'w') as fd:
-            fd.write('mode,omega,mass\n')
-            for kind in SPECTRUM_MASSES:
-                omegas, _, _ = sfepy_spectrum(int(n), ends, kind)
-                for i, omega in enumerate(omegas):
-                    fd.write(f'{first + i},{omega!r},{kind}\n')
-                if check:
-                    ref = numpy_spectrum(int(n), ends, kind)
-                    # On omega^2 over the largest, so that the rigid mode's round-off
-                    # (omega ~ 1e-7, the square root of ~1e-14) counts as what it is.
-                    top = max(ref) ** 2
-                    d = max(abs(a * a - b * b) / top for a, b in zip(omegas, ref))
-                    worst = max(worst, d)
-                    print(f'check eigen fig6 {name:16s} {kind}: max |omega_sfepy^2 - '
-                          f'omega_numpy^2| / omega_max^2 = {d:.2e}')
+    """fig6's spectra of every mass (`write_spectrum_set`) and their results.toml. Returns the
+    largest difference from the numpy model's when `check`."""
+    worst = write_spectrum_set(
+        directory, courant, 'sfepy', [(k, k) for k in SPECTRUM_MASSES],
+        lambda n, ends, kind: sfepy_spectrum(n, ends, kind)[0], numpy_spectrum, check)
     with open(os.path.join(directory, 'results.toml'), 'w') as fd:
         fd.write(f'format = 2\ncode = "sfepy"\nversion = "{sfepy.__version__}"\n')
-    print(f'eigen/fig6: {len(names)} case(s), masses {", ".join(SPECTRUM_MASSES)}')
     return worst
 
 
