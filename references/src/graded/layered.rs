@@ -54,9 +54,10 @@ pub struct LayeredField {
     wave_count: usize,
 }
 
-/// Total order on start times for the pending-wave queue.
+/// Total order on times (`f64::total_cmp`), the key of event queues: the pending-wave queue
+/// here, the arrivals of `contact::LayeredImpact`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct TimeKey(f64);
+pub(crate) struct TimeKey(pub(crate) f64);
 
 impl Eq for TimeKey {}
 

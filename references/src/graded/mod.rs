@@ -55,5 +55,6 @@ pub use cost::ROUTE_A_WORK;
 pub use field::LAPLACE_DIFFICULTY_LIMIT;
 pub use laplace::DE_HOOG_TERMS;
 pub use layer::{Layer, reflection_coefficient, transmission_coefficient};
+pub(crate) use layered::TimeKey;
 pub use layered::{DEFAULT_MAX_WAVES, LayeredBar, LayeredField};
 pub use series::FRONT_SERIES_ORDER;

@@ -54,7 +54,7 @@ use super::impact::{ARRIVAL_TOLERANCE, ForcePlateau};
 
 mod field;
 use crate::error::ReferenceError;
-use crate::graded::Layer;
+use crate::graded::{Layer, TimeKey};
 
 /// Default cap on the number of boundary events tracked.
 pub const DEFAULT_MAX_EVENTS: usize = 2_000_000;
@@ -178,24 +178,6 @@ impl Waves {
 
 /// Pending arrivals: (instant, boundary) -> (force jump arriving from the left, from the right).
 type Arrivals = BTreeMap<(TimeKey, usize), (f64, f64)>;
-
-/// Total order on times.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct TimeKey(f64);
-
-impl Eq for TimeKey {}
-
-impl PartialOrd for TimeKey {
-    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-impl Ord for TimeKey {
-    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
-        self.0.total_cmp(&other.0)
-    }
-}
 
 /// The exact impact of two layered bars (module documentation), tracked to a horizon.
 #[derive(Debug, Clone, PartialEq)]
