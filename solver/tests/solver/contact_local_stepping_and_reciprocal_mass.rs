@@ -352,17 +352,17 @@ fn energies(
     dt: f64,
 ) -> [f64; 3] {
     let mut run = CombinedStepper::new(problem, bulk, scheme, dt).unwrap();
-    let total = |run: &CombinedStepper<'_>| {
+    let total = |run: &mut CombinedStepper<'_>| {
         let e = run.energy();
         e.kinetic_staggered + e.strain + e.penalty_spring
     };
-    let start = total(&run);
+    let start = total(&mut run);
     let mut largest = start;
     for _ in 0..(6.0 / dt) as usize {
         run.step();
-        largest = largest.max(total(&run));
+        largest = largest.max(total(&mut run));
     }
-    [start, total(&run), largest]
+    [start, total(&mut run), largest]
 }
 
 /// Source: contact is passive and the bulk schemes conserve (CD) or dissipate (Park, theta =

@@ -138,7 +138,7 @@ impl CombinedIntegrator {
         } else {
             CombinedStepper::new(problem, self.bulk, self.scheme, self.dt)?
         };
-        let first = sample(&stepper, &self.scheme);
+        let first = sample(&mut stepper, &self.scheme);
         let initial = (first.kinetic + first.strain).max(f64::MIN_POSITIVE);
         let mut run = ContactRun {
             scheme: self.scheme,
@@ -156,7 +156,7 @@ impl CombinedIntegrator {
         let ratio = self.stability.blowup_energy_ratio;
         for step in 1..=steps {
             stepper.step();
-            let s = sample(&stepper, &self.scheme);
+            let s = sample(&mut stepper, &self.scheme);
             run.steps = step;
             run.impulse = s.impulse;
             run.max_force = run.max_force.max(s.force.abs());
@@ -179,7 +179,7 @@ impl CombinedIntegrator {
 
 /// The current level as a [`ContactSample`] (`penalty_kinetic`: `1/2 m_p (N^T v^n)^2` of the
 /// bipenalty while active).
-fn sample(stepper: &CombinedStepper<'_>, scheme: &ContactScheme) -> ContactSample {
+fn sample(stepper: &mut CombinedStepper<'_>, scheme: &ContactScheme) -> ContactSample {
     let level = stepper.level();
     let energy = stepper.energy();
     let penalty = scheme.penalty();

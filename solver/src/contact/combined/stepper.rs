@@ -68,6 +68,10 @@ pub struct CombinedStepper<'a> {
     u: Vec<f64>,
     v: Vec<f64>,
     a: Vec<f64>,
+    /// The previous level's acceleration (swapped with `a` each step, not copied).
+    a_prev: Vec<f64>,
+    /// Work arrays of [`Self::energy`]: `M v` and `M a`.
+    mass_products: [Vec<f64>; 2],
     next: Vec<f64>,
     residual: Vec<f64>,
     level: CombinedLevel,
@@ -153,6 +157,8 @@ impl<'a> CombinedStepper<'a> {
             direction,
             cd_nodes,
             a: vec![0.0; n],
+            a_prev: vec![0.0; n],
+            mass_products: [vec![0.0; n], vec![0.0; n]],
             next: vec![0.0; n],
             residual: vec![0.0; n],
             u,
@@ -233,9 +239,9 @@ impl<'a> CombinedStepper<'a> {
             *h = v + 0.5 * dt * a;
         }
         self.step += 1;
-        let a_old = self.a.clone();
+        std::mem::swap(&mut self.a, &mut self.a_prev);
         self.accelerate(t + dt, &half, 1.0);
-        for ((v, a0), a1) in self.v.iter_mut().zip(&a_old).zip(&self.a) {
+        for ((v, a0), a1) in self.v.iter_mut().zip(&self.a_prev).zip(&self.a) {
             *v += 0.5 * dt * (a0 + a1);
         }
         self.next = half;
@@ -293,10 +299,8 @@ impl<'a> CombinedStepper<'a> {
     }
 
     /// The energies of the current level.
-    pub fn energy(&self) -> CombinedEnergy {
-        let n = self.u.len();
-        let mut mv = vec![0.0; n];
-        let mut ma = vec![0.0; n];
+    pub fn energy(&mut self) -> CombinedEnergy {
+        let [mut mv, mut ma] = std::mem::take(&mut self.mass_products);
         self.assembly.mass_times(&self.v, &mut mv);
         self.assembly.mass_times(&self.a, &mut ma);
         let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(p, q)| p * q).sum::<f64>();
@@ -314,9 +318,11 @@ impl<'a> CombinedStepper<'a> {
         } else {
             0.0
         };
+        let kinetic_staggered = kinetic - 0.125 * self.dt * self.dt * dot(&self.a, &ma);
+        self.mass_products = [mv, ma];
         CombinedEnergy {
             kinetic,
-            kinetic_staggered: kinetic - 0.125 * self.dt * self.dt * dot(&self.a, &ma),
+            kinetic_staggered,
             strain,
             penalty_spring,
         }

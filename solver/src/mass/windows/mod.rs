@@ -353,6 +353,9 @@ impl HaloTiles {
         buffers: &mut GroupBuffers,
     ) {
         let window = self.window;
+        // The AVX2 path reads `r` at `starts[c] + ...` unchecked: an offset past the group's
+        // first row would wrap these subtractions (release builds) into an out-of-bounds read.
+        assert!(offset <= self.first_row_read(g));
         let starts: [usize; WINDOWS_PER_GROUP] =
             std::array::from_fn(|c| self.starts[g * WINDOWS_PER_GROUP + c] - offset);
         let starts = &starts;
