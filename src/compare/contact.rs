@@ -130,6 +130,10 @@ impl ForceErrors {
     }
 }
 
+/// Largest force, relative to the first plateau, read as an open contact: courant writes an
+/// exact 0, another code may write round-off (1e-17) or a tiny tension; both are open.
+const OPEN_FORCE: f64 = 1e-9;
+
 /// The L1 force error away from the jumps of the exact force and the separation-time error
 /// ([`ForceErrors`]).
 fn away_from_jumps(
@@ -160,7 +164,7 @@ fn away_from_jumps(
             samples[k..]
                 .iter()
                 .take(JUMP_EXCLUSION_SAMPLES)
-                .filter(|s| s.1 == 0.0)
+                .filter(|s| s.1.abs() <= OPEN_FORCE * plateau.abs())
                 .count()
                 == JUMP_EXCLUSION_SAMPLES
         })
@@ -215,7 +219,8 @@ pub const DURATION_UNDEFINED: &str = "undefined: no recorded force sample reache
 
 /// Sample intervals on either side of a jump of the exact force left out of
 /// `force_l1_off_jumps` (steps, when every step is recorded: `history_every = 1`), and the
-/// zero-force samples in a row that count as an opening for `separation_error`.
+/// open-contact samples in a row ([`OPEN_FORCE`]) that count as an opening for
+/// `separation_error`.
 pub const JUMP_EXCLUSION_SAMPLES: usize = 5;
 
 /// Why a contact case has no `separation_error`.

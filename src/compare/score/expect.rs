@@ -19,6 +19,7 @@ use crate::compare::front_width::{FRONT_WIDTH_UNDEFINED, front_width};
 use crate::compare::norms::ErrorNorms;
 use crate::compare::stress_difference::{ProfileView, stress_difference};
 use crate::compare::verdict::{Measured, Verdict};
+use crate::scene::bound::Bound;
 use crate::scene::cases::Scene;
 use crate::scene::expectation::{Expectation, Metric, RowKind};
 
@@ -339,7 +340,9 @@ fn mass_deviation(expectation: &Expectation, case: &ScoredCase) -> Result<Measur
 
 /// The largest [`mode_error_ratio`] over the elastic modes both mass kinds of the file give,
 /// against the continuum frequency of each mode number (the rigid mode left out), as
-/// `courant run` measures it; not measurable without a continuum reference for the case.
+/// `courant run` measures it; not measurable without a continuum reference for the case. A row
+/// with a lower bound needs the case's top mode in both masses (the ratio peaks there,
+/// methods.md §5): a file that gives fewer modes is not supplied for it, rather than failed.
 fn mode_error_ratio(
     scene: &Scene,
     expectation: &Expectation,
@@ -354,6 +357,15 @@ fn mode_error_ratio(
     else {
         return Err("no continuum reference for this case".into());
     };
+    let top = *bar.modes().end();
+    let has_top = |rows: &[(usize, f64)]| rows.iter().any(|r| r.0 == top);
+    if matches!(expectation.bound, Bound::Range { min: Some(_), .. })
+        && !(has_top(&a) && has_top(&b))
+    {
+        return Ok(Measured::Missing(format!(
+            "the lower bound needs mode {top} (the top mode, where the ratio peaks) in both masses"
+        )));
+    }
     Ok(a.iter()
         .filter(|(mode, _)| bar.modes().contains(mode))
         .filter_map(|(mode, v)| {
