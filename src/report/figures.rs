@@ -243,10 +243,14 @@ fn force_figures(
             .copied()
             .max_by_key(|c| c.run.history.len())
             .or(outcome.contact.first());
+        let label = scene
+            .contact
+            .first()
+            .map_or_else(|| "1D wave theory".into(), |c| c.reference.label());
         let exact: Vec<Series> = finest
             .map(|c| {
                 Series::new(
-                    "1D wave theory",
+                    label.as_str(),
                     c.run
                         .history
                         .iter()

@@ -253,6 +253,14 @@ pub enum ContactReference {
     /// (`LayeredImpact`, re-contacts included). A graded bar enters as its equal-travel-time
     /// layering (module documentation): exact for that layering, not for the graded bar.
     Layered(LayeredImpact),
+    /// A graded bar (or two): the exact impact of their equal-travel-time layering into
+    /// `layers` layers each, exact for that layering, not for the graded bars.
+    GradedLayering {
+        /// The layered impact.
+        impact: LayeredImpact,
+        /// Layers per graded bar.
+        layers: usize,
+    },
 }
 
 impl ContactReference {
@@ -260,7 +268,19 @@ impl ContactReference {
     pub fn history(&self) -> &dyn ContactHistory {
         match self {
             ContactReference::Homogeneous(f) => f,
-            ContactReference::Layered(l) => l,
+            ContactReference::Layered(l) | ContactReference::GradedLayering { impact: l, .. } => l,
+        }
+    }
+
+    /// The reference's name in a figure's legend: what it is, not more.
+    pub fn label(&self) -> String {
+        match self {
+            ContactReference::Homogeneous(_) | ContactReference::Layered(_) => {
+                "1D wave theory".into()
+            }
+            ContactReference::GradedLayering { layers, .. } => {
+                format!("exact impact of the {layers}-layer layering (not exact)")
+            }
         }
     }
 }
@@ -336,7 +356,7 @@ mod tests {
         let first = bar.modulus()[0];
         assert!((first - (1.0 + 8.0 * 0.5 / 8.0)).abs() < 1e-12, "{first}");
         match &ok.contact[0].reference {
-            super::ContactReference::Layered(l) => {
+            super::ContactReference::GradedLayering { impact: l, .. } => {
                 assert_eq!(l.layers().len(), super::GRADED_REFERENCE_LAYERS + 1);
             }
             other => panic!("{other:?}"),

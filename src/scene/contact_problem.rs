@@ -8,7 +8,7 @@ use super::budget;
 use super::contact_bar::{ContactReference, bar, homogeneous, reference_layers, transit};
 use super::error::{SceneError, Source, positive};
 use super::magnitude;
-use super::schema::{RawContact, RawContactScene};
+use super::schema::{RawContact, RawContactScene, RawField};
 use courant_references::contact::{ImpactForce, LayeredImpact};
 use courant_solver::End;
 use courant_solver::contact::ContactProblem;
@@ -77,7 +77,16 @@ pub(super) fn bodies(
                     1.05 * end,
                     budget::MAX_LAYERED_IMPACT_EVENTS,
                 )
-                .map(ContactReference::Layered),
+                .map(|impact| {
+                    let graded = std::iter::once(&study.striker)
+                        .chain(study.target.as_ref())
+                        .any(|b| matches!(b.get_ref().modulus, Some(RawField::Linear(_))));
+                    if graded {
+                        ContactReference::GradedLayering { impact, layers }
+                    } else {
+                        ContactReference::Layered(impact)
+                    }
+                }),
             };
             (problem, reference)
         }
