@@ -4,11 +4,11 @@
 //! `contact::LayeredImpact`, method of characteristics; Graff 1975, ch. 2), over the meshes
 //! h = 1/32, 1/64, 1/128, for the Lagrange multiplier and the predictor-corrector (beta_s = 1e4).
 //!
-//! Theory band: a second-order linear scheme on data of bounded variation converges in L1 like
-//! `h^(2/3)` (Brenner, Thomee & Wahlbin, LNM 434, 1975; Majda & Osher, CPAM 30 (1977)
-//! 671-705). What this proves: the L1 force error away from the jumps converges, at an order
-//! in [0.4, 0.67) (measured 0.55 for both schemes: below the band, as CD-LMM's in
-//! `impact_layered_convergence`, every front crossing the soft layers far below their limit),
+//! Theory band: behind a jump, central difference leaves an Airy tail whose L1 error falls like
+//! `h^(1/2)` (methods.md §3); a front displaced by `O(h)` adds up to `h^1`. What this proves: the
+//! L1 force error away from the jumps converges at an order in [0.4, 0.67) (`h^(1/2)` with a
+//! stated margin of 0.1 below, up to `h^(2/3)` above; measured 0.55 for both schemes, where
+//! CD-LMM's in `impact_layered_convergence` falls below `h^(1/2)`),
 //! and the separation time stays within 0.5 % of the exact 0.25 on every mesh (measured 0.0020,
 //! 0.0016, 0.0016: no order, it stalls at the detection's resolution).
 

@@ -3,16 +3,14 @@
 //! Graff 1975, ch. 2), over the meshes h = 1/32, 1/64, 1/128, for the Lagrange multiplier and
 //! the predictor-corrector (beta_s = 1e4) at half their critical step.
 //!
-//! Theory band: a second-order linear scheme on data of bounded variation converges in L1 like
-//! `h^(r/(r+1)) = h^(2/3)` (Brenner, Thomee & Wahlbin, *Besov Spaces and Applications to
-//! Difference Methods for Initial Value Problems*, LNM 434, 1975; Majda & Osher, CPAM 30
-//! (1977) 671-705); a discrete front lags by the width of its Airy tail, `O(h^(2/3))`, and by
-//! at most a step, `O(h)`. What this proves: the separation time converges within that band,
-//! widened for three meshes to [0.5, 1.35] (measured 0.58 for the Lagrange multiplier, 1.28 for
-//! the predictor-corrector); the L1
-//! force error away from the jumps converges, but below the band (a finding: order in
-//! [0.1, 0.67), every front crosses the soft layers at Co 1/16 of their limit and the three
-//! contacts' timing errors add up).
+//! Theory band: behind a jump, lumped central difference leaves an Airy tail `w ~ h^(2/3)` wide
+//! whose L1 error falls like `h^(1/2)` (methods.md §3), and a discrete front lags by at most a
+//! step, `O(h)`. What this proves: the separation time, a front's arrival, converges at an order
+//! in [0.5, 1.35] (between the tail's `h^(1/2)` and a step's `h`, with a stated margin of 0.35
+//! above for three meshes; measured 0.58 for the Lagrange multiplier, 1.28 for the
+//! predictor-corrector); the L1 force error away from the jumps converges, but below `h^(1/2)`
+//! (a finding: order in [0.1, 0.67), measured 0.21 and 0.34, every front crossing the soft
+//! layers at Co 1/16 of their limit and the three contacts' timing errors adding up).
 
 use crate::common::refined_contact_results;
 
